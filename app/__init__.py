@@ -1,0 +1,1 @@
+"""ArtiMo: text-driven articulated mesh animation."""

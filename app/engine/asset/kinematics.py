@@ -1,0 +1,138 @@
+"""Forward kinematics, vectorised over frames.
+
+Conventions: a link pose maps link-frame points to the world frame (URDF root frame,
++Z up). ``child = parent @ joint.origin @ motion(q)``; the base pose (translation +
+rotation of the whole object) is pre-multiplied onto every link.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from app.engine.asset.model import ArticulatedAsset, JointSpec
+from app.engine.types import FloatArray, Transforms
+
+
+def axis_angle_matrices(axis: FloatArray, angles: FloatArray) -> FloatArray:
+    """(t, 3, 3) rotations by ``angles`` (t,) radians about the unit ``axis`` (3,) (Rodrigues)."""
+    x, y, z = axis
+    k = np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+    k2 = k @ k
+    s = np.sin(angles)[:, None, None]
+    c = np.cos(angles)[:, None, None]
+    return np.eye(3)[None] + s * k[None] + (1.0 - c) * k2[None]
+
+
+def joint_motion(joint: JointSpec, q: FloatArray) -> Transforms:
+    """(t, 4, 4) motion of ``joint`` for values ``q`` (t,)."""
+    count = q.shape[0]
+    out = np.zeros((count, 4, 4))
+    out[:, 3, 3] = 1.0
+    if joint.type in ("revolute", "continuous"):
+        out[:, :3, :3] = axis_angle_matrices(joint.axis, q)
+    else:
+        out[:, :3, :3] = np.eye(3)
+        if joint.type == "prismatic":
+            out[:, :3, 3] = q[:, None] * joint.axis[None, :]
+    return out
+
+
+def quaternion_matrices(xyzw: FloatArray) -> FloatArray:
+    """(t, 3, 3) rotation matrices of unit quaternions (t, 4) given as x, y, z, w."""
+    q = xyzw / np.linalg.norm(xyzw, axis=1, keepdims=True)
+    x, y, z, w = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    return np.stack(
+        [
+            np.stack([1 - 2 * (y * y + z * z), 2 * (x * y - z * w), 2 * (x * z + y * w)], axis=-1),
+            np.stack([2 * (x * y + z * w), 1 - 2 * (x * x + z * z), 2 * (y * z - x * w)], axis=-1),
+            np.stack([2 * (x * z - y * w), 2 * (y * z + x * w), 1 - 2 * (x * x + y * y)], axis=-1),
+        ],
+        axis=1,
+    )
+
+
+def base_transforms(translation: FloatArray, rotation_xyzw: FloatArray | None = None) -> Transforms:
+    """(t, 4, 4) base poses from translations (t, 3) and optional quaternions (t, 4)."""
+    count = translation.shape[0]
+    out = np.zeros((count, 4, 4))
+    out[:, 3, 3] = 1.0
+    out[:, :3, :3] = np.eye(3) if rotation_xyzw is None else quaternion_matrices(rotation_xyzw)
+    out[:, :3, 3] = translation
+    return out
+
+
+def link_poses(
+    asset: ArticulatedAsset,
+    joint_values: Mapping[str, FloatArray],
+    base: Transforms | None = None,
+    frames: int | None = None,
+) -> dict[str, Transforms]:
+    """World poses of every link.
+
+    Parameters
+    ----------
+    joint_values
+        {joint name: (t,) values}; joints not given sit at their rest value.
+        Mimic joints are derived from their leader when absent.
+    base
+        (t, 4, 4) base poses; identity when ``None``.
+    frames
+        Number of frames t when it cannot be inferred from the inputs.
+
+    Returns
+    -------
+    dict of link name -> (t, 4, 4) world transforms.
+    """
+    count = _frame_count(joint_values, base, frames)
+    values = resolve_joint_values(asset, joint_values, count)
+    root = np.broadcast_to(np.eye(4), (count, 4, 4)).copy() if base is None else np.asarray(base, dtype=np.float64)
+    poses: dict[str, Transforms] = {asset.root_link: root}
+    for name in asset.joint_order:
+        joint = asset.joints[name]
+        local = joint.origin[None] @ joint_motion(joint, values[name]) if joint.movable else np.broadcast_to(joint.origin, (count, 4, 4))
+        poses[joint.child] = poses[joint.parent] @ local
+    return poses
+
+
+def resolve_joint_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:
+    """(t,) values for every movable joint: given, mimic-derived, or rest."""
+    values: dict[str, FloatArray] = {}
+    for name in asset.movable_joints:
+        if name in joint_values:
+            values[name] = np.asarray(joint_values[name], dtype=np.float64).reshape(count)
+    pending = [n for n in asset.movable_joints if n not in values]
+    while pending:
+        progressed = False
+        for name in list(pending):
+            joint = asset.joints[name]
+            if joint.mimic is None:
+                values[name] = np.full(count, joint.rest)
+            elif joint.mimic.joint in values:
+                leader = values[joint.mimic.joint]
+                values[name] = joint.clamp_array(joint.mimic.multiplier * leader + joint.mimic.offset)
+            else:
+                continue
+            pending.remove(name)
+            progressed = True
+        if not progressed:  # leader of a mimic is fixed: treat as rest 0
+            for name in pending:
+                values[name] = np.full(count, asset.joints[name].rest)
+            pending = []
+    return values
+
+
+def _frame_count(joint_values: Mapping[str, FloatArray], base: Transforms | None, frames: int | None) -> int:
+    if frames is not None:
+        return frames
+    if base is not None:
+        return int(np.asarray(base).shape[0])
+    for value in joint_values.values():
+        return int(np.asarray(value).reshape(-1).shape[0])
+    return 1
+
+
+def rest_poses(asset: ArticulatedAsset) -> dict[str, FloatArray]:
+    """(4, 4) world pose of every link at the rest configuration."""
+    return {name: pose[0] for name, pose in link_poses(asset, {}, frames=1).items()}

@@ -1,0 +1,189 @@
+"""``load_asset``: a directory or ``.zip`` (SPEC §1) -> :class:`ArticulatedAsset`."""
+
+from __future__ import annotations
+
+import hashlib
+import logging
+import re
+import tempfile
+from pathlib import Path
+
+import numpy as np
+import yourdfpy
+
+from app.engine.asset.meshes import GeometryBudget, load_mesh_file, primitive_parts, resolve_mesh_path
+from app.engine.asset.model import ArticulatedAsset, LinkSemantics, LinkSpec, MeshPart
+from app.engine.asset.safety import AssetLimits, check_urdf_xml, extract_zip
+from app.engine.asset.urdf import parse_urdf
+from app.engine.errors import AssetError
+
+logger = logging.getLogger(__name__)
+
+PREFERRED_URDF = "mobility.urdf"
+SEMANTICS_FILE = "semantics.txt"
+_VISUAL_SUFFIX = re.compile(r"[-_]?\d+$")
+
+
+def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+    """Load an asset directory or ``.zip`` archive.
+
+    Parameters
+    ----------
+    path
+        Directory holding one ``.urdf`` (``mobility.urdf`` preferred) and its meshes,
+        or a ``.zip`` of such a directory.
+    limits
+        Size caps; defaults to :class:`AssetLimits`.
+    name
+        Asset name; defaults to the directory name or zip stem.
+
+    Raises
+    ------
+    AssetError
+        For every rejection of SPEC §1, naming the file and element.
+    """
+    limits = limits or AssetLimits()
+    source = Path(path)
+    if not source.exists():
+        raise AssetError("asset path does not exist", file=str(source))
+    if source.is_file():
+        if source.suffix.lower() != ".zip":
+            raise AssetError("an asset must be a directory or a .zip archive", file=source.name)
+        with tempfile.TemporaryDirectory(prefix="artimo-asset-") as tmp:
+            extract_zip(source, Path(tmp), limits)
+            return _load_directory(Path(tmp), name or source.stem, limits)
+    return _load_directory(source, name or source.resolve().name, limits)
+
+
+def find_urdf(root: Path) -> Path:
+    """The asset's URDF: the only ``.urdf`` under ``root``, or the shallowest ``mobility.urdf``.
+
+    Raises
+    ------
+    AssetError
+        No URDF, or several without a ``mobility.urdf`` among them.
+    """
+    found = sorted((p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file()), key=lambda p: (len(p.parts), str(p)))
+    found = [p for p in found if not p.is_symlink()]
+    if not found:
+        raise AssetError("no .urdf file in the asset", file=root.name)
+    if len(found) == 1:
+        return found[0]
+    preferred = [p for p in found if p.name == PREFERRED_URDF]
+    if preferred:
+        return preferred[0]
+    names = ", ".join(str(p.relative_to(root)) for p in found)
+    raise AssetError(f"the asset holds several URDF files ({names}); keep one or name it {PREFERRED_URDF}", file=root.name)
+
+
+def _load_directory(root: Path, name: str, limits: AssetLimits) -> ArticulatedAsset:
+    root = root.resolve()
+    urdf_path = find_urdf(root)
+    urdf_name = str(urdf_path.relative_to(root))
+    data = urdf_path.read_bytes()
+    check_urdf_xml(data, urdf_name, limits)
+    parsed = parse_urdf(data, urdf_name)
+    digest = hashlib.sha256(data)
+    semantics = _read_semantics(urdf_path.parent, root)
+    budget = GeometryBudget(max_faces=limits.max_faces)
+    links: dict[str, LinkSpec] = {}
+    for link in parsed.robot.links:
+        parts = _link_parts(link, parsed.robot, urdf_path.parent, root, urdf_name, budget, digest)
+        visual_names = tuple(v.name for v in link.visuals if v.name)
+        links[link.name] = LinkSpec(name=link.name, parts=tuple(parts), semantics=_semantics_for(link.name, visual_names, semantics))
+    if not any(link.has_geometry for link in links.values()):
+        raise AssetError("no link has visual geometry", file=urdf_name)
+    warnings = tuple(budget.warnings)
+    for message in warnings:
+        logger.warning("asset %s: %s", name, message)
+    return ArticulatedAsset(
+        name=name,
+        urdf_file=urdf_name,
+        root_link=parsed.root_link,
+        links=links,
+        joints=parsed.joints,
+        joint_order=parsed.joint_order,
+        link_order=parsed.link_order,
+        warnings=warnings,
+        content_hash=digest.hexdigest(),
+    )
+
+
+def _visual_rgba(visual: yourdfpy.Visual, robot: yourdfpy.Robot) -> tuple[float, float, float, float] | None:
+    material = visual.material
+    if material is None:
+        return None
+    color = material.color
+    if color is None and material.name:
+        named = next((m for m in robot.materials if m.name == material.name), None)
+        color = named.color if named is not None else None
+    if color is None or color.rgba is None:
+        return None
+    rgba = np.clip(np.asarray(color.rgba, dtype=np.float64).reshape(-1)[:4], 0.0, 1.0)
+    if rgba.size != 4:
+        return None
+    return (float(rgba[0]), float(rgba[1]), float(rgba[2]), float(rgba[3]))
+
+
+def _link_parts(
+    link: yourdfpy.Link,
+    robot: yourdfpy.Robot,
+    urdf_dir: Path,
+    root: Path,
+    urdf_name: str,
+    budget: GeometryBudget,
+    digest: hashlib._Hash,
+) -> list[MeshPart]:
+    parts: list[MeshPart] = []
+    for index, visual in enumerate(link.visuals):
+        element = f"link {link.name} visual {visual.name or index}"
+        origin = np.eye(4) if visual.origin is None else np.asarray(visual.origin, dtype=np.float64)
+        rgba = _visual_rgba(visual, robot)
+        geometry = visual.geometry
+        label = f"{link.name}_{index}"
+        if geometry is None:
+            raise AssetError("visual has no geometry", file=urdf_name, element=element)
+        if geometry.mesh is not None:
+            mesh_path = resolve_mesh_path(geometry.mesh.filename or "", urdf_dir, root, urdf_name=urdf_name, element=element)
+            scale = np.ones(3) if geometry.mesh.scale is None else np.broadcast_to(np.asarray(geometry.mesh.scale, dtype=np.float64), (3,))
+            transform = origin @ np.diag([*scale, 1.0])
+            digest.update(str(mesh_path.relative_to(root)).encode())
+            digest.update(mesh_path.read_bytes())
+            parts.extend(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label))
+        elif geometry.box is not None:
+            parts.extend(primitive_parts("box", np.asarray(geometry.box.size, dtype=np.float64), origin, rgba, budget, label=label, urdf_name=urdf_name))
+        elif geometry.cylinder is not None:
+            size = np.array([geometry.cylinder.radius, geometry.cylinder.length], dtype=np.float64)
+            parts.extend(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
+        elif geometry.sphere is not None:
+            size = np.array([geometry.sphere.radius], dtype=np.float64)
+            parts.extend(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
+        else:
+            raise AssetError("visual geometry is empty", file=urdf_name, element=element)
+    return parts
+
+
+def _read_semantics(urdf_dir: Path, root: Path) -> dict[str, tuple[str, str]]:
+    """``semantics.txt`` as {link: (joint kind, label)}; missing file -> {}."""
+    for folder in (urdf_dir, root):
+        path = folder / SEMANTICS_FILE
+        if path.is_file() and not path.is_symlink():
+            result: dict[str, tuple[str, str]] = {}
+            for line in path.read_text(encoding="utf-8", errors="replace").splitlines():
+                fields = line.split()
+                if len(fields) >= 3:
+                    result[fields[0]] = (fields[1], " ".join(fields[2:]))
+            return result
+    return {}
+
+
+def _semantics_for(link: str, visual_names: tuple[str, ...], table: dict[str, tuple[str, str]]) -> LinkSemantics:
+    if link in table:
+        kind, label = table[link]
+        return LinkSemantics(label=label, joint_kind=kind, visual_names=visual_names, source="semantics.txt")
+    cleaned = [_VISUAL_SUFFIX.sub("", v) for v in visual_names]
+    cleaned = [c for c in cleaned if c]
+    if cleaned:
+        label = max(set(cleaned), key=lambda c: (cleaned.count(c), -cleaned.index(c)))
+        return LinkSemantics(label=label, visual_names=visual_names, source="urdf")
+    return LinkSemantics(visual_names=visual_names)

@@ -1,0 +1,214 @@
+"""The frozen in-memory model of an articulated asset.
+
+Frames: every link has its own frame (the URDF link frame). A joint's ``origin``
+maps points from the joint frame to the parent link frame; the child link frame
+is the joint frame moved by the joint motion. World = root link frame, +Z up.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from app.engine.types import FloatArray, IntArray, Transform, Vector3
+
+JointType = Literal["revolute", "continuous", "prismatic", "fixed"]
+MOVABLE_TYPES: frozenset[str] = frozenset({"revolute", "continuous", "prismatic"})
+
+
+def _frozen(array: FloatArray | IntArray) -> FloatArray | IntArray:
+    array.setflags(write=False)
+    return array
+
+
+@dataclass(frozen=True)
+class Mimic:
+    """``q = multiplier * q[joint] + offset``."""
+
+    joint: str
+    multiplier: float = 1.0
+    offset: float = 0.0
+
+
+@dataclass(frozen=True, eq=False)
+class JointSpec:
+    """One URDF joint.
+
+    Attributes
+    ----------
+    origin : (4, 4) float
+        Joint frame -> parent link frame.
+    axis : (3,) float
+        Unit axis in the joint frame (zero vector for fixed joints).
+    lower, upper : float or None
+        Limits (radians or metres); ``None`` for continuous and fixed joints.
+    rest : float
+        Rest value: 0 clamped into the limits.
+    """
+
+    name: str
+    type: JointType
+    parent: str
+    child: str
+    origin: Transform
+    axis: Vector3
+    lower: float | None = None
+    upper: float | None = None
+    effort: float | None = None
+    velocity: float | None = None
+    mimic: Mimic | None = None
+
+    @property
+    def movable(self) -> bool:
+        return self.type in MOVABLE_TYPES
+
+    @property
+    def bounded(self) -> bool:
+        return self.type in ("revolute", "prismatic")
+
+    @property
+    def rest(self) -> float:
+        return self.clamp(0.0)
+
+    def clamp(self, q: float) -> float:
+        """Clamp a value into the joint limits (continuous and fixed joints unchanged)."""
+        if not self.bounded or self.lower is None or self.upper is None:
+            return float(q)
+        return float(min(max(q, self.lower), self.upper))
+
+    def clamp_array(self, q: FloatArray) -> FloatArray:
+        if not self.bounded or self.lower is None or self.upper is None:
+            return q
+        return np.clip(q, self.lower, self.upper)
+
+
+@dataclass(frozen=True)
+class Material:
+    """A PBR-ish material kept from the source mesh (glTF metallic-roughness)."""
+
+    name: str
+    base_color: tuple[float, float, float, float] = (0.8, 0.8, 0.8, 1.0)
+    image_png: bytes | None = None
+    metallic: float = 0.0
+    roughness: float = 1.0
+    double_sided: bool = True
+
+
+@dataclass(frozen=True, eq=False)
+class MeshPart:
+    """A material-homogeneous triangle mesh of a link, in the link frame.
+
+    Attributes
+    ----------
+    vertices : (n, 3) float, metres, link frame
+    faces : (m, 3) int
+    normals : (n, 3) float or None, unit length
+    uv : (n, 2) float or None, glTF convention (v down)
+    """
+
+    vertices: FloatArray
+    faces: IntArray
+    normals: FloatArray | None
+    uv: FloatArray | None
+    material: Material
+    source: str
+
+    def __post_init__(self) -> None:
+        _frozen(self.vertices)
+        _frozen(self.faces)
+        if self.normals is not None:
+            _frozen(self.normals)
+        if self.uv is not None:
+            _frozen(self.uv)
+
+
+@dataclass(frozen=True)
+class LinkSemantics:
+    """What a link is, from ``semantics.txt`` and/or URDF visual names."""
+
+    label: str | None = None
+    joint_kind: str | None = None
+    visual_names: tuple[str, ...] = ()
+    source: Literal["semantics.txt", "urdf", "none"] = "none"
+
+
+@dataclass(frozen=True, eq=False)
+class LinkSpec:
+    """One URDF link with its visual geometry (possibly empty)."""
+
+    name: str
+    parts: tuple[MeshPart, ...] = ()
+    semantics: LinkSemantics = field(default_factory=LinkSemantics)
+
+    @property
+    def has_geometry(self) -> bool:
+        return bool(self.parts)
+
+    def vertices(self) -> FloatArray:
+        """(n, 3) all part vertices in the link frame (empty (0, 3) if none)."""
+        if not self.parts:
+            return np.zeros((0, 3))
+        return np.concatenate([p.vertices for p in self.parts], axis=0)
+
+
+@dataclass(frozen=True, eq=False)
+class ArticulatedAsset:
+    """An asset ready for planning, execution and export.
+
+    ``joint_order`` lists every joint parents-first (topological), ties broken by
+    URDF declaration order; all per-joint arrays in the engine use this order.
+    """
+
+    name: str
+    urdf_file: str
+    root_link: str
+    links: Mapping[str, LinkSpec]
+    joints: Mapping[str, JointSpec]
+    joint_order: tuple[str, ...]
+    link_order: tuple[str, ...]
+    warnings: tuple[str, ...] = ()
+    content_hash: str = ""
+
+    @property
+    def movable_joints(self) -> tuple[str, ...]:
+        """Non-fixed joints in ``joint_order`` (mimic joints included)."""
+        return tuple(j for j in self.joint_order if self.joints[j].movable)
+
+    @property
+    def controllable_joints(self) -> tuple[str, ...]:
+        """Movable joints that are not mimics (the ones a plan may drive)."""
+        return tuple(j for j in self.movable_joints if self.joints[j].mimic is None)
+
+    @property
+    def visual_links(self) -> tuple[str, ...]:
+        return tuple(n for n in self.link_order if self.links[n].has_geometry)
+
+    def parent_joint(self, link: str) -> JointSpec | None:
+        """The joint whose child is ``link`` (None for the root)."""
+        return self._parent_joint_map().get(link)
+
+    def child_joints(self, link: str) -> tuple[JointSpec, ...]:
+        return tuple(self.joints[j] for j in self.joint_order if self.joints[j].parent == link)
+
+    def descendants(self, link: str) -> tuple[str, ...]:
+        """``link`` and every link below it, in ``link_order``."""
+        found = {link}
+        for j in self.joint_order:
+            joint = self.joints[j]
+            if joint.parent in found:
+                found.add(joint.child)
+        return tuple(n for n in self.link_order if n in found)
+
+    def moving_links(self, joint: str) -> tuple[str, ...]:
+        """Links moved by ``joint``: its child and all descendants."""
+        return self.descendants(self.joints[joint].child)
+
+    def _parent_joint_map(self) -> dict[str, JointSpec]:
+        return {j.child: j for j in self.joints.values()}
+
+    def rest_vector(self) -> FloatArray:
+        """(j,) rest values of ``movable_joints``."""
+        return np.array([self.joints[j].rest for j in self.movable_joints], dtype=np.float64)

@@ -1,0 +1,148 @@
+"""Defences for untrusted uploads: zip extraction and URDF XML pre-checks."""
+
+from __future__ import annotations
+
+import stat
+import zipfile
+from dataclasses import dataclass
+from pathlib import Path, PurePosixPath
+
+import defusedxml.ElementTree as safe_et
+from defusedxml import DefusedXmlException
+
+from app.engine.errors import AssetError
+
+
+@dataclass(frozen=True)
+class AssetLimits:
+    """Caps applied to every asset (defaults suit PartNet-Mobility with room to spare)."""
+
+    max_total_bytes: int = 512 * 1024 * 1024
+    """Largest total uncompressed size of a zip, bytes."""
+    max_files: int = 5000
+    """Most members a zip may hold."""
+    max_compression_ratio: float = 200.0
+    """Largest uncompressed/compressed ratio of one member (zip-bomb guard)."""
+    max_urdf_bytes: int = 16 * 1024 * 1024
+    max_faces: int = 4_000_000
+    """Most triangles over all visual meshes of the asset."""
+    max_xml_depth: int = 64
+
+
+def _member_problem(info: zipfile.ZipInfo) -> str | None:
+    name = info.filename
+    path = PurePosixPath(name.replace("\\", "/"))
+    if name.startswith(("/", "\\")) or (len(name) > 1 and name[1] == ":"):
+        return "absolute path"
+    if ".." in path.parts:
+        return "path escapes the archive root ('..')"
+    mode = info.external_attr >> 16
+    if stat.S_ISLNK(mode):
+        return "symbolic link"
+    return None
+
+
+def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
+    """Extract ``archive`` into the empty directory ``target`` after checking every member.
+
+    Raises
+    ------
+    AssetError
+        Broken zip, zip slip (``..``, absolute paths, symlinks), too many files,
+        too large in total or a member with an implausible compression ratio.
+    """
+    try:
+        zf = zipfile.ZipFile(archive)
+    except (zipfile.BadZipFile, OSError) as exc:
+        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name) from exc
+    with zf:
+        infos = zf.infolist()
+        if len(infos) > limits.max_files:
+            raise AssetError(
+                f"zip holds {len(infos)} members, more than the limit of {limits.max_files}",
+                file=archive.name,
+            )
+        total = 0
+        for info in infos:
+            problem = _member_problem(info)
+            if problem:
+                raise AssetError(f"unsafe zip member: {problem}", file=archive.name, element=info.filename)
+            total += info.file_size
+            if info.compress_size > 0 and info.file_size / info.compress_size > limits.max_compression_ratio:
+                raise AssetError(
+                    "zip member expands more than "
+                    f"{limits.max_compression_ratio:.0f}x (zip bomb?)",
+                    file=archive.name,
+                    element=info.filename,
+                )
+        if total > limits.max_total_bytes:
+            raise AssetError(
+                f"zip expands to {total} bytes, more than the limit of {limits.max_total_bytes}",
+                file=archive.name,
+            )
+        root = target.resolve()
+        written = 0
+        for info in infos:
+            dest = (root / info.filename).resolve()
+            if not dest.is_relative_to(root):
+                raise AssetError("unsafe zip member: path escapes the archive root", file=archive.name, element=info.filename)
+            if info.is_dir():
+                dest.mkdir(parents=True, exist_ok=True)
+                continue
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            try:
+                with zf.open(info) as src, open(dest, "wb") as out:
+                    while chunk := src.read(1 << 20):
+                        written += len(chunk)
+                        if written > limits.max_total_bytes:
+                            raise AssetError("zip expands beyond its declared size", file=archive.name, element=info.filename)
+                        out.write(chunk)
+            except (zipfile.BadZipFile, OSError, EOFError) as exc:
+                raise AssetError(f"corrupt zip member: {exc}", file=archive.name, element=info.filename) from exc
+
+
+def check_urdf_xml(data: bytes, file_name: str, limits: AssetLimits) -> None:
+    """Reject URDF text that is too large, declares a DTD/entities, or is not well formed.
+
+    Raises
+    ------
+    AssetError
+        Naming ``file_name`` and the offending construct.
+    """
+    if len(data) > limits.max_urdf_bytes:
+        raise AssetError(f"URDF is {len(data)} bytes, more than {limits.max_urdf_bytes}", file=file_name)
+    try:
+        root = safe_et.fromstring(data, forbid_dtd=True, forbid_entities=True, forbid_external=True)
+    except DefusedXmlException as exc:
+        raise AssetError(f"URDF uses a forbidden XML construct ({type(exc).__name__}: {exc})", file=file_name, element="<!DOCTYPE>/<!ENTITY>") from exc
+    except safe_et.ParseError as exc:
+        raise AssetError(f"URDF is not well-formed XML: {exc}", file=file_name) from exc
+    if root.tag != "robot":
+        raise AssetError(f"URDF root element is <{root.tag}>, expected <robot>", file=file_name, element=root.tag)
+    depth = _depth(root)
+    if depth > limits.max_xml_depth:
+        raise AssetError(f"URDF nests {depth} levels deep, more than {limits.max_xml_depth}", file=file_name)
+
+
+def _depth(element: object) -> int:
+    stack = [(element, 1)]
+    deepest = 0
+    while stack:
+        node, level = stack.pop()
+        deepest = max(deepest, level)
+        stack.extend((child, level + 1) for child in node)  # type: ignore[attr-defined]
+    return deepest
+
+
+def confine(path: Path, root: Path, *, file: str, element: str) -> Path:
+    """Resolve ``path`` and require it to stay inside ``root`` (symlinks resolved).
+
+    Raises
+    ------
+    AssetError
+        If the resolved path lies outside ``root``.
+    """
+    resolved = path.resolve()
+    if not resolved.is_relative_to(root.resolve()):
+        raise AssetError(f"path '{path}' resolves outside the asset directory", file=file, element=element)
+    return resolved

@@ -1,0 +1,178 @@
+"""The one module that talks to yourdfpy: URDF text -> checked joint and link records.
+
+yourdfpy's sharp edges handled here: it accepts floating/planar joints (we reject
+them), it does not normalise axes (we do), it keeps joints without limits (we
+reject revolute/prismatic ones), it does not check the tree (we check for a single
+root, unknown links, duplicate names and cycles).
+"""
+
+from __future__ import annotations
+
+import io
+from dataclasses import dataclass
+
+import numpy as np
+import yourdfpy
+from lxml import etree
+
+from app.engine.asset.model import JointSpec, Mimic
+from app.engine.errors import AssetError
+
+AXIS_EPS = 1e-9
+DEFAULT_AXIS = (1.0, 0.0, 0.0)  # URDF default when <axis> is absent
+
+
+@dataclass(frozen=True)
+class ParsedUrdf:
+    robot: yourdfpy.Robot
+    joints: dict[str, JointSpec]
+    root_link: str
+    joint_order: tuple[str, ...]
+    link_order: tuple[str, ...]
+
+
+def parse_urdf(data: bytes, file_name: str) -> ParsedUrdf:
+    """Parse and check URDF text (already vetted by :func:`check_urdf_xml`).
+
+    Raises
+    ------
+    AssetError
+        Any structural problem, naming the file and the joint or link.
+    """
+    try:
+        urdf = yourdfpy.URDF.load(
+            io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
+        )
+        robot = urdf.robot
+    except (etree.XMLSyntaxError, ValueError, TypeError, AttributeError, KeyError, IndexError) as exc:
+        raise AssetError(f"cannot parse URDF: {type(exc).__name__}: {exc}", file=file_name) from exc
+    _check_names(robot, file_name)
+    joints = {j.name: _joint_spec(j, robot, file_name) for j in robot.joints}
+    _check_mimics(joints, file_name)
+    root, joint_order, link_order = _tree_order(robot, file_name)
+    return ParsedUrdf(robot=robot, joints=joints, root_link=root, joint_order=joint_order, link_order=link_order)
+
+
+def _check_names(robot: yourdfpy.Robot, file_name: str) -> None:
+    if not robot.links:
+        raise AssetError("URDF has no <link>", file=file_name)
+    for kind, items in (("link", robot.links), ("joint", robot.joints)):
+        seen: set[str] = set()
+        for item in items:
+            if not item.name:
+                raise AssetError(f"a <{kind}> has no name", file=file_name, element=kind)
+            if item.name in seen:
+                raise AssetError(f"duplicate {kind} name '{item.name}'", file=file_name, element=f"{kind} {item.name}")
+            seen.add(item.name)
+
+
+def _joint_spec(joint: yourdfpy.Joint, robot: yourdfpy.Robot, file_name: str) -> JointSpec:
+    element = f"joint {joint.name}"
+    link_names = {link.name for link in robot.links}
+    if joint.type in ("floating", "planar"):
+        raise AssetError(f"{joint.type} joints are not supported", file=file_name, element=element)
+    if joint.type not in ("revolute", "continuous", "prismatic", "fixed"):
+        raise AssetError(f"unknown joint type '{joint.type}'", file=file_name, element=element)
+    for role, link in (("parent", joint.parent), ("child", joint.child)):
+        if link not in link_names:
+            raise AssetError(f"{role} link '{link}' is not defined", file=file_name, element=element)
+    origin = np.eye(4) if joint.origin is None else np.asarray(joint.origin, dtype=np.float64)
+    if origin.shape != (4, 4) or not np.all(np.isfinite(origin)):
+        raise AssetError("origin is not a finite transform", file=file_name, element=element)
+    axis = np.zeros(3)
+    if joint.type != "fixed":
+        raw = np.asarray(DEFAULT_AXIS if joint.axis is None else joint.axis, dtype=np.float64)
+        norm = float(np.linalg.norm(raw))
+        if not np.isfinite(norm) or norm < AXIS_EPS:
+            raise AssetError("axis is zero or not finite", file=file_name, element=element)
+        axis = raw / norm
+    lower = upper = None
+    limit = joint.limit
+    if joint.type in ("revolute", "prismatic"):
+        if limit is None:
+            raise AssetError(f"{joint.type} joint has no <limit>", file=file_name, element=element)
+        if limit.lower is None or limit.upper is None:
+            raise AssetError(f"{joint.type} joint <limit> lacks lower or upper", file=file_name, element=element)
+        lower, upper = float(limit.lower), float(limit.upper)
+        if not (np.isfinite(lower) and np.isfinite(upper)) or lower > upper:
+            raise AssetError(f"limit lower={lower} upper={upper} is not a valid range", file=file_name, element=element)
+    mimic = None
+    if joint.mimic is not None:
+        mimic = Mimic(
+            joint=str(joint.mimic.joint),
+            multiplier=float(1.0 if joint.mimic.multiplier is None else joint.mimic.multiplier),
+            offset=float(0.0 if joint.mimic.offset is None else joint.mimic.offset),
+        )
+    origin.setflags(write=False)
+    axis.setflags(write=False)
+    return JointSpec(
+        name=joint.name,
+        type=joint.type,
+        parent=joint.parent,
+        child=joint.child,
+        origin=origin,
+        axis=axis,
+        lower=lower,
+        upper=upper,
+        effort=None if limit is None or limit.effort is None else float(limit.effort),
+        velocity=None if limit is None or limit.velocity is None else float(limit.velocity),
+        mimic=mimic,
+    )
+
+
+def _check_mimics(joints: dict[str, JointSpec], file_name: str) -> None:
+    for joint in joints.values():
+        if joint.mimic is None:
+            continue
+        element = f"joint {joint.name}"
+        if not joint.movable:
+            raise AssetError("a fixed joint cannot mimic", file=file_name, element=element)
+        target = joints.get(joint.mimic.joint)
+        if target is None:
+            raise AssetError(f"mimics unknown joint '{joint.mimic.joint}'", file=file_name, element=element)
+        seen = {joint.name}
+        while target.mimic is not None:
+            if target.name in seen:
+                raise AssetError("mimic joints form a cycle", file=file_name, element=element)
+            seen.add(target.name)
+            nxt = joints.get(target.mimic.joint)
+            if nxt is None:
+                raise AssetError(f"mimics unknown joint '{target.mimic.joint}'", file=file_name, element=f"joint {target.name}")
+            target = nxt
+
+
+def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
+    parent_of: dict[str, str] = {}
+    for joint in robot.joints:
+        if joint.child in parent_of:
+            raise AssetError(
+                f"link '{joint.child}' is the child of two joints ('{parent_of[joint.child]}' and '{joint.name}')",
+                file=file_name,
+                element=f"joint {joint.name}",
+            )
+        parent_of[joint.child] = joint.name
+    roots = [link.name for link in robot.links if link.name not in parent_of]
+    if not roots:
+        raise AssetError("the joints form a cycle (no root link)", file=file_name, element="joint")
+    children: dict[str, list[yourdfpy.Joint]] = {}
+    for joint in robot.joints:
+        children.setdefault(joint.parent, []).append(joint)
+    joint_order: list[str] = []
+    link_order: list[str] = [roots[0]]
+    queue = [roots[0]]
+    while queue:
+        link = queue.pop(0)
+        for joint in children.get(link, []):
+            joint_order.append(joint.name)
+            link_order.append(joint.child)
+            queue.append(joint.child)
+    unreached = [j.name for j in robot.joints if j.name not in set(joint_order)]
+    if unreached:
+        raise AssetError("the joints form a cycle", file=file_name, element=f"joint {unreached[0]}")
+    if len(roots) > 1:
+        raise AssetError(
+            f"the URDF has {len(roots)} root links ({', '.join(roots)}); links must form one tree",
+            file=file_name,
+            element=f"link {roots[1]}",
+        )
+    return roots[0], tuple(joint_order), tuple(link_order)

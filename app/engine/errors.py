@@ -1,0 +1,91 @@
+"""Engine error hierarchy.
+
+Every error the engine raises on purpose derives from :class:`EngineError` and
+carries structured context as fields, so callers (CLI, workers, API) can report
+it without parsing the message.
+"""
+
+from __future__ import annotations
+
+
+class EngineError(Exception):
+    """Root of every deliberate engine failure."""
+
+    def __init__(self, message: str, **context: object) -> None:
+        super().__init__(message)
+        self.message = message
+        self.context = context
+
+    def __str__(self) -> str:
+        return self.message
+
+
+class AssetError(EngineError):
+    """An asset (URDF + meshes) is unusable; ``file`` and ``element`` name the culprit."""
+
+    def __init__(self, message: str, *, file: str | None = None, element: str | None = None) -> None:
+        where = ", ".join(p for p in (file and f"file {file}", element and f"element {element}") if p)
+        super().__init__(f"{message} ({where})" if where else message, file=file, element=element)
+        self.file = file
+        self.element = element
+
+
+class PlanValidationError(EngineError):
+    """A Causal.json or Plan.json document is invalid; ``issues`` lists every problem."""
+
+    def __init__(self, message: str, *, issues: list[str] | None = None) -> None:
+        self.issues = list(issues or [])
+        text = message if not self.issues else message + ":\n" + "\n".join(f"  - {i}" for i in self.issues)
+        super().__init__(text, issues=self.issues)
+
+
+class ExpressionError(PlanValidationError):
+    """A ``q_target_expr`` could not be parsed or evaluated."""
+
+
+class ExecutionError(EngineError):
+    """The executor could not turn a valid plan into a trajectory."""
+
+
+class ExportError(EngineError):
+    """Writing an output file (trajectory, GLB) failed."""
+
+
+class RenderError(EngineError):
+    """Offscreen rendering failed (no EGL, bad geometry, ...)."""
+
+
+class ProviderError(EngineError):
+    """A model provider call failed."""
+
+
+class ProviderRateLimited(ProviderError):
+    """The provider answered with a rate-limit response."""
+
+
+class ProviderTimeout(ProviderError):
+    """The provider did not answer in time."""
+
+
+class ProviderResponseError(ProviderError):
+    """The provider answered with an error or an unreadable body."""
+
+
+class RoleOutputError(EngineError):
+    """A role (perceiver, planner, critic) produced no valid output within its attempts."""
+
+
+class GroundingError(EngineError):
+    """The prompt could not be grounded to parts of the asset."""
+
+    def __init__(self, message: str, *, movable_parts: list[str] | None = None) -> None:
+        self.movable_parts = list(movable_parts or [])
+        super().__init__(message, movable_parts=self.movable_parts)
+
+
+class MetricError(EngineError):
+    """A benchmark case or prediction could not be scored."""
+
+
+class CancelledError(EngineError):
+    """The caller asked the pipeline to stop."""
