@@ -1,0 +1,56 @@
+# ArtiMo — the two fresh-machine commands are `make demo` and `make test`.
+# Both are idempotent: they install only what is missing.
+
+PYTHON ?= python3
+VENV   ?= .venv
+PY     := $(VENV)/bin/python
+PIP    := $(VENV)/bin/pip
+EXTRAS ?= render,models,bench,service,dev
+VALIDATOR_DIR := tests/tools/gltf_validator
+DEMO_OUT ?= out/demo
+PYTEST_ARGS ?=
+
+export PYOPENGL_PLATFORM ?= egl
+
+.PHONY: setup system-deps venv validator services demo test lint clean help
+
+help:
+	@echo "make demo   - set up everything, run the main job on the embedded default"
+	@echo "make test   - set up everything, run the whole test suite"
+	@echo "make lint   - ruff + import contracts"
+
+setup: system-deps venv validator
+
+system-deps:
+	@.ci/system-deps.sh
+
+venv: $(VENV)/.installed
+
+$(VENV)/.installed: pyproject.toml
+	test -x $(PY) || $(PYTHON) -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PIP) install --quiet -e '.[$(EXTRAS)]'
+	touch $@
+
+validator: $(VALIDATOR_DIR)/node_modules/.installed
+
+$(VALIDATOR_DIR)/node_modules/.installed: $(VALIDATOR_DIR)/package.json
+	npm install --prefix $(VALIDATOR_DIR) --no-audit --no-fund --loglevel=error
+	touch $@
+
+services:
+	@.ci/services.sh
+
+demo: setup
+	$(VENV)/bin/artimo run-plan examples/pedal_bin --plan examples/pedal_bin/plan.json --out $(DEMO_OUT)
+	$(PY) -m tests.support.gltf_validator $(DEMO_OUT)/animation.glb
+
+test: setup services
+	$(PY) -m pytest -q $(PYTEST_ARGS)
+
+lint: venv
+	$(VENV)/bin/ruff check app workers benchmark tests
+	$(VENV)/bin/lint-imports
+
+clean:
+	rm -rf out .pytest_cache

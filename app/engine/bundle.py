@@ -1,0 +1,40 @@
+"""Write the output files of one run (SPEC §4) into a folder, each atomically."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.execute.trajectory import Trajectory
+from app.engine.export.glb import export_glb
+from app.engine.export.jsonl import write_trajectory_jsonl
+from app.engine.files import atomic_write_text
+from app.engine.plan.causal import CausalDocument
+from app.engine.plan.schema import Plan
+from app.engine.report import RunReport
+
+PLAN_FILE = "plan.json"
+CAUSAL_FILE = "causal.json"
+TRAJECTORY_FILE = "trajectory.jsonl"
+GLB_FILE = "animation.glb"
+REPORT_FILE = "report.json"
+
+
+def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, causal: CausalDocument | None = None) -> dict[str, str]:
+    """Write causal.json (if given), plan.json, trajectory.jsonl and animation.glb; returns {kind: file name}."""
+    out_dir.mkdir(parents=True, exist_ok=True)
+    written = {}
+    if causal is not None:
+        atomic_write_text(out_dir / CAUSAL_FILE, causal.dumps() + "\n")
+        written["causal"] = CAUSAL_FILE
+    atomic_write_text(out_dir / PLAN_FILE, plan.dumps() + "\n")
+    written["plan"] = PLAN_FILE
+    write_trajectory_jsonl(trajectory, out_dir / TRAJECTORY_FILE)
+    written["trajectory"] = TRAJECTORY_FILE
+    export_glb(asset, trajectory, out_dir / GLB_FILE)
+    written["glb"] = GLB_FILE
+    return written
+
+
+def write_report(out_dir: Path, report: RunReport) -> Path:
+    return atomic_write_text(out_dir / REPORT_FILE, report.model_dump_json(indent=2) + "\n")

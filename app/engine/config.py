@@ -1,0 +1,27 @@
+"""Engine tunables (no environment reads: the service builds this from its settings)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from pydantic import BaseModel, ConfigDict, Field
+
+PROMPTS_DIR = Path(__file__).resolve().parents[2] / "prompts"
+
+
+class EngineConfig(BaseModel):
+    """Everything the pipeline may be tuned with; defaults are the documented behaviour."""
+
+    model_config = ConfigDict(frozen=True)
+
+    max_critic_rounds: int = Field(default=3, ge=0, le=10)
+    """Critic-actor repair rounds after the first execution (paper: 3)."""
+    role_attempts: int = Field(default=3, ge=1, le=10)
+    """Tries per model role; a schema error goes back to the model as feedback."""
+    check_collisions: bool = True
+    render_images: bool = False
+    """Render reference/overlay views and critic keyframes (needed by VLM roles, optional offline)."""
+    image_size: tuple[int, int] = (800, 600)
+    prompts_dir: Path = PROMPTS_DIR
+    request_timeout_s: float = Field(default=120.0, gt=0)
+    max_concurrent_calls: int = Field(default=4, ge=1, le=32)

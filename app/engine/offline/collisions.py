@@ -1,0 +1,115 @@
+"""Do parts pass through each other along a trajectory?
+
+Each link is approximated by the convex hulls of its mesh parts (the largest ones),
+moving links by sample points. A pair interpenetrates at a frame when more of the moving
+link's points sit deeper than a margin inside the other link's hulls than at rest — the
+comparison with rest tolerates assets whose parts already overlap when closed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from scipy.spatial import ConvexHull, QhullError
+
+from app.engine.asset.kinematics import base_transforms, link_poses
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.execute.trajectory import Trajectory
+from app.engine.types import FloatArray
+
+MAX_HULLS_PER_LINK = 48
+POINTS_PER_LINK = 240
+MAX_FRAMES = 24
+DEPTH_MARGIN_FRACTION = 0.02
+"""Points must be this fraction of the other link's size inside a hull to count."""
+NEW_PENETRATION = 0.06
+"""Fraction of a link's points newly inside another link that counts as a collision."""
+
+
+@dataclass(frozen=True)
+class Collision:
+    moving_link: str
+    other_link: str
+    frame: int
+    time_s: float
+    fraction: float
+
+
+@dataclass(frozen=True, eq=False)
+class _LinkShape:
+    hulls: tuple[tuple[FloatArray, FloatArray, FloatArray], ...]
+    """(equations (f, 4), box low (3,), box high (3,)) per hull, link frame."""
+    points: FloatArray
+    size: float
+
+
+def _hull(vertices: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray] | None:
+    if vertices.shape[0] < 4 or np.linalg.matrix_rank(vertices - vertices.mean(axis=0), tol=1e-9) < 3:
+        return None
+    try:
+        hull = ConvexHull(vertices)
+    except QhullError:
+        return None
+    return hull.equations, vertices.min(axis=0), vertices.max(axis=0)
+
+
+@lru_cache(maxsize=32)
+def _shapes(asset_id: int, asset: ArticulatedAsset) -> dict[str, _LinkShape]:
+    shapes = {}
+    for name in asset.visual_links:
+        parts = sorted(asset.links[name].parts, key=lambda p: -float(np.prod(np.ptp(p.vertices, axis=0) + 1e-9)))
+        hulls = tuple(h for h in (_hull(p.vertices) for p in parts[:MAX_HULLS_PER_LINK]) if h is not None)
+        vertices = asset.links[name].vertices()
+        step = max(1, vertices.shape[0] // POINTS_PER_LINK)
+        points = vertices[::step][:POINTS_PER_LINK]
+        size = float(np.linalg.norm(np.ptp(vertices, axis=0)))
+        shapes[name] = _LinkShape(hulls=hulls, points=points, size=size)
+    return shapes
+
+
+def _inside_fraction(points: FloatArray, shape: _LinkShape) -> float:
+    """Fraction of ``points`` (other link's frame) deeper than the margin inside any hull."""
+    if not shape.hulls or points.shape[0] == 0:
+        return 0.0
+    margin = DEPTH_MARGIN_FRACTION * shape.size
+    inside = np.zeros(points.shape[0], dtype=bool)
+    for equations, low, high in shape.hulls:
+        near = np.all((points >= low + margin) & (points <= high - margin), axis=1) & ~inside
+        if not near.any():
+            continue
+        distance = points[near] @ equations[:, :3].T + equations[:, 3]
+        inside[np.flatnonzero(near)[np.all(distance < -margin, axis=1)]] = True
+    return float(inside.mean())
+
+
+def _neighbours(asset: ArticulatedAsset, a: str, b: str) -> bool:
+    """Links joined directly by a joint (they meet at the hinge by design)."""
+    joint_a, joint_b = asset.parent_joint(a), asset.parent_joint(b)
+    return (joint_a is not None and joint_a.parent == b) or (joint_b is not None and joint_b.parent == a) or (
+        joint_a is not None and joint_b is not None and joint_a.parent == joint_b.parent and not (joint_a.movable or joint_b.movable)
+    )
+
+
+def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set[str]) -> list[Collision]:
+    """New interpenetrations of ``moving`` links with the rest, worst first (one per pair)."""
+    shapes = _shapes(id(asset), asset)
+    frames = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(int))
+    poses = link_poses(asset, {n: trajectory.joint(n)[frames] for n in trajectory.joint_names}, base_transforms(trajectory.base_translation[frames]))
+    found: dict[tuple[str, str], Collision] = {}
+    for mover in sorted(moving & set(shapes)):
+        for other in asset.visual_links:
+            if other == mover or _neighbours(asset, mover, other) or (other in moving and other < mover):
+                continue
+            relative = np.linalg.inv(poses[other]) @ poses[mover]
+            points = shapes[mover].points
+            baseline = _inside_fraction(points @ relative[0, :3, :3].T + relative[0, :3, 3], shapes[other])
+            for index in range(1, frames.shape[0]):
+                local = points @ relative[index, :3, :3].T + relative[index, :3, 3]
+                fraction = _inside_fraction(local, shapes[other]) - baseline
+                key = (mover, other)
+                if fraction > NEW_PENETRATION and (key not in found or fraction > found[key].fraction):
+                    frame = int(frames[index])
+                    found[key] = Collision(mover, other, frame, float(trajectory.times[frame]), round(fraction, 4))
+    return sorted(found.values(), key=lambda c: (-c.fraction, c.moving_link, c.other_link))

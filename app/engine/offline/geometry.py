@@ -1,0 +1,273 @@
+"""What the asset's geometry says about its parts.
+
+For every movable joint: which limit is closed and which open (the closed state is the
+one where the part sits flush against or inside the rest of the object — measured as
+protrusion outside the other links' box plus the growth of the whole object's box), which
+way is "pressed" (into the nearest face of the parent), which way is up, the part's
+radius about its axis (wheels, knobs) and the face it sits on. For the whole object: the
+front (where doors, drawers and controls face), up (+Z) and the viewer's right.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from app.engine.asset.kinematics import link_poses
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.offline.vocabulary import LABEL_CATEGORY
+from app.engine.offline.naming import link_category
+from app.engine.types import FloatArray
+
+UP = np.array([0.0, 0.0, 1.0])
+MAX_POINTS_PER_LINK = 1500
+OPEN_CLOSED_MIN_GAP = 0.02
+"""Smallest difference of the normalised closedness score that decides open vs closed."""
+SNAP_ANGLE_DEG = 35.0
+DEFAULT_FRONT = np.array([-1.0, 0.0, 0.0])
+"""PartNet-Mobility objects face -X after their root rotation; used only without any cue."""
+
+
+@dataclass(frozen=True, eq=False)
+class JointGeometry:
+    """Geometric facts about one movable joint (world frame, rest pose unless stated)."""
+
+    joint: str
+    type: str
+    child: str
+    category: str | None
+    moving_links: tuple[str, ...]
+    axis_world: FloatArray
+    pivot_world: FloatArray
+    lower: float | None
+    upper: float | None
+    rest: float
+    centroid: FloatArray
+    home_centroid: FloatArray
+    """Centroid of the moving links at the closed value (rest when unknown)."""
+    home_face: FloatArray
+    """Outward normal of the static box face nearest to the part in its closed state."""
+    closed_value: float | None
+    open_value: float | None
+    press_value: float | None
+    up_value: float | None
+    down_value: float | None
+    face_normal: FloatArray
+    radius: float
+    size: float
+
+    @property
+    def span(self) -> float | None:
+        return None if self.lower is None or self.upper is None else self.upper - self.lower
+
+
+@dataclass(frozen=True, eq=False)
+class ObjectGeometry:
+    center: FloatArray
+    extents: FloatArray
+    diag: float
+    front: FloatArray
+    up: FloatArray
+    right: FloatArray
+    joints: dict[str, JointGeometry]
+    category: str | None
+
+    def local(self, point: FloatArray) -> FloatArray:
+        """(front, right, up) coordinates of a world point relative to the object centre."""
+        offset = np.asarray(point) - self.center
+        return np.array([offset @ self.front, offset @ self.right, offset @ self.up])
+
+
+def _subsample(points: FloatArray) -> FloatArray:
+    if points.shape[0] <= MAX_POINTS_PER_LINK:
+        return points
+    step = int(np.ceil(points.shape[0] / MAX_POINTS_PER_LINK))
+    return points[::step]
+
+
+def _local_points(asset: ArticulatedAsset) -> dict[str, FloatArray]:
+    return {name: _subsample(asset.links[name].vertices()) for name in asset.visual_links}
+
+
+def _posed(points: dict[str, FloatArray], poses: dict[str, FloatArray], links: tuple[str, ...] | list[str], frame: int = 0) -> FloatArray:
+    chunks = [points[n] @ poses[n][frame, :3, :3].T + poses[n][frame, :3, 3] for n in links if n in points]
+    return np.concatenate(chunks) if chunks else np.zeros((0, 3))
+
+
+def _closedness(moving: FloatArray, static: FloatArray) -> tuple[float, float]:
+    """(protrusion, box volume) of a configuration: lower = more closed."""
+    low, high = static.min(axis=0), static.max(axis=0)
+    outside = np.maximum(low - moving, 0.0) + np.maximum(moving - high, 0.0)
+    protrusion = float(np.linalg.norm(outside, axis=1).mean())
+    union = np.concatenate([moving, static])
+    volume = float(np.prod(np.maximum(union.max(axis=0) - union.min(axis=0), 1e-9)))
+    return protrusion, volume
+
+
+def _nearest_face_normal(point: FloatArray, box_low: FloatArray, box_high: FloatArray) -> FloatArray:
+    distances = np.concatenate([point - box_low, box_high - point])
+    index = int(np.argmin(np.abs(distances)))
+    normal = np.zeros(3)
+    normal[index % 3] = -1.0 if index < 3 else 1.0
+    return normal
+
+
+def _radius(asset: ArticulatedAsset, points: dict[str, FloatArray], joint: str, poses: dict[str, FloatArray]) -> float:
+    spec = asset.joints[joint]
+    child_points = _posed(points, poses, [spec.child])
+    if child_points.shape[0] == 0:
+        return 0.0
+    pose = poses[spec.parent][0] @ spec.origin
+    axis = pose[:3, :3] @ spec.axis
+    offset = child_points - pose[:3, 3]
+    radial = offset - np.outer(offset @ axis, axis)
+    return float(np.linalg.norm(radial, axis=1).max())
+
+
+def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> JointGeometry:
+    spec = asset.joints[joint]
+    moving = asset.moving_links(joint)
+    static_links = [n for n in asset.visual_links if n not in moving]
+    static = _posed(points, rest, static_links)
+    moved = _posed(points, rest, moving)
+    frame = rest[spec.parent][0] @ spec.origin
+    axis_world = frame[:3, :3] @ spec.axis
+    centroid = moved.mean(axis=0) if moved.shape[0] else frame[:3, 3]
+    category = link_category(asset, spec.child)
+    closed = opened = press = up = down = None
+    face = np.zeros(3)
+    size = float(np.linalg.norm(moved.max(axis=0) - moved.min(axis=0))) if moved.shape[0] else 0.0
+    if static.shape[0]:
+        face = _nearest_face_normal(centroid, static.min(axis=0), static.max(axis=0))
+    if spec.bounded and spec.lower is not None and spec.upper is not None and spec.upper > spec.lower:
+        values = np.array([spec.lower, spec.upper])
+        poses = link_poses(asset, {joint: values}, frames=2)
+        heights, scores, depth = [], [], []
+        for frame_index in range(2):
+            posed = _posed(points, poses, moving, frame_index)
+            if posed.shape[0] == 0 or static.shape[0] == 0:
+                break
+            protrusion, volume = _closedness(posed, static)
+            scores.append((protrusion, volume))
+            heights.append(float(posed[:, 2].mean()))
+            depth.append(float((posed.mean(axis=0) - centroid) @ face))
+        if len(scores) == 2:
+            diag = max(float(np.linalg.norm(static.max(axis=0) - static.min(axis=0))), 1e-9)
+            base_volume = float(np.prod(np.maximum(static.max(axis=0) - static.min(axis=0), 1e-9)))
+            score = [p / diag + (v / base_volume - 1.0) for p, v in scores]
+            if abs(score[0] - score[1]) > OPEN_CLOSED_MIN_GAP:
+                closed_index = int(np.argmin(score))
+                closed, opened = float(values[closed_index]), float(values[1 - closed_index])
+            up, down = float(values[int(np.argmax(heights))]), float(values[int(np.argmin(heights))])
+            if abs(heights[0] - heights[1]) < 1e-6:
+                up = down = None
+            press = float(values[int(np.argmin(depth))]) if abs(depth[0] - depth[1]) > 1e-9 else None
+    home_centroid, home_face = centroid, face
+    if closed is not None and static.shape[0]:
+        home = _posed(points, link_poses(asset, {joint: np.array([closed])}, frames=1), moving)
+        home_centroid = home.mean(axis=0)
+        home_face = _nearest_face_normal(home_centroid, static.min(axis=0), static.max(axis=0))
+    return JointGeometry(
+        joint=joint,
+        type=spec.type,
+        child=spec.child,
+        category=category,
+        moving_links=moving,
+        axis_world=axis_world,
+        pivot_world=frame[:3, 3],
+        lower=spec.lower,
+        upper=spec.upper,
+        rest=spec.rest,
+        centroid=centroid,
+        home_centroid=home_centroid,
+        home_face=home_face,
+        closed_value=closed,
+        open_value=opened,
+        press_value=press,
+        up_value=up,
+        down_value=down,
+        face_normal=face,
+        radius=_radius(asset, points, joint, rest),
+        size=size,
+    )
+
+
+def _horizontal(vector: FloatArray) -> FloatArray:
+    flat = np.array([vector[0], vector[1], 0.0])
+    norm = float(np.linalg.norm(flat))
+    return flat / norm if norm > 1e-9 else np.zeros(3)
+
+
+def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray]) -> FloatArray:
+    """One part's vote for the object's front (zero when it says nothing)."""
+    if geometry.open_value is not None and geometry.closed_value is not None:
+        if geometry.type == "prismatic":
+            posed = link_poses(asset, {geometry.joint: np.array([geometry.closed_value, geometry.open_value])}, frames=2)
+            motion = _posed(points, posed, geometry.moving_links, 1).mean(axis=0) - _posed(points, posed, geometry.moving_links, 0).mean(axis=0)
+            return 2.0 * _horizontal(motion)
+        if abs(geometry.axis_world @ UP) < 0.7 and abs(geometry.home_face @ UP) > 0.5:
+            # a lid (or laptop screen) on top, hinged at the back: the front is away from the hinge
+            offset = geometry.pivot_world - center
+            offset = offset - (offset @ geometry.axis_world) * geometry.axis_world
+            return -0.5 * _horizontal(offset)
+        return 1.0 * _horizontal(geometry.home_face)
+    if geometry.category in ("button", "knob", "switch", "pedal", "lever"):
+        return 0.5 * _horizontal(geometry.face_normal)
+    return np.zeros(3)
+
+
+def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset) -> FloatArray:
+    """Horizontal unit vector the object faces: where doors, drawers and controls point."""
+    points = _local_points(asset)
+    vote = np.zeros(3)
+    for geometry in joints.values():
+        vote += _front_vote(geometry, center, asset, points)
+    if np.linalg.norm(vote) < 1e-6:
+        return DEFAULT_FRONT.copy()
+    front = _horizontal(vote)
+    snapped = np.round(front)
+    if np.count_nonzero(snapped) == 1 and np.degrees(np.arccos(np.clip(front @ snapped, -1, 1))) < SNAP_ANGLE_DEG:
+        return snapped.astype(np.float64)
+    return front
+
+
+@lru_cache(maxsize=64)
+def _cached(asset_id: int, asset: ArticulatedAsset) -> ObjectGeometry:
+    points = _local_points(asset)
+    rest = link_poses(asset, {}, frames=1)
+    everything = _posed(points, rest, asset.visual_links)
+    low, high = everything.min(axis=0), everything.max(axis=0)
+    center = (low + high) / 2.0
+    joints = {j: _joint_geometry(asset, j, points, rest) for j in asset.controllable_joints}
+    front = infer_front(joints, center, asset)
+    right = np.cross(-front, UP)
+    return ObjectGeometry(
+        center=center,
+        extents=high - low,
+        diag=float(np.linalg.norm(high - low)),
+        front=front,
+        up=UP.copy(),
+        right=right / max(float(np.linalg.norm(right)), 1e-9),
+        joints=joints,
+        category=object_category(asset),
+    )
+
+
+def analyse(asset: ArticulatedAsset) -> ObjectGeometry:
+    """Geometric summary of ``asset`` (cached per asset object)."""
+    return _cached(id(asset), asset)
+
+
+def object_category(asset: ArticulatedAsset) -> str | None:
+    """The object's kind from its name or body label ("safe_101593" -> "safe")."""
+    name = asset.name.lower()
+    stem = "".join(c if c.isalpha() else " " for c in name).split()
+    if stem:
+        return stem[0] if stem[0] not in ("mobility", "robot", "asset", "model") else None
+    for link in asset.links.values():
+        label = (link.semantics.label or "").lower()
+        if label.endswith("_body") and label not in LABEL_CATEGORY:
+            return label[: -len("_body")]
+    return None

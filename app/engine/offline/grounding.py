@@ -1,0 +1,146 @@
+"""Ground part mentions of a prompt to the asset's movable joints.
+
+Candidates come from part categories (semantics.txt labels, link and visual names,
+with related categories as a fallback), are narrowed by an owner ("the knob on the
+door"), spatial qualifiers (top/bottom, left/right as you face the object, front/back,
+middle) and ordinals (first/second: top to bottom for stacked parts, else left to
+right), and a singular mention keeps the most salient candidate.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.offline.geometry import JointGeometry, ObjectGeometry
+from app.engine.offline.language import Mention
+from app.engine.offline.naming import describe_link, link_words
+from app.engine.offline.vocabulary import ORDINALS, SPATIAL, STOP_WORDS
+
+RELATED: dict[str, tuple[str, ...]] = {
+    "lid": ("door", "screen", "window"),
+    "door": ("lid", "window", "screen"),
+    "screen": ("lid", "door"),
+    "window": ("door", "lid"),
+    "drawer": ("tray", "container"),
+    "tray": ("drawer", "container", "turntable"),
+    "container": ("drawer", "tray"),
+    "turntable": ("tray",),
+    "knob": ("handle", "switch", "lever"),
+    "handle": ("knob", "lever", "latch"),
+    "lever": ("handle", "switch", "knob"),
+    "latch": ("handle", "knob", "lever"),
+    "button": ("switch", "key"),
+    "switch": ("button", "lever"),
+    "pedal": ("lever", "button"),
+    "wheel": (),
+}
+OPENABLE = ("door", "lid", "screen", "window", "drawer", "tray", "container")
+NON_NAME_WORDS = frozenset(SPATIAL) | frozenset(ORDINALS) | STOP_WORDS
+QUALIFIER_TOLERANCE = 0.1
+"""Candidates within this fraction of the object size of the extreme value all qualify."""
+
+
+@dataclass(frozen=True)
+class Part:
+    joint: str
+    link: str
+    category: str | None
+    geometry: JointGeometry
+
+    def describe(self, asset: ArticulatedAsset) -> str:
+        return f"{describe_link(asset, self.link)} via {self.joint} ({self.geometry.type})"
+
+
+def movable_parts(asset: ArticulatedAsset, geometry: ObjectGeometry) -> list[Part]:
+    """Every controllable joint whose moving links have geometry."""
+    parts = []
+    for joint, info in geometry.joints.items():
+        if any(asset.links[n].has_geometry for n in info.moving_links):
+            parts.append(Part(joint=joint, link=info.child, category=info.category, geometry=info))
+    return parts
+
+
+def _position(part: Part, geometry: ObjectGeometry) -> np.ndarray:
+    return geometry.local(part.geometry.home_centroid)
+
+
+def _extreme(candidates: list[Part], geometry: ObjectGeometry, axis: int, largest: bool) -> list[Part]:
+    values = np.array([_position(p, geometry)[axis] for p in candidates])
+    best = values.max() if largest else values.min()
+    tolerance = QUALIFIER_TOLERANCE * max(float(geometry.extents.max()), 1e-6)
+    return [p for p, v in zip(candidates, values, strict=True) if abs(v - best) <= tolerance]
+
+
+def _apply_spatial(candidates: list[Part], words: tuple[str, ...], geometry: ObjectGeometry) -> list[Part]:
+    # local axes: 0 = front, 1 = right (as you face the object), 2 = up
+    rules = {"top": (2, True), "bottom": (2, False), "left": (1, False), "right": (1, True), "front": (0, True), "back": (0, False)}
+    for word in words:
+        if len(candidates) < 2:
+            break
+        if word in rules:
+            axis, largest = rules[word]
+            candidates = _extreme(candidates, geometry, axis, largest)
+        elif word == "middle":
+            candidates = [_ordered(candidates, geometry)[len(candidates) // 2]]
+        elif word in ("inner", "outer"):
+            distances = [float(np.linalg.norm(_position(p, geometry))) for p in candidates]
+            index = int(np.argmin(distances) if word == "inner" else np.argmax(distances))
+            candidates = [candidates[index]]
+    return candidates
+
+
+def _ordered(candidates: list[Part], geometry: ObjectGeometry) -> list[Part]:
+    """Reading order: top to bottom when stacked, else left to right."""
+    positions = np.array([_position(p, geometry) for p in candidates])
+    vertical = np.ptp(positions[:, 2]) >= np.ptp(positions[:, 1])
+    keys = [(-pos[2], pos[1]) if vertical else (pos[1], -pos[2]) for pos in positions]
+    return [p for _, p in sorted(zip(keys, candidates, strict=True), key=lambda item: item[0])]
+
+
+def _salient(candidates: list[Part], geometry: ObjectGeometry) -> Part:
+    """The part a singular mention most likely means: the largest, then top-most, then left-most."""
+    return max(candidates, key=lambda p: (round(p.geometry.size, 3), _position(p, geometry)[2], -_position(p, geometry)[1]))
+
+
+def _by_category(parts: list[Part], category: str) -> list[Part]:
+    exact = [p for p in parts if p.category == category]
+    if exact:
+        return exact
+    for related in RELATED.get(category, ()):
+        found = [p for p in parts if p.category == related]
+        if found:
+            return found
+    return []
+
+
+def openable_parts(parts: list[Part]) -> list[Part]:
+    """Parts that open and close (geometry decided which way), doors/lids before drawers."""
+    found = [p for p in parts if p.geometry.open_value is not None and (p.category in OPENABLE or p.category is None)]
+    return sorted(found, key=lambda p: (OPENABLE.index(p.category) if p.category in OPENABLE else len(OPENABLE), p.joint))
+
+
+def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGeometry, parts: list[Part], words: set[str] | None = None) -> list[Part]:
+    """Joints a mention refers to (empty when nothing matches).
+
+    ``words`` are extra prompt words that may pick a part by name ("release" button).
+    """
+    candidates = _by_category(parts, mention.category)
+    if mention.owner is not None and candidates:
+        owners = ground_mention(mention.owner, asset, geometry, parts)
+        owned = [p for p in candidates if any(p.link in asset.descendants(o.link) and p.joint != o.joint for o in owners)]
+        candidates = owned or candidates
+    if words and len(candidates) > 1:
+        distinctive = words - NON_NAME_WORDS - {mention.category, mention.head}
+        named = [p for p in candidates if link_words(asset, p.link, visuals=False) & distinctive]
+        candidates = named or candidates
+    candidates = _apply_spatial(candidates, mention.spatial, geometry)
+    if mention.ordinal is not None and len(candidates) > 1:
+        ordered = _ordered(candidates, geometry)
+        index = mention.ordinal - 1 if mention.ordinal > 0 else len(ordered) - 1
+        candidates = [ordered[min(index, len(ordered) - 1)]]
+    if not candidates or mention.plural:
+        return candidates
+    return [_salient(candidates, geometry)]

@@ -1,0 +1,77 @@
+"""The offline perceiver's reading of a prompt, before it becomes Causal.json."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Literal
+
+import numpy as np
+
+from app.engine.types import FloatArray
+
+Role = Literal["control", "direct", "effect"]
+Return = Literal["self_return", "stays", "unknown"]
+
+
+@dataclass(frozen=True)
+class JointGoal:
+    """Move ``joint`` to ``value`` (or spin it at ``omega``)."""
+
+    joint: str
+    link: str
+    category: str | None
+    role: Role
+    value: float | None = None
+    expr: str | None = None
+    omega: float | None = None
+    returns: Return = "unknown"
+    sustains: bool = False
+    """Releasing this control would undo its effect (a pedal holding a lid open)."""
+
+
+@dataclass(frozen=True, eq=False)
+class BaseGoal:
+    """Translate the whole object by ``distance_m`` along the unit ``axis``."""
+
+    axis: FloatArray
+    distance_m: float
+    speed_mps: float | None = None
+    coast: bool = False
+    wheels: tuple[tuple[str, float], ...] = ()
+    """(joint, radians per metre travelled) of wheels that roll without slipping."""
+
+    def axis_tuple(self) -> tuple[float, float, float]:
+        rounded = np.round(self.axis, 6) + 0.0
+        return (float(rounded[0]), float(rounded[1]), float(rounded[2]))
+
+
+@dataclass(frozen=True)
+class Step:
+    """One causally distinct phase of the request."""
+
+    primitive: str
+    controls: tuple[JointGoal, ...] = ()
+    effects: tuple[JointGoal, ...] = ()
+    base: BaseGoal | None = None
+    parallel: bool = False
+    speed_factor: float = 1.0
+    duration_s: float | None = None
+    coupling: tuple[str, ...] = field(default_factory=tuple)
+
+    @property
+    def goals(self) -> tuple[JointGoal, ...]:
+        return self.controls + self.effects
+
+    @property
+    def target(self) -> JointGoal | None:
+        """The first physically manipulated part."""
+        if self.controls:
+            return self.controls[0]
+        return self.effects[0] if self.effects else None
+
+
+@dataclass(frozen=True)
+class Intent:
+    prompt: str
+    steps: tuple[Step, ...]
+    notes: tuple[str, ...] = ()

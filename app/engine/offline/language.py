@@ -1,0 +1,265 @@
+"""Prompt -> ordered actions: clauses with verb, part mentions, quantities, means and sequence.
+
+Handles sequences ("first A, then B", "A and then B", "after A-ing, B", "B after A-ing",
+"before B, A"), means-end ("press X to open Y", "open Y by pressing X", "use X to open Y",
+"press X so the Y opens") and parallel actions ("A while B").
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from app.engine.offline.quantities import Quantity, parse_quantity
+from app.engine.offline.vocabulary import (
+    CATEGORY_WORDS,
+    COLLECTIVE,
+    IRREGULAR,
+    OBJECT_WORDS,
+    ORDINALS,
+    PARTICLES,
+    SPATIAL,
+    VERBS,
+)
+
+_SEQ_SPLIT = re.compile(
+    r"\s*(?:[.;!?]+(?=\s|$)\s*|,?\s*\band\s+then\b\s*|,?\s*\bthen\b\s*|,?\s*\bafterwards?\b,?\s*|,?\s*\bafter that\b,?\s*"
+    r"|,?\s*\bnext\b,?\s*|,?\s*\bfinally\b,?\s*|,?\s*\bsubsequently\b,?\s*|,?\s*\bonce (?:that is|it is|it's) done\b,?\s*)"
+)
+_PARALLEL = re.compile(r"\s*,?\s*\b(?:while|whilst|as|at the same time as|simultaneously with|and at the same time)\b\s*")
+_INTRANSITIVE = {
+    "opens": "open", "open": "open", "pops open": "open", "swings open": "open", "flips open": "open",
+    "springs open": "open", "lifts": "open", "rises": "open", "comes up": "open", "pops up": "raise",
+    "closes": "close", "shuts": "close", "slides out": "pull_out", "comes out": "pull_out",
+    "spins": "spin", "turns": "spin", "rotates": "spin", "rolls": "spin", "drops": "lower", "goes down": "lower",
+}
+_INTRANSITIVE_RE = re.compile(r"\b(" + "|".join(sorted(map(re.escape, _INTRANSITIVE), key=len, reverse=True)) + r")\b")
+_FILLER = re.compile(r"^\s*(?:please\s+|first(?:ly)?,?\s+|now,?\s+|just\s+|and\s+|also\s+|to\s+)+")
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A reference to a part (or the whole object) inside a clause."""
+
+    category: str
+    head: str
+    spatial: tuple[str, ...] = ()
+    ordinal: int | None = None
+    plural: bool = False
+    owner: Mention | None = None
+
+
+@dataclass(frozen=True)
+class Clause:
+    text: str
+    verb: str | None
+    kind: str | None
+    particle: str | None
+    mentions: tuple[Mention, ...]
+    quantity: Quantity
+    unknown_object: str | None = None
+
+
+@dataclass(frozen=True)
+class Action:
+    """One step a user asked for: ``clause`` (the goal), optionally achieved through ``means``."""
+
+    clause: Clause
+    means: Clause | None = None
+    parallel: bool = False
+
+
+@dataclass(frozen=True)
+class ParsedPrompt:
+    text: str
+    actions: tuple[Action, ...]
+    quantity: Quantity = field(default_factory=Quantity)
+
+
+def normalize(prompt: str) -> str:
+    text = prompt.lower().replace("°", " degrees ").replace("’", "'")
+    text = re.sub(r"(\d)([a-z%])", r"\1 \2", text)
+    text = re.sub(r"([+-])\s+([xyz])\b", r"\1\2", text)
+    text = re.sub(r"[\"()\[\]]", " ", text)
+    return re.sub(r"\s+", " ", text).strip()
+
+
+def lemma(word: str) -> str:
+    """Verb lemma for regular and listed irregular forms."""
+    if word in IRREGULAR:
+        return IRREGULAR[word]
+    if word in VERBS:
+        return word
+    for suffix, repl in (("ing", ""), ("ing", "e"), ("ed", ""), ("ed", "e"), ("es", ""), ("s", "")):
+        if word.endswith(suffix) and word[: -len(suffix)] + repl in VERBS:
+            return word[: -len(suffix)] + repl
+    return word
+
+
+_PHRASES = sorted(((p, c) for c, words in CATEGORY_WORDS.items() for p in words), key=lambda pc: -len(pc[0]))
+
+
+def _find_mentions(text: str, exclude_verbs: set[int] | None = None) -> list[tuple[int, int, str, str]]:
+    """(start, end, category, phrase) of every part phrase, longest match first, non-overlapping."""
+    taken: list[tuple[int, int]] = []
+    found = []
+    for phrase, category in _PHRASES:
+        for match in re.finditer(r"(?<![\w-])" + re.escape(phrase) + r"(?![\w-])", text):
+            start, end = match.span()
+            if any(start < e and end > s for s, e in taken):
+                continue
+            if exclude_verbs and start in exclude_verbs:
+                continue
+            taken.append((start, end))
+            found.append((start, end, category, phrase))
+    return sorted(found)
+
+
+def _qualifiers(window: str) -> tuple[tuple[str, ...], int | None, bool]:
+    words = re.findall(r"[a-z0-9]+(?:-[a-z]+)?", window)
+    spatial = tuple(dict.fromkeys(SPATIAL[w] for w in words if w in SPATIAL))
+    ordinal = next((ORDINALS[w] for w in words if w in ORDINALS), None)
+    collective = any(w in COLLECTIVE for w in words)
+    return spatial, ordinal, collective
+
+
+def _verb(text: str) -> tuple[str | None, str | None, int]:
+    """First verb of a clause: (lemma, kind, position); verbs used as nouns after 'the' are skipped."""
+    previous = ""
+    for match in re.finditer(r"[a-z]+", text):
+        word = match.group(0)
+        base = lemma(word)
+        if base in VERBS and previous not in ("the", "a", "an", "its", "of"):
+            if base == "step" and not re.search(r"\bstep\s+on\b", text[match.start():]):
+                previous = word
+                continue
+            return base, VERBS[base], match.start()
+        previous = word
+    return None, None, -1
+
+
+def _particle(text: str, verb_end: int) -> str | None:
+    after = text[verb_end:].split()
+    for word in after[:6]:
+        if word in PARTICLES and word not in ("on", "off", "over", "back"):
+            return PARTICLES[word]
+        if word in (",", "to", "by", "so", "and"):
+            break
+    for word in ("open", "shut", "closed", "out", "in", "up", "down"):
+        if re.search(r"\b" + word + r"\b\s*(?:,|$|\bwith\b|\bby\b|\bfor\b|\bto\b|\d)", text[verb_end:]):
+            return PARTICLES[word]
+    return None
+
+
+def parse_clause(text: str) -> Clause:
+    """Verb, particle, mentions and quantity of one clause."""
+    verb, kind, position = _verb(text)
+    verb_end = position + len(verb) if verb else 0
+    found = _find_mentions(text, exclude_verbs={position} if verb in ("switch", "dial", "step", "wheel", "lever") else None)
+    mentions: list[Mention] = []
+    boundary = max(verb_end, 0)
+    for start, end, category, phrase in found:
+        window = text[boundary:start] if start >= boundary else text[max(0, start - 25):start]
+        spatial, ordinal, collective = _qualifiers(window)
+        plural = collective or phrase.endswith("s") and not phrase.endswith(("ss", "us"))
+        mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural)
+        owner_link = re.match(r"\s*(?:of|on|in|at|attached to|from)\s+(?:the\s+)?", text[end:])
+        if mentions and re.search(r"\b(?:of|on|in|at|from)\s+(?:the\s+)?$", text[boundary:start]):
+            previous = mentions.pop()
+            mention = Mention(category=previous.category, head=previous.head, spatial=previous.spatial, ordinal=previous.ordinal, plural=previous.plural, owner=mention)
+        elif re.search(r"'s\s*$", text[boundary:start]) and mentions:
+            owner = mentions.pop()
+            mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, owner=owner)
+        mentions.append(mention)
+        boundary = end if not owner_link else end
+    if not mentions:
+        words = set(re.findall(r"[a-z]+", text))
+        if words & set(OBJECT_WORDS):
+            mentions.append(Mention(category="object", head=sorted(words & set(OBJECT_WORDS))[0]))
+    unknown = None
+    if not mentions and verb:
+        rest = re.sub(r"^\s*(?:the|a|an|its|this|that)\s+", "", text[verb_end:]).strip()
+        noun = re.match(r"([a-z][a-z\- ]{1,40}?)(?:\s+(?:to|by|and|with|for|so|until|all|fully|halfway|slightly)\b|[,.]|$)", rest)
+        if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES:
+            unknown = noun.group(1).strip()
+    particle = _particle(text, verb_end) if verb else None
+    return Clause(text=text.strip(), verb=verb, kind=kind, particle=particle, mentions=tuple(mentions), quantity=parse_quantity(text), unknown_object=unknown)
+
+
+def _effect_clause(text: str) -> Clause | None:
+    """An intransitive effect ("the door pops open") as a clause with the matching kind."""
+    match = _INTRANSITIVE_RE.search(text)
+    if match is None:
+        return None
+    found = _find_mentions(text[: match.start()])
+    if not found:
+        return None
+    kind = _INTRANSITIVE[match.group(1)]
+    clause = parse_clause(text[: match.start()].strip())
+    return Clause(text=text.strip(), verb=kind, kind=kind, particle=None, mentions=clause.mentions, quantity=parse_quantity(text))
+
+
+def _means_end(text: str) -> Action:
+    """Split a clause into goal and means when the text says how the goal is reached."""
+    use = re.match(r"^(?:use|using)\s+(.*?)\s+to\s+(.+)$", text)
+    if use:
+        return Action(clause=parse_clause(use.group(2)), means=parse_clause("operate " + use.group(1)))
+    by = re.match(r"^(.*?)\s+by\s+([a-z]+ing\b.*)$", text)
+    if by and _verb(by.group(1))[0]:
+        return Action(clause=parse_clause(by.group(1)), means=parse_clause(by.group(2)))
+    for connector in (r"in order to", r"so as to", r"to"):
+        match = re.match(r"^(.*?)\s+" + connector + r"\s+([a-z]+)\b(.*)$", text)
+        if match and _verb(match.group(1))[0] and lemma(match.group(2)) in VERBS:
+            return Action(clause=parse_clause(match.group(2) + match.group(3)), means=parse_clause(match.group(1)))
+    effect = re.match(r"^(.*?)\s*,?\s+(?:so that|so|which makes|which|and|until|causing|making)\s+(?:the\s+|its\s+)?(.+)$", text)
+    if effect and _verb(effect.group(1))[0]:
+        goal = _effect_clause(effect.group(2))
+        if goal is not None:
+            return Action(clause=goal, means=parse_clause(effect.group(1)))
+    return Action(clause=parse_clause(text))
+
+
+def _ordered(segment: str) -> list[str]:
+    """Reorder "after A-ing, B" / "B after A-ing" / "before B, A" into execution order."""
+    for pattern, order in (
+        (r"^after\s+(.*?),\s*(.+)$", (1, 2)),
+        (r"^once\s+(.*?),\s*(.+)$", (1, 2)),
+        (r"^when\s+(.*?),\s*(.+)$", (1, 2)),
+        (r"^before\s+(.*?),\s*(.+)$", (2, 1)),
+        (r"^(.+?)\s+after\s+([a-z]+ing\b.*)$", (2, 1)),
+        (r"^(.+?),?\s+before\s+([a-z]+ing\b.*)$", (1, 2)),
+    ):
+        match = re.match(pattern, segment)
+        if match:
+            return [match.group(i).strip() for i in order]
+    return [segment]
+
+
+def _split_and(segment: str) -> list[str]:
+    """Split "A and B" when B starts with a verb of its own (a second action)."""
+    parts = re.split(r"\s*,?\s*\band\b\s+(?=(?:also\s+)?[a-z]+)", segment)
+    merged: list[str] = []
+    for part in parts:
+        first = part.split()[0] if part.split() else ""
+        modifier = lemma(first) == "let" and re.match(r"let (?:it|them|the \w+) (?:roll|coast|glide|slide|return|spring back)", part)
+        if merged and (lemma(first) not in VERBS or modifier):
+            merged[-1] = merged[-1] + " and " + part
+        else:
+            merged.append(part)
+    return merged
+
+
+def parse_prompt(prompt: str) -> ParsedPrompt:
+    """Structured reading of a whole prompt, actions in execution order."""
+    text = normalize(prompt)
+    actions: list[Action] = []
+    for segment in (s for s in _SEQ_SPLIT.split(text) if s and s.strip(" ,")):
+        segment = _FILLER.sub("", segment.strip(" ,"))
+        for ordered in _ordered(segment):
+            parallel_parts = [p for p in _PARALLEL.split(ordered) if p.strip(" ,")]
+            for index, part in enumerate(parallel_parts):
+                for piece_index, piece in enumerate(_split_and(_FILLER.sub("", part.strip(" ,")))):
+                    action = _means_end(piece.strip(" ,"))
+                    parallel = index > 0 and piece_index == 0
+                    actions.append(Action(clause=action.clause, means=action.means, parallel=parallel))
+    return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

@@ -1,0 +1,234 @@
+"""Offline perceiver: prompt + asset -> :class:`Intent` (and from it Causal.json).
+
+Deterministic rules over the parsed prompt and the asset's geometry:
+- parts are grounded from every name source with spatial qualifiers;
+- targets come from geometry (which limit is open, pressed, up);
+- causal knowledge: a pedal opens (and holds) a lid; a release button opens a door or lid;
+  a handle, latch or knob on a door is operated before the door opens; wheels roll when the
+  whole object moves;
+- control return: buttons, pedals, handles self-return unless that would undo the result;
+  knobs, levers and switches stay.
+A prompt that cannot be grounded raises :class:`GroundingError` listing the movable parts.
+"""
+
+from __future__ import annotations
+
+import logging
+import re
+from dataclasses import replace
+
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.errors import GroundingError
+from app.engine.offline.base_motion import base_goal
+from app.engine.offline.geometry import ObjectGeometry, analyse
+from app.engine.offline.grounding import Part, ground_mention, movable_parts, openable_parts
+from app.engine.offline.intent import Intent, JointGoal, Step
+from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
+from app.engine.offline.quantities import Quantity
+from app.engine.offline.targets import goal_value, spin_omega, target_expression
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, UNLATCH_CATEGORIES
+
+logger = logging.getLogger(__name__)
+
+BASE_KINDS = frozenset({"move", "press", "pull_out", "raise", "lower", "push_in", "spin"})
+RELEASE_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock"})
+RELEASE_BUTTON_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice", "oven"})
+HINGED = ("door", "lid", "screen", "window")
+
+
+class _Builder:
+    def __init__(self, asset: ArticulatedAsset, parsed: ParsedPrompt) -> None:
+        self.asset = asset
+        self.parsed = parsed
+        self.obj: ObjectGeometry = analyse(asset)
+        self.parts = movable_parts(asset, self.obj)
+        self.words = set(re.findall(r"[a-z]+", parsed.text))
+        self.steps: list[Step] = []
+        self.notes: list[str] = []
+        self.mentioned: set[str] = set()
+        self.sustained: dict[str, JointGoal] = {}
+
+    # --- grounding -----------------------------------------------------------------
+    def refuse(self, why: str) -> GroundingError:
+        movable = [p.describe(self.asset) for p in self.parts]
+        listing = "; ".join(movable) if movable else "none"
+        return GroundingError(f"{why}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable)
+
+    def ground(self, mention: Mention, kind: str | None) -> list[Part]:
+        if mention.category == "object":
+            openable = openable_parts(self.parts)
+            if kind in ("open", "close") and openable:
+                return openable if mention.plural or "all" in self.words or "everything" in self.words else openable[:1]
+            return []
+        found = ground_mention(mention, self.asset, self.obj, self.parts, self.words)
+        if not found:
+            raise self.refuse(f"the prompt mentions a {mention.head}, but the asset has no such movable part")
+        return found
+
+    # --- goals ---------------------------------------------------------------------
+    def goal(self, part: Part, clause: Clause, role: str, quantity: Quantity) -> JointGoal:
+        kind = clause.kind or "operate"
+        value = goal_value(kind, clause.particle, part, quantity, self.obj)
+        returns = CONTROL_RETURN.get(part.category or "", "stays") if role == "control" else "stays"
+        if value is None:
+            omega, _ = spin_omega(part, quantity, self.obj)
+            return JointGoal(part.joint, part.link, part.category, role, omega=omega, returns="stays")  # type: ignore[arg-type]
+        if part.geometry.type != "continuous" and abs(value - part.geometry.rest) < 1e-9 and kind not in ("close", "release", "push_in", "lower"):
+            self.notes.append(f"{part.joint} is already at the requested state")
+        return JointGoal(part.joint, part.link, part.category, role, value=value, expr=target_expression(part.geometry, value), returns=returns)  # type: ignore[arg-type]
+
+    def goals(self, clause: Clause, role: str | None, quantity: Quantity) -> list[JointGoal]:
+        parts: list[Part] = []
+        for mention in clause.mentions:
+            parts.extend(p for p in self.ground(mention, clause.kind) if p not in parts)
+        if not parts and clause.unknown_object:
+            raise self.refuse(f"cannot find '{clause.unknown_object}' on the asset")
+        out = []
+        for part in parts:
+            self.mentioned.add(part.joint)
+            own_role = role or ("control" if part.category in CONTROL_CATEGORIES else "direct")
+            out.append(self.goal(part, clause, own_role, quantity))
+        return out
+
+    def is_base(self, clause: Clause) -> bool:
+        objects = [m for m in clause.mentions if m.category == "object"]
+        if not objects or len(objects) != len(clause.mentions):
+            return False
+        return clause.kind in BASE_KINDS or (clause.kind in ("open", "close") and not openable_parts(self.parts) and clause.particle in ("up", "down"))
+
+    # --- causal knowledge ----------------------------------------------------------
+    def implicit_controls(self, effects: list[JointGoal], kind: str | None) -> list[JointGoal]:
+        if kind not in ("open", "raise") or not effects:
+            return []
+        lids = [g for g in effects if g.category in HINGED]
+        if not lids:
+            return []
+        pedals = [p for p in self.parts if p.category == "pedal" and p.joint not in self.mentioned]
+        if pedals and any(g.category == "lid" for g in lids):
+            press = Clause(text="press", verb="press", kind="press", particle=None, mentions=(), quantity=Quantity())
+            goal = self.goal(pedals[0], press, "control", Quantity())
+            return [replace(goal, sustains=True, returns="stays")]
+        buttons = [p for p in self.parts if p.category == "button" and p.joint not in self.mentioned and self._is_release(p)]
+        if buttons:
+            press = Clause(text="press", verb="press", kind="press", particle=None, mentions=(), quantity=Quantity())
+            return [self.goal(buttons[0], press, "control", Quantity())]
+        return []
+
+    def _is_release(self, part: Part) -> bool:
+        from app.engine.offline.naming import link_words
+
+        return bool(link_words(self.asset, part.link, visuals=False) & RELEASE_WORDS)
+
+    def implicit_effects(self, controls: list[JointGoal]) -> list[JointGoal]:
+        """What a control causes on its own: pedal -> lid, release button -> door/lid."""
+        effects: list[JointGoal] = []
+        openable = [p for p in openable_parts(self.parts) if p.joint not in self.mentioned]
+        for control in controls:
+            part = next(p for p in self.parts if p.joint == control.joint)
+            wanted: tuple[str, ...] = ()
+            if control.category == "pedal":
+                wanted = ("lid",)
+            elif control.category == "button" and (self._is_release(part) or (self.obj.category in RELEASE_BUTTON_OBJECTS and len(openable) == 1)):
+                wanted = HINGED
+            targets = [p for p in openable if p.category in wanted]
+            if targets:
+                opening = Clause(text="open", verb="open", kind="open", particle=None, mentions=(), quantity=Quantity())
+                effects.append(self.goal(targets[0], opening, "effect", Quantity()))
+                self.mentioned.add(targets[0].joint)
+        return effects
+
+    def unlatch_step(self, effects: list[JointGoal], kind: str | None) -> Step | None:
+        if kind != "open":
+            return None
+        controls = []
+        for goal in effects:
+            if goal.category not in HINGED:
+                continue
+            for part in self.parts:
+                below = part.link in self.asset.descendants(goal.link) and part.joint != goal.joint
+                if below and part.category in UNLATCH_CATEGORIES and part.joint not in self.mentioned:
+                    turn = Clause(text="unlatch", verb="unlatch", kind="unlatch", particle=None, mentions=(), quantity=Quantity())
+                    controls.append(self.goal(part, turn, "control", Quantity()))
+                    self.mentioned.add(part.joint)
+        if not controls:
+            return None
+        return Step(primitive="unlatch", controls=tuple(controls), coupling=tuple(f"{c.joint} unlatches before the door opens" for c in controls))
+
+    # --- steps ---------------------------------------------------------------------
+    def add(self, action: Action) -> None:
+        clause = action.clause
+        quantity = replace(clause.quantity, speed_factor=clause.quantity.speed_factor if clause.quantity.speed_factor != 1.0 else self.parsed.quantity.speed_factor)
+        if clause.kind is None and not clause.mentions and action.means is None:
+            if clause.unknown_object or clause.text.strip():
+                self.notes.append(f"ignored '{clause.text}' (no action found)")
+            return
+        if self.is_base(clause) and action.means is None:
+            goal = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
+            self.steps.append(Step(primitive=clause.verb or "move", base=goal, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
+            return
+        controls = self.goals(action.means, "control", action.means.quantity) if action.means else []
+        effects = self.goals(clause, "effect" if controls else None, quantity)
+        if clause.kind == "release":
+            effects = self.release(effects)
+        if not controls:
+            direct_controls = [g for g in effects if g.role == "control"]
+            effects = [g for g in effects if g.role != "control"]
+            implicit = self.implicit_controls(effects, clause.kind)
+            if implicit:
+                effects = [replace(g, role="effect") for g in effects]
+            controls = direct_controls + implicit
+            if direct_controls and not effects:
+                effects = self.implicit_effects(direct_controls)
+        if not controls and not effects:
+            raise self.refuse(f"nothing in '{clause.text}' names a part to move")
+        unlatch = self.unlatch_step(effects, clause.kind) if controls == [] or all(c.category == "pedal" for c in controls) else None
+        if unlatch is not None:
+            self.steps.append(replace(unlatch, parallel=action.parallel))
+        controls = self.sustain(controls, effects)
+        coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
+        primitive = (action.means.verb if action.means else clause.verb) or clause.kind or "move"
+        self.steps.append(
+            Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel and unlatch is None,
+                 speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
+        )
+
+    def sustain(self, controls: list[JointGoal], effects: list[JointGoal]) -> list[JointGoal]:
+        out = []
+        for control in controls:
+            if control.category == "pedal" and any(e.category in HINGED for e in effects):
+                control = replace(control, sustains=True, returns="stays")
+                for effect in effects:
+                    self.sustained[effect.joint] = control
+            out.append(control)
+        return out
+
+    def release(self, goals: list[JointGoal]) -> list[JointGoal]:
+        """Releasing a sustaining control also lets what it holds fall back (a pedal's lid)."""
+        extra = []
+        for goal in goals:
+            for effect_joint, control in list(self.sustained.items()):
+                if control.joint == goal.joint:
+                    part = next(p for p in self.parts if p.joint == effect_joint)
+                    closing = Clause(text="close", verb="close", kind="close", particle=None, mentions=(), quantity=Quantity())
+                    extra.append(self.goal(part, closing, "effect", Quantity()))
+                    del self.sustained[effect_joint]
+        return [replace(g, role="control") for g in goals] + extra
+
+
+def read_intent(prompt: str, asset: ArticulatedAsset) -> Intent:
+    """Deterministic reading of ``prompt`` on ``asset``.
+
+    Raises
+    ------
+    GroundingError
+        Nothing in the prompt maps to a movable part (the message lists them).
+    """
+    parsed = parse_prompt(prompt)
+    builder = _Builder(asset, parsed)
+    if not builder.parts:
+        raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
+    for action in parsed.actions:
+        builder.add(action)
+    if not builder.steps:
+        raise builder.refuse(f"could not find an action in '{prompt}'")
+    return Intent(prompt=prompt, steps=tuple(builder.steps), notes=tuple(builder.notes))

@@ -1,0 +1,57 @@
+"""The offline agent as a provider: rule-based perceiver and planner, geometric critic."""
+
+from __future__ import annotations
+
+import time
+
+from app.engine.agents.roles import Context, Diagnosed, Perception, Planned, Roles
+from app.engine.execute.trajectory import Trajectory
+from app.engine.offline.causal_doc import causal_from_intent, intent_from_causal
+from app.engine.offline.critic import critique
+from app.engine.offline.perceiver import read_intent
+from app.engine.offline.planner import plan_intent
+from app.engine.plan.schema import Plan
+from app.engine.report import RoleCall
+
+PROVIDER = "offline"
+RULES_VERSION = "offline-rules-1"
+
+
+def _call(role: str, began: float) -> RoleCall:
+    return RoleCall(role=role, provider=PROVIDER, model=RULES_VERSION, seconds=round(time.perf_counter() - began, 6))
+
+
+class OfflinePerceiver:
+    name = PROVIDER
+    model = RULES_VERSION
+
+    async def perceive(self, context: Context) -> Perception:
+        began = time.perf_counter()
+        intent = read_intent(context.prompt, context.asset)
+        return Perception(causal=causal_from_intent(intent, context.asset), intent=intent, calls=(_call("perceiver", began),))
+
+
+class OfflinePlanner:
+    """Schedules the perceiver's steps; works from any Causal.json (a VLM's too)."""
+
+    name = PROVIDER
+    model = RULES_VERSION
+
+    async def plan(self, context: Context, perception: Perception) -> Planned:
+        began = time.perf_counter()
+        intent = perception.intent if perception.intent.steps else intent_from_causal(perception.causal, context.asset, context.prompt)
+        return Planned(plan=plan_intent(intent, context.asset), calls=(_call("planner", began),))
+
+
+class GeometricCritic:
+    name = PROVIDER
+    model = RULES_VERSION
+
+    async def critique(self, context: Context, perception: Perception, plan: Plan, trajectory: Trajectory) -> Diagnosed:
+        began = time.perf_counter()
+        result = critique(context.asset, plan, trajectory, perception.intent, collisions=context.config.check_collisions)
+        return Diagnosed(critique=result, calls=(_call("critic", began),))
+
+
+def offline_roles() -> Roles:
+    return Roles(provider=PROVIDER, perceiver=OfflinePerceiver(), planner=OfflinePlanner(), critic=GeometricCritic())

@@ -1,0 +1,155 @@
+"""Target joint values for a verb applied to a part, decided from geometry (never from signs)."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from app.engine.offline.geometry import JointGeometry, ObjectGeometry
+from app.engine.offline.grounding import Part
+from app.engine.offline.quantities import Quantity
+
+DEFAULT_TURN_RAD = math.pi / 2
+"""A knob turned without an amount turns a quarter turn."""
+DEFAULT_SPIN_RADPS = math.pi
+DEFAULT_SPIN_S = 2.0
+PUSH_CATEGORIES = ("button", "switch", "key")
+DOWN_CATEGORIES = ("pedal", "lever", "handle")
+LIMIT_EPS = 1e-9
+
+
+def _clamp(geometry: JointGeometry, value: float) -> float:
+    if geometry.lower is None or geometry.upper is None:
+        return value
+    return float(min(max(value, geometry.lower), geometry.upper))
+
+
+def _toward(geometry: JointGeometry, start: float, end: float, quantity: Quantity, size: float) -> float:
+    """Value from ``start`` toward ``end``: a fraction of the way, an angle or a distance."""
+    direction = 1.0 if end >= start else -1.0
+    if quantity.fraction is not None:
+        return start + quantity.fraction * (end - start)
+    if geometry.type in ("revolute", "continuous") and quantity.angle_rad is not None:
+        return _clamp(geometry, start + direction * quantity.angle_rad)
+    if geometry.type == "prismatic" and quantity.distance_m is not None:
+        return _clamp(geometry, start + direction * quantity.distance_m)
+    return end
+
+
+def _other_limit(geometry: JointGeometry) -> float | None:
+    """The limit farther from rest (something must move)."""
+    if geometry.lower is None or geometry.upper is None:
+        return None
+    return geometry.upper if abs(geometry.upper - geometry.rest) >= abs(geometry.lower - geometry.rest) else geometry.lower
+
+
+def _pressed(geometry: JointGeometry, category: str | None, particle: str | None) -> float | None:
+    if particle == "up" and geometry.up_value is not None:
+        return geometry.up_value
+    if particle == "down" or category in DOWN_CATEGORIES:
+        if geometry.down_value is not None and abs(geometry.down_value - geometry.rest) > LIMIT_EPS:
+            return geometry.down_value
+    value = geometry.press_value
+    if value is None or abs(value - geometry.rest) <= LIMIT_EPS:
+        value = _other_limit(geometry)
+    return value
+
+
+def rotation_sign(geometry: JointGeometry, sense: str | None, obj: ObjectGeometry) -> float:
+    """+1 or -1: the joint direction that turns the part clockwise (default) or counter-clockwise
+    as seen by a viewer facing the face the part sits on."""
+    facing = geometry.face_normal if np.linalg.norm(geometry.face_normal) > 0 else obj.front
+    toward_viewer = float(geometry.axis_world @ facing)
+    if abs(toward_viewer) < 1e-6:
+        toward_viewer = float(geometry.axis_world @ obj.front) or 1.0
+    clockwise = -1.0 if toward_viewer > 0 else 1.0
+    return clockwise if sense != "ccw" else -clockwise
+
+
+def _turn(part: Part, quantity: Quantity, obj: ObjectGeometry) -> float:
+    geometry = part.geometry
+    sign = rotation_sign(geometry, quantity.sense, obj)
+    if geometry.type == "continuous":
+        angle = quantity.angle_rad if quantity.angle_rad is not None else DEFAULT_TURN_RAD
+        return geometry.rest + sign * angle
+    if geometry.lower is None or geometry.upper is None:
+        return geometry.rest
+    wanted = geometry.upper if sign > 0 else geometry.lower
+    if abs(wanted - geometry.rest) <= LIMIT_EPS and quantity.sense is None:
+        wanted = _other_limit(geometry) or wanted
+    return _toward(geometry, geometry.rest, wanted, quantity, obj.diag)
+
+
+def goal_value(kind: str, particle: str | None, part: Part, quantity: Quantity, obj: ObjectGeometry) -> float | None:
+    """Target joint value of ``kind`` (open, close, press, ...) on ``part``; ``None`` = spin at a velocity."""
+    geometry = part.geometry
+    category = part.category
+    if particle == "out" and kind in ("pull_out", "press", "move", "open"):
+        kind = "pull_out"
+    elif particle == "in" and kind in ("press", "move", "push_in", "pull_out"):
+        kind = "push_in"
+    elif particle == "open":
+        kind = "open"
+    elif particle == "shut":
+        kind = "close"
+    if kind in ("operate", "unlatch"):
+        kind = "turn" if category in ("knob", "handle", "latch") and geometry.type != "prismatic" else "press"
+    if kind == "move":
+        kind = {"up": "raise", "down": "lower"}.get(particle or "", "open")
+    if kind == "spin" or (kind == "turn" and geometry.type == "continuous" and (quantity.omega_radps is not None or quantity.duration_s is not None)):
+        return None
+    closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
+    opened = geometry.open_value
+    if kind in ("open", "pull_out") and opened is not None and category not in PUSH_CATEGORIES:
+        return _toward(geometry, closed, opened, quantity, obj.diag)
+    if kind in ("close", "push_in") and category not in PUSH_CATEGORIES and (opened is not None or kind == "close"):
+        return closed
+    if kind == "raise" and geometry.up_value is not None:
+        return _toward(geometry, geometry.rest, geometry.up_value, quantity, obj.diag)
+    if kind == "lower" and geometry.down_value is not None:
+        return _toward(geometry, geometry.rest, geometry.down_value, quantity, obj.diag)
+    if kind == "release":
+        return geometry.rest
+    if kind == "turn" or (geometry.type == "continuous" and kind in ("open", "close", "toggle", "press")):
+        return _turn(part, quantity, obj)
+    if kind in ("press", "push_in", "toggle", "pull_out", "raise", "lower", "open", "close"):
+        pressed = _pressed(geometry, category, particle)
+        if pressed is None:
+            return None
+        return _toward(geometry, geometry.rest, pressed, quantity, obj.diag)
+    return _other_limit(geometry)
+
+
+def spin_omega(part: Part, quantity: Quantity, obj: ObjectGeometry) -> tuple[float, float]:
+    """(omega rad/s, duration s) of a spin request."""
+    sign = rotation_sign(part.geometry, quantity.sense, obj)
+    if quantity.omega_radps is not None:
+        omega = quantity.omega_radps
+        duration = quantity.duration_s or (abs(quantity.angle_rad / omega) if quantity.angle_rad else DEFAULT_SPIN_S)
+    elif quantity.angle_rad is not None:
+        duration = quantity.duration_s or DEFAULT_SPIN_S
+        omega = quantity.angle_rad / duration
+    else:
+        duration = quantity.duration_s or DEFAULT_SPIN_S
+        omega = DEFAULT_SPIN_RADPS / quantity.speed_factor
+    return sign * abs(omega), duration
+
+
+def target_expression(geometry: JointGeometry, value: float) -> str:
+    """The contract form of a target: ``upper_limit``, ``lower_limit``, ``a*upper_limit``,
+    a mid-range form, or a plain number for unbounded joints."""
+    if geometry.lower is None or geometry.upper is None:
+        return f"{value:.9g}"
+    if abs(value - geometry.upper) <= LIMIT_EPS:
+        return "upper_limit"
+    if abs(value - geometry.lower) <= LIMIT_EPS:
+        return "lower_limit"
+    for name, limit in (("upper_limit", geometry.upper), ("lower_limit", geometry.lower)):
+        if abs(limit) > LIMIT_EPS and abs(geometry.rest) <= LIMIT_EPS:
+            alpha = value / limit
+            if 0.0 < alpha < 1.0:
+                return f"{alpha:.9g}*{name}"
+    span = geometry.upper - geometry.lower
+    alpha = (value - geometry.lower) / span
+    return f"lower_limit + {alpha:.9g}*(upper_limit - lower_limit)"
