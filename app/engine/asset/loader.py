@@ -21,6 +21,7 @@ logger = logging.getLogger(__name__)
 
 PREFERRED_URDF = "mobility.urdf"
 SEMANTICS_FILE = "semantics.txt"
+MACOS_METADATA_DIR = "__MACOSX"
 _VISUAL_SUFFIX = re.compile(r"[-_]?\d+$")
 
 
@@ -51,12 +52,27 @@ def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str
             raise AssetError("an asset must be a directory or a .zip archive", file=source.name)
         with tempfile.TemporaryDirectory(prefix="artimo-asset-") as tmp:
             extract_zip(source, Path(tmp), limits)
-            return _load_directory(Path(tmp), name or source.stem, limits)
-    return _load_directory(source, name or source.resolve().name, limits)
+            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=source.name)
+    return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name)
 
 
-def find_urdf(root: Path) -> Path:
+def _archive_root(extracted: Path) -> Path:
+    """The asset directory inside an extracted zip: its single top-level folder, if it has one.
+
+    A zip "of a directory" usually holds ``folder/mobility.urdf ...``; using ``folder``
+    as the root makes the zip load exactly like the directory (same ``urdf_file``,
+    same ``content_hash``).
+    """
+    entries = [p for p in extracted.iterdir() if p.name != MACOS_METADATA_DIR]
+    if len(entries) == 1 and entries[0].is_dir() and not entries[0].is_symlink():
+        return entries[0]
+    return extracted
+
+
+def find_urdf(root: Path, *, shown: str | None = None) -> Path:
     """The asset's URDF: the only ``.urdf`` under ``root``, or the shallowest ``mobility.urdf``.
+
+    ``shown`` names the asset in error messages (the upload's name; default ``root.name``).
 
     Raises
     ------
@@ -66,19 +82,19 @@ def find_urdf(root: Path) -> Path:
     found = sorted((p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file()), key=lambda p: (len(p.parts), str(p)))
     found = [p for p in found if not p.is_symlink()]
     if not found:
-        raise AssetError("no .urdf file in the asset", file=root.name)
+        raise AssetError("no .urdf file in the asset", file=shown or root.name, element="*.urdf")
     if len(found) == 1:
         return found[0]
     preferred = [p for p in found if p.name == PREFERRED_URDF]
     if preferred:
         return preferred[0]
     names = ", ".join(str(p.relative_to(root)) for p in found)
-    raise AssetError(f"the asset holds several URDF files ({names}); keep one or name it {PREFERRED_URDF}", file=root.name)
+    raise AssetError(f"the asset holds several URDF files ({names}); keep one or name it {PREFERRED_URDF}", file=shown or root.name, element=names)
 
 
-def _load_directory(root: Path, name: str, limits: AssetLimits) -> ArticulatedAsset:
+def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str) -> ArticulatedAsset:
     root = root.resolve()
-    urdf_path = find_urdf(root)
+    urdf_path = find_urdf(root, shown=shown)
     urdf_name = str(urdf_path.relative_to(root))
     data = urdf_path.read_bytes()
     check_urdf_xml(data, urdf_name, limits)

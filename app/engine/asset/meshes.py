@@ -97,7 +97,7 @@ def resolve_mesh_path(filename: str, urdf_dir: Path, root: Path, *, urdf_name: s
         path = Path(name)
         candidates = [path if path.is_absolute() else urdf_dir / path]
     for candidate in candidates:
-        resolved = confine(candidate, root, file=urdf_name, element=element)
+        resolved = confine(candidate, root, file=urdf_name, element=element, shown=filename)
         if resolved.is_file():
             return resolved
     raise AssetError(f"mesh file '{filename}' does not exist", file=urdf_name, element=element)
@@ -212,7 +212,8 @@ def load_mesh_file(
         raise AssetError(f"cannot read mesh: {type(exc).__name__}: {exc}", file=relative) from exc
     escapes = [r for r in report if "escapes" in r]
     if escapes:
-        raise AssetError("mesh references a file outside the asset directory: " + "; ".join(escapes), file=relative)
+        names = "; ".join(r.removesuffix(" escapes the asset directory") for r in escapes)
+        raise AssetError("mesh references a file outside the asset directory: " + "; ".join(escapes), file=relative, element=f"reference {names}")
     budget.warnings.extend(f"{relative}: referenced file {r}" for r in report)
     parts = []
     for index, (mesh, node_transform) in enumerate(_scene_meshes(scene)):

@@ -210,5 +210,21 @@ class ArticulatedAsset:
         return {j.child: j for j in self.joints.values()}
 
     def rest_vector(self) -> FloatArray:
-        """(j,) rest values of ``movable_joints``."""
-        return np.array([self.joints[j].rest for j in self.movable_joints], dtype=np.float64)
+        """(j,) rest values of ``movable_joints``; a mimic joint follows its leader's rest.
+
+        Matches :func:`app.engine.asset.kinematics.resolve_joint_values` with no values
+        given (a mimic of a fixed joint sits at its own rest).
+        """
+        values: dict[str, float] = {}
+
+        def rest_of(name: str) -> float:
+            if name not in values:
+                joint = self.joints[name]
+                leader = None if joint.mimic is None else self.joints.get(joint.mimic.joint)
+                if joint.mimic is not None and leader is not None and leader.movable:
+                    values[name] = joint.clamp(joint.mimic.multiplier * rest_of(leader.name) + joint.mimic.offset)
+                else:
+                    values[name] = joint.rest
+            return values[name]
+
+        return np.array([rest_of(j) for j in self.movable_joints], dtype=np.float64)

@@ -54,13 +54,14 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
     try:
         zf = zipfile.ZipFile(archive)
     except (zipfile.BadZipFile, OSError) as exc:
-        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name) from exc
+        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name, element="central directory") from exc
     with zf:
         infos = zf.infolist()
         if len(infos) > limits.max_files:
             raise AssetError(
                 f"zip holds {len(infos)} members, more than the limit of {limits.max_files}",
                 file=archive.name,
+                element=infos[limits.max_files].filename,
             )
         total = 0
         for info in infos:
@@ -68,6 +69,12 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
             if problem:
                 raise AssetError(f"unsafe zip member: {problem}", file=archive.name, element=info.filename)
             total += info.file_size
+            if total > limits.max_total_bytes:
+                raise AssetError(
+                    f"zip expands to more than the limit of {limits.max_total_bytes} bytes",
+                    file=archive.name,
+                    element=info.filename,
+                )
             if info.compress_size > 0 and info.file_size / info.compress_size > limits.max_compression_ratio:
                 raise AssetError(
                     "zip member expands more than "
@@ -75,11 +82,6 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
                     file=archive.name,
                     element=info.filename,
                 )
-        if total > limits.max_total_bytes:
-            raise AssetError(
-                f"zip expands to {total} bytes, more than the limit of {limits.max_total_bytes}",
-                file=archive.name,
-            )
         root = target.resolve()
         written = 0
         for info in infos:
@@ -134,8 +136,11 @@ def _depth(element: object) -> int:
     return deepest
 
 
-def confine(path: Path, root: Path, *, file: str, element: str) -> Path:
+def confine(path: Path, root: Path, *, file: str, element: str, shown: str | None = None) -> Path:
     """Resolve ``path`` and require it to stay inside ``root`` (symlinks resolved).
+
+    ``shown`` is the name used in the error message (default ``path``); callers pass
+    the path as written in the asset so that server paths do not leak into messages.
 
     Raises
     ------
@@ -144,5 +149,5 @@ def confine(path: Path, root: Path, *, file: str, element: str) -> Path:
     """
     resolved = path.resolve()
     if not resolved.is_relative_to(root.resolve()):
-        raise AssetError(f"path '{path}' resolves outside the asset directory", file=file, element=element)
+        raise AssetError(f"path '{shown or path}' resolves outside the asset directory", file=file, element=element)
     return resolved

@@ -141,38 +141,52 @@ def _check_mimics(joints: dict[str, JointSpec], file_name: str) -> None:
             target = nxt
 
 
+def _cycle_from(link: str, parent_of: dict[str, yourdfpy.Joint]) -> list[str]:
+    """Names of the joints of the cycle reached by walking up from ``link`` (every link on the way has a parent)."""
+    seen: list[str] = []
+    while link not in seen:
+        seen.append(link)
+        link = parent_of[link].parent
+    cycle = seen[seen.index(link) :]
+    return [parent_of[name].name for name in reversed(cycle)]
+
+
 def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
-    parent_of: dict[str, str] = {}
+    parent_of: dict[str, yourdfpy.Joint] = {}
     for joint in robot.joints:
         if joint.child in parent_of:
             raise AssetError(
-                f"link '{joint.child}' is the child of two joints ('{parent_of[joint.child]}' and '{joint.name}')",
+                f"link '{joint.child}' is the child of two joints ('{parent_of[joint.child].name}' and '{joint.name}')",
                 file=file_name,
                 element=f"joint {joint.name}",
             )
-        parent_of[joint.child] = joint.name
+        parent_of[joint.child] = joint
     roots = [link.name for link in robot.links if link.name not in parent_of]
-    if not roots:
-        raise AssetError("the joints form a cycle (no root link)", file=file_name, element="joint")
     children: dict[str, list[yourdfpy.Joint]] = {}
     for joint in robot.joints:
         children.setdefault(joint.parent, []).append(joint)
-    joint_order: list[str] = []
-    link_order: list[str] = [roots[0]]
-    queue = [roots[0]]
+    reached = set(roots)
+    queue = list(roots)
     while queue:
-        link = queue.pop(0)
-        for joint in children.get(link, []):
-            joint_order.append(joint.name)
-            link_order.append(joint.child)
+        for joint in children.get(queue.pop(0), []):
+            reached.add(joint.child)
             queue.append(joint.child)
-    unreached = [j.name for j in robot.joints if j.name not in set(joint_order)]
-    if unreached:
-        raise AssetError("the joints form a cycle", file=file_name, element=f"joint {unreached[0]}")
+    unreached = [link.name for link in robot.links if link.name not in reached]
+    if unreached:  # every unreached link has a parent, so walking up must loop
+        cycle = _cycle_from(unreached[0], parent_of)
+        raise AssetError(f"the joints form a cycle ({' -> '.join(cycle)})", file=file_name, element=f"joint {cycle[0]}")
     if len(roots) > 1:
         raise AssetError(
             f"the URDF has {len(roots)} root links ({', '.join(roots)}); links must form one tree",
             file=file_name,
             element=f"link {roots[1]}",
         )
+    joint_order: list[str] = []
+    link_order: list[str] = [roots[0]]
+    queue = [roots[0]]
+    while queue:
+        for joint in children.get(queue.pop(0), []):
+            joint_order.append(joint.name)
+            link_order.append(joint.child)
+            queue.append(joint.child)
     return roots[0], tuple(joint_order), tuple(link_order)

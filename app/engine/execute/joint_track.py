@@ -115,7 +115,7 @@ def _omega(control: JointVelocity, t0: float, t1: float, t: FloatArray) -> Float
     if control.decay is None:
         return omega
     decayed = omega * np.exp(-(t - t0) / control.decay.tau_s)
-    floor = np.minimum(control.decay.min_omega_radps, np.abs(omega))
+    floor = control.decay.min_omega_radps  # |w| >= min_omega with the sign of the undecayed w (SPEC §3)
     return np.where(np.abs(decayed) < floor, np.sign(omega) * floor, decayed)
 
 

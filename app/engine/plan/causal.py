@@ -6,6 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from app.engine.errors import ExpressionError
 from app.engine.plan.expr import parse_expr, parse_velocity
 
 AXES_WORLD: tuple[tuple[float, float, float], ...] = (
@@ -71,7 +72,10 @@ class JointTarget(_Strict):
                 if parse_velocity(value) is None:
                     raise ValueError(f"velocity target {value!r} must be velocity:<number>")
             else:
-                parse_expr(value)
+                try:
+                    parse_expr(value)
+                except ExpressionError as exc:  # a ValueError lets pydantic report the field path
+                    raise ValueError(exc.message) from exc
         return value
 
     @property

@@ -10,8 +10,9 @@ from __future__ import annotations
 import math
 from typing import Annotated, Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
+from pydantic import BaseModel, ConfigDict, Field, ValidationInfo, field_validator, model_validator
 
+from app.engine.errors import ExpressionError
 from app.engine.plan.expr import parse_expr, parse_velocity
 
 FPS_CHOICES = (24, 30)
@@ -90,7 +91,10 @@ class JointPosition(_Control):
     @classmethod
     def _parse(cls, value: str | None) -> str | None:
         if value is not None:
-            parse_expr(value)
+            try:
+                parse_expr(value)
+            except ExpressionError as exc:  # a ValueError lets pydantic report the field path
+                raise ValueError(exc.message) from exc
         return value
 
     @model_validator(mode="after")
@@ -149,11 +153,13 @@ class Segment(BaseModel):
     def _velocity_targets(cls, value: Any) -> Any:
         return [_velocity_target_to_control(c) for c in value] if isinstance(value, list) else value
 
-    @model_validator(mode="after")
-    def _ordered(self) -> Segment:
-        if self.t0 >= self.t1:
-            raise ValueError(f"t0 ({self.t0}) must be smaller than t1 ({self.t1})")
-        return self
+    @field_validator("t1")
+    @classmethod
+    def _ordered(cls, t1: float, info: ValidationInfo) -> float:
+        t0 = info.data.get("t0")
+        if t0 is not None and t0 >= t1:
+            raise ValueError(f"t1 ({t1}) must be greater than t0 ({t0})")
+        return t1
 
 
 class Meta(BaseModel):

@@ -1,0 +1,327 @@
+"""Every rejection of SPEC §1 is an ``AssetError`` naming the file and the element."""
+
+from __future__ import annotations
+
+import io
+import os
+import stat
+import zipfile
+from pathlib import Path
+
+import pytest
+from PIL import Image
+from support.primitive_assets import TRIANGLE_OBJ, box, joint, link, mesh, robot, two_link_urdf, write_asset
+
+from app.engine.asset.loader import load_asset
+from app.engine.asset.safety import AssetLimits
+from app.engine.errors import AssetError
+
+URDF = "mobility.urdf"
+HINGE = two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)))
+
+
+def rejected(path: Path, file: str, element: str, *, limits: AssetLimits | None = None, says: str = "") -> AssetError:
+    """Load ``path``, expect an AssetError whose message names ``file`` and ``element``."""
+    with pytest.raises(AssetError) as caught:
+        load_asset(path, limits=limits)
+    error = caught.value
+    message = str(error)
+    assert error.file == file, message
+    assert error.element is not None and element in error.element, message
+    assert f"file {file}" in message and element in message, message
+    assert says in message, message
+    return error
+
+
+def urdf_asset(tmp_path: Path, urdf: str, files: dict[str, str | bytes] | None = None) -> Path:
+    return write_asset(tmp_path / "asset", urdf, files)
+
+
+# --- zip archives ---------------------------------------------------------------------------
+
+
+def make_zip(tmp_path: Path, members: list[tuple[str | zipfile.ZipInfo, bytes | str]], *, stored: bool = False) -> Path:
+    archive = tmp_path / "upload.zip"
+    with zipfile.ZipFile(archive, "w", compression=zipfile.ZIP_STORED if stored else zipfile.ZIP_DEFLATED) as zf:
+        for name, data in members:
+            zf.writestr(name, data)
+    return archive
+
+
+def test_zip_member_with_parent_reference(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE), ("../evil.obj", TRIANGLE_OBJ)])
+    rejected(archive, "upload.zip", "../evil.obj", says="'..'")
+    assert not (tmp_path / "evil.obj").exists()
+
+
+def test_zip_member_with_absolute_path(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE), ("/tmp/artimo_evil.obj", TRIANGLE_OBJ)])
+    rejected(archive, "upload.zip", "/tmp/artimo_evil.obj", says="absolute path")
+
+
+def test_zip_symlink_member(tmp_path: Path) -> None:
+    info = zipfile.ZipInfo("meshes/part.obj")
+    info.external_attr = (stat.S_IFLNK | 0o777) << 16
+    archive = make_zip(tmp_path, [(URDF, HINGE), (info, "/etc/passwd")])
+    rejected(archive, "upload.zip", "meshes/part.obj", says="symbolic link")
+
+
+def test_zip_with_too_many_members(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE), ("a.txt", "a"), ("b.txt", "b")])
+    rejected(archive, "upload.zip", "b.txt", limits=AssetLimits(max_files=2), says="3 members")
+
+
+def test_zip_over_the_total_size_cap(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE), ("noise.bin", os.urandom(3000))], stored=True)
+    rejected(archive, "upload.zip", "noise.bin", limits=AssetLimits(max_total_bytes=3000), says="3000 bytes")
+
+
+def test_zip_member_with_implausible_compression_ratio(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE), ("zeros.obj", b"\0" * 4000)])
+    rejected(archive, "upload.zip", "zeros.obj", limits=AssetLimits(max_compression_ratio=20.0), says="20x")
+
+
+def test_broken_zip(tmp_path: Path) -> None:
+    archive = tmp_path / "upload.zip"
+    archive.write_bytes(b"PK\x03\x04 not really a zip archive")
+    rejected(archive, "upload.zip", "central directory", says="not a readable zip")
+
+
+def test_truncated_zip(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [(URDF, HINGE)])
+    archive.write_bytes(archive.read_bytes()[:-30])
+    rejected(archive, "upload.zip", "central directory")
+
+
+# --- XML ----------------------------------------------------------------------------------
+
+BILLION_LAUGHS = """<?xml version="1.0"?>
+<!DOCTYPE robot [
+ <!ENTITY lol "lol">
+ <!ENTITY lol1 "&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;&lol;">
+ <!ENTITY lol2 "&lol1;&lol1;&lol1;&lol1;&lol1;&lol1;&lol1;&lol1;&lol1;&lol1;">
+ <!ENTITY lol3 "&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;&lol2;">
+]>
+<robot name="&lol3;"><link name="base"><visual><geometry><box size="1 1 1"/></geometry></visual></link></robot>
+"""
+EXTERNAL_ENTITY = """<?xml version="1.0"?>
+<!DOCTYPE robot [<!ENTITY secret SYSTEM "file:///etc/passwd">]>
+<robot name="r"><link name="&secret;"><visual><geometry><box size="1 1 1"/></geometry></visual></link></robot>
+"""
+EXTERNAL_DTD = """<?xml version="1.0"?>
+<!DOCTYPE robot SYSTEM "http://example.invalid/robot.dtd">
+<robot name="r"><link name="base"><visual><geometry><box size="1 1 1"/></geometry></visual></link></robot>
+"""
+
+
+@pytest.mark.parametrize(
+    "text", [BILLION_LAUGHS, EXTERNAL_ENTITY, EXTERNAL_DTD], ids=["billion-laughs", "external-entity", "external-dtd"]
+)
+def test_xml_entities_and_dtds_are_refused(tmp_path: Path, text: str) -> None:
+    rejected(urdf_asset(tmp_path, text), URDF, "<!DOCTYPE>", says="forbidden XML construct")
+
+
+# --- mesh paths -----------------------------------------------------------------------------
+
+
+def mesh_urdf(filename: str) -> str:
+    return two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)), child_visual=mesh(filename))
+
+
+def test_mesh_path_with_parent_reference(tmp_path: Path) -> None:
+    (tmp_path / "x.obj").write_text(TRIANGLE_OBJ)  # exists, but outside the asset
+    error = rejected(
+        urdf_asset(tmp_path, mesh_urdf("../x.obj")), URDF, "link part visual 0", says="outside the asset directory"
+    )
+    assert "'../x.obj'" in str(error) and str(tmp_path) not in str(error)
+
+
+def test_mesh_path_absolute(tmp_path: Path) -> None:
+    outside = tmp_path / "x.obj"
+    outside.write_text(TRIANGLE_OBJ)
+    rejected(
+        urdf_asset(tmp_path, mesh_urdf(str(outside))), URDF, "link part visual 0", says="outside the asset directory"
+    )
+
+
+def test_mesh_path_file_url_absolute(tmp_path: Path) -> None:
+    outside = tmp_path / "x.obj"
+    outside.write_text(TRIANGLE_OBJ)
+    rejected(
+        urdf_asset(tmp_path, mesh_urdf(f"file://{outside}")),
+        URDF,
+        "link part visual 0",
+        says="outside the asset directory",
+    )
+
+
+def test_mesh_path_package_url_escaping(tmp_path: Path) -> None:
+    (tmp_path / "x.obj").write_text(TRIANGLE_OBJ)
+    asset = urdf_asset(tmp_path, mesh_urdf("package://asset/../../x.obj"), {"meshes/part.obj": TRIANGLE_OBJ})
+    rejected(asset, URDF, "link part visual 0", says="outside the asset directory")
+
+
+def test_mesh_symlink_leaving_the_asset(tmp_path: Path) -> None:
+    outside = tmp_path / "x.obj"
+    outside.write_text(TRIANGLE_OBJ)
+    asset = urdf_asset(tmp_path, mesh_urdf("meshes/part.obj"))
+    (asset / "meshes").mkdir()
+    (asset / "meshes" / "part.obj").symlink_to(outside)
+    rejected(asset, URDF, "link part visual 0", says="outside the asset directory")
+
+
+def test_obj_mtllib_escaping(tmp_path: Path) -> None:
+    (tmp_path / "evil.mtl").write_text("newmtl m\nKd 1 0 0\n")
+    obj = "mtllib ../../evil.mtl\nusemtl m\n" + TRIANGLE_OBJ
+    asset = urdf_asset(tmp_path, mesh_urdf("meshes/part.obj"), {"meshes/part.obj": obj})
+    rejected(asset, "meshes/part.obj", "../../evil.mtl", says="outside the asset directory")
+
+
+def _png() -> bytes:
+    buffer = io.BytesIO()
+    Image.new("RGB", (2, 2), (255, 0, 0)).save(buffer, format="PNG")
+    return buffer.getvalue()
+
+
+TEXTURED_OBJ = "mtllib part.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl m\nf 1/1 2/2 3/3\n"
+
+
+def test_mtl_map_kd_escaping(tmp_path: Path) -> None:
+    (tmp_path / "secret.png").write_bytes(_png())
+    files = {"meshes/part.obj": TEXTURED_OBJ, "meshes/part.mtl": "newmtl m\nKd 1 1 1\nmap_Kd ../../secret.png\n"}
+    rejected(urdf_asset(tmp_path, mesh_urdf("meshes/part.obj"), files), "meshes/part.obj", "../../secret.png")
+
+
+def test_mtl_map_kd_inside_is_loaded(tmp_path: Path) -> None:
+    files = {
+        "meshes/part.obj": TEXTURED_OBJ,
+        "meshes/part.mtl": "newmtl m\nKd 1 1 1\nmap_Kd tex.png\n",
+        "meshes/tex.png": _png(),
+    }
+    part = load_asset(urdf_asset(tmp_path, mesh_urdf("meshes/part.obj"), files)).links["part"].parts[0]
+    assert part.material.image_png is not None and part.material.image_png.startswith(b"\x89PNG")
+    assert part.uv is not None and part.uv.shape == (3, 2)
+
+
+def test_missing_mesh(tmp_path: Path) -> None:
+    asset = urdf_asset(tmp_path, mesh_urdf("meshes/gone.obj"), {"meshes/part.obj": TRIANGLE_OBJ})
+    rejected(asset, URDF, "link part visual 0", says="'meshes/gone.obj' does not exist")
+
+
+# --- the joint tree ---------------------------------------------------------------------------
+
+BOX = box((1.0, 1.0, 1.0))
+
+
+def test_cycle_beside_the_root(tmp_path: Path) -> None:
+    urdf = robot(
+        link("base", BOX),
+        link("a", BOX),
+        link("b", BOX),
+        joint("ab", "fixed", "a", "b"),
+        joint("ba", "fixed", "b", "a"),
+    )
+    error = rejected(urdf_asset(tmp_path, urdf), URDF, "joint ", says="cycle")
+    assert error.element in ("joint ab", "joint ba")
+
+
+def test_cycle_without_a_root(tmp_path: Path) -> None:
+    urdf = robot(link("a", BOX), link("b", BOX), joint("ab", "fixed", "a", "b"), joint("ba", "fixed", "b", "a"))
+    error = rejected(urdf_asset(tmp_path, urdf), URDF, "joint ", says="cycle")
+    assert error.element in ("joint ab", "joint ba")
+
+
+def test_link_with_two_parents(tmp_path: Path) -> None:
+    urdf = robot(
+        link("base", BOX),
+        link("a", BOX),
+        link("b", BOX),
+        joint("to_b", "fixed", "base", "b"),
+        joint("again_b", "fixed", "a", "b"),
+    )
+    rejected(urdf_asset(tmp_path, urdf), URDF, "joint again_b", says="child of two joints")
+
+
+def test_several_roots(tmp_path: Path) -> None:
+    urdf = robot(link("base", BOX), link("island", BOX), link("part", BOX), joint("j", "fixed", "base", "part"))
+    rejected(urdf_asset(tmp_path, urdf), URDF, "link island", says="2 root links")
+
+
+def test_several_roots_with_joints_below_each(tmp_path: Path) -> None:
+    urdf = robot(
+        link("base", BOX), link("part", BOX), link("island", BOX), link("rock", BOX),
+        joint("j", "fixed", "base", "part"), joint("k", "fixed", "island", "rock"),
+    )  # fmt: skip
+    rejected(urdf_asset(tmp_path, urdf), URDF, "link island", says="2 root links")
+
+
+@pytest.mark.parametrize(
+    ("joint_xml", "says"),
+    [
+        (joint("j", "floating", "base", "part"), "floating joints are not supported"),
+        (joint("j", "planar", "base", "part"), "planar joints are not supported"),
+        (joint("j", "revolute", "base", "part"), "revolute joint has no <limit>"),
+        (joint("j", "prismatic", "base", "part"), "prismatic joint has no <limit>"),
+        (joint("j", "revolute", "base", "part", limit=(1.0, 0.5)), "not a valid range"),
+        (joint("j", "prismatic", "base", "part", limit=(0.0, 1.0), axis=(0.0, 0.0, 0.0)), "axis is zero"),
+        (joint("j", "revolute", "ghost", "part", limit=(0.0, 1.0)), "parent link 'ghost' is not defined"),
+        (joint("j", "revolute", "base", "ghost", limit=(0.0, 1.0)), "child link 'ghost' is not defined"),
+        (
+            joint("j", "revolute", "base", "part", limit=(0.0, 1.0), mimic=("ghost", 1.0, 0.0)),
+            "mimics unknown joint 'ghost'",
+        ),
+    ],
+    ids=[
+        "floating",
+        "planar",
+        "revolute-no-limit",
+        "prismatic-no-limit",
+        "lower-above-upper",
+        "zero-axis",
+        "unknown-parent",
+        "unknown-child",
+        "mimic-unknown",
+    ],
+)
+def test_bad_joint(tmp_path: Path, joint_xml: str, says: str) -> None:
+    rejected(urdf_asset(tmp_path, two_link_urdf(joint_xml)), URDF, "joint j", says=says)
+
+
+def test_duplicate_link_names(tmp_path: Path) -> None:
+    urdf = robot(link("base", BOX), link("base", BOX))
+    rejected(urdf_asset(tmp_path, urdf), URDF, "link base", says="duplicate link name")
+
+
+def test_duplicate_joint_names(tmp_path: Path) -> None:
+    urdf = robot(
+        link("base", BOX),
+        link("a", BOX),
+        link("b", BOX),
+        joint("j", "fixed", "base", "a"),
+        joint("j", "fixed", "base", "b"),
+    )
+    rejected(urdf_asset(tmp_path, urdf), URDF, "joint j", says="duplicate joint name")
+
+
+# --- which URDF -------------------------------------------------------------------------------
+
+
+def test_several_urdfs_without_mobility(tmp_path: Path) -> None:
+    asset = write_asset(tmp_path / "asset", HINGE, {"b.urdf": HINGE}, urdf_name="a.urdf")
+    rejected(asset, "asset", "a.urdf, b.urdf", says="several URDF files")
+
+
+def test_several_urdfs_in_a_zip_name_the_upload(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("a.urdf", HINGE), ("b.urdf", HINGE)])
+    rejected(archive, "upload.zip", "a.urdf, b.urdf", says="several URDF files")
+
+
+def test_no_urdf(tmp_path: Path) -> None:
+    asset = write_asset(tmp_path / "asset", None, {"meshes/part.obj": TRIANGLE_OBJ})
+    rejected(asset, "asset", "*.urdf", says="no .urdf file")
+
+
+def test_mobility_urdf_is_preferred_among_several(tmp_path: Path) -> None:
+    other = robot(link("only", BOX))
+    asset = write_asset(tmp_path / "asset", HINGE, {"extra/other.urdf": other, "zz.urdf": other})
+    assert load_asset(asset).joint_order == ("hinge",)
