@@ -15,6 +15,8 @@ from app.engine.execute.trajectory import Trajectory
 from app.engine.files import atomic_write_text
 
 MAX_FRAMES = 100_000
+UNIT_TOLERANCE = 1e-12
+"""Base quaternions this close to unit length are kept bit-exact (no renormalisation)."""
 
 
 def trajectory_records(trajectory: Trajectory) -> list[dict[str, Any]]:
@@ -63,7 +65,7 @@ def _frame(line: str, number: int, source: str) -> dict[str, Any]:
 def _floats(values: Any, size: int, what: str) -> list[float] | None:
     if values is None:
         return None
-    if not isinstance(values, list) or len(values) != size or not all(isinstance(v, int | float) and math.isfinite(v) for v in values):
+    if not isinstance(values, list) or len(values) != size or not all(_number(v) for v in values):
         raise MetricError(f"{what} must be {size} finite numbers")
     return [float(v) for v in values]
 
@@ -90,40 +92,88 @@ def read_trajectory_jsonl(path: str | Path, asset: ArticulatedAsset, *, fps: int
     if len(lines) > MAX_FRAMES:
         raise MetricError(f"{source.name}: more than {MAX_FRAMES} frames")
     names = asset.movable_joints
-    rest = asset.rest_vector()
-    q = np.tile(rest, (len(lines), 1))
+    q = np.tile(asset.rest_vector(), (len(lines), 1))
     times = np.zeros(len(lines))
     translation = np.zeros((len(lines), 3))
     rotation = np.tile([0.0, 0.0, 0.0, 1.0], (len(lines), 1))
     unknown: set[str] = set()
+    modes: list[dict[str, bool]] = []
     rate = fps or 30
     for row, (number, line) in enumerate(lines):
         record = _frame(line, number, source.name)
-        angles = record.get("joint_angles", record.get("joint_pos", {}))
-        if not isinstance(angles, dict):
-            raise MetricError(f"{source.name} line {number}: joint_angles must be an object")
-        for name, value in angles.items():
-            if name in names:
-                if not isinstance(value, int | float) or not math.isfinite(value):
-                    raise MetricError(f"{source.name} line {number}: joint '{name}' value is not a finite number")
-                q[row, names.index(name)] = float(value)
-            elif name not in asset.joints:
-                unknown.add(str(name))
-        time_value = record.get("time_s")
-        times[row] = float(time_value) if isinstance(time_value, int | float) else float(record.get("frame_idx", row)) / rate
-        pose = record.get("base_pose") or {}
-        moved = _floats(pose.get("translation"), 3, f"{source.name} line {number}: base_pose.translation")
-        turned = _floats(pose.get("rotation_xyzw"), 4, f"{source.name} line {number}: base_pose.rotation_xyzw")
-        if moved is not None:
-            translation[row] = moved
-        if turned is not None and np.linalg.norm(turned) > 1e-9:
-            rotation[row] = np.asarray(turned) / np.linalg.norm(turned)
+        where = f"{source.name} line {number}"
+        _joint_row(record, asset, q[row], unknown, where)
+        times[row] = _time(record, row, rate, where)
+        modes.append(_modes(record.get("modes"), where))
+        _base_row(record, translation[row], rotation[row], where)
     notes = [f"{source.name}: unknown joints ignored: {', '.join(sorted(unknown))}"] if unknown else []
     estimated = rate if fps else _estimate_fps(times)
-    return Trajectory(fps=estimated, times=times, joint_names=names, q=q, base_translation=translation, base_rotation_xyzw=rotation), notes
+    trajectory = Trajectory(
+        fps=estimated,
+        times=times,
+        joint_names=names,
+        q=q,
+        base_translation=translation,
+        base_rotation_xyzw=rotation,
+        modes=tuple(modes),
+    )
+    return trajectory, notes
+
+
+def _joint_row(record: dict[str, Any], asset: ArticulatedAsset, q_row: np.ndarray, unknown: set[str], where: str) -> None:
+    """Fill ``q_row`` (j,) from ``joint_angles`` (or ``joint_pos``); collect unknown joint names."""
+    names = asset.movable_joints
+    angles = record.get("joint_angles", record.get("joint_pos", {}))
+    if not isinstance(angles, dict):
+        raise MetricError(f"{where}: joint_angles must be an object")
+    for name, value in angles.items():
+        if name in names:
+            if not _number(value):
+                raise MetricError(f"{where}: joint '{name}' value is not a finite number")
+            q_row[names.index(name)] = float(value)
+        elif name not in asset.joints:
+            unknown.add(str(name))
+
+
+def _base_row(record: dict[str, Any], translation_row: np.ndarray, rotation_row: np.ndarray, where: str) -> None:
+    """Fill the (3,) translation and (4,) unit quaternion rows from ``base_pose`` when present."""
+    pose = record.get("base_pose") or {}
+    if not isinstance(pose, dict):
+        raise MetricError(f"{where}: base_pose must be an object")
+    moved = _floats(pose.get("translation"), 3, f"{where}: base_pose.translation")
+    turned = _floats(pose.get("rotation_xyzw"), 4, f"{where}: base_pose.rotation_xyzw")
+    if moved is not None:
+        translation_row[:] = moved
+    if turned is not None and np.linalg.norm(turned) > 1e-9:
+        length = float(np.linalg.norm(turned))
+        rotation_row[:] = turned if abs(length - 1.0) <= UNIT_TOLERANCE else np.asarray(turned) / length
+
+
+def _number(value: Any) -> bool:
+    return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)
+
+
+def _time(record: dict[str, Any], row: int, rate: int, where: str) -> float:
+    """``time_s``, else ``frame_idx / rate``, else ``row / rate``."""
+    if "time_s" in record:
+        if not _number(record["time_s"]):
+            raise MetricError(f"{where}: time_s must be a finite number")
+        return float(record["time_s"])
+    index = record.get("frame_idx", row)
+    if not _number(index):
+        raise MetricError(f"{where}: frame_idx must be a number")
+    return float(index) / rate
+
+
+def _modes(value: Any, where: str) -> dict[str, bool]:
+    if value is None:
+        return {}
+    if not isinstance(value, dict) or not all(isinstance(v, bool) for v in value.values()):
+        raise MetricError(f"{where}: modes must map names to true/false")
+    return {str(k): bool(v) for k, v in value.items()}
 
 
 def _estimate_fps(times: np.ndarray) -> int:
     steps = np.diff(times)
     steps = steps[steps > 0]
-    return int(round(1.0 / float(np.median(steps)))) if steps.size else 30
+    return round(1.0 / float(np.median(steps))) if steps.size else 30

@@ -8,6 +8,7 @@ comparison with rest tolerates assets whose parts already overlap when closed.
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass
 from functools import lru_cache
 
@@ -23,7 +24,9 @@ MAX_HULLS_PER_LINK = 48
 POINTS_PER_LINK = 240
 MAX_FRAMES = 24
 DEPTH_MARGIN_FRACTION = 0.02
-"""Points must be this fraction of the other link's size inside a hull to count."""
+"""Points must be this fraction of the other link's size inside a hull to count ..."""
+THIN_MARGIN_FRACTION = 0.2
+"""... or, for a thin part (a door slab), this fraction of its thinnest extent."""
 NEW_PENETRATION = 0.06
 """Fraction of a link's points newly inside another link that counts as a collision."""
 
@@ -39,20 +42,39 @@ class Collision:
 
 @dataclass(frozen=True, eq=False)
 class _LinkShape:
-    hulls: tuple[tuple[FloatArray, FloatArray, FloatArray], ...]
-    """(equations (f, 4), box low (3,), box high (3,)) per hull, link frame."""
+    hulls: tuple[tuple[FloatArray, FloatArray, FloatArray, float], ...]
+    """(equations (f, 4), box low (3,), box high (3,), depth margin) per hull, link frame."""
     points: FloatArray
     size: float
 
 
-def _hull(vertices: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray] | None:
+def _hull(vertices: FloatArray, link_size: float) -> tuple[FloatArray, FloatArray, FloatArray, float] | None:
     if vertices.shape[0] < 4 or np.linalg.matrix_rank(vertices - vertices.mean(axis=0), tol=1e-9) < 3:
         return None
     try:
         hull = ConvexHull(vertices)
     except QhullError:
         return None
-    return hull.equations, vertices.min(axis=0), vertices.max(axis=0)
+    low, high = vertices.min(axis=0), vertices.max(axis=0)
+    margin = min(DEPTH_MARGIN_FRACTION * link_size, THIN_MARGIN_FRACTION * float(np.min(high - low)))
+    return hull.equations, low, high, margin
+
+
+def _surface_points(asset: ArticulatedAsset, link: str) -> FloatArray:
+    """(n, 3) area-weighted surface samples of a link (seeded by its name: deterministic)."""
+    parts = asset.links[link].parts
+    triangles = np.concatenate([p.vertices[p.faces] for p in parts])
+    areas = 0.5 * np.linalg.norm(np.cross(triangles[:, 1] - triangles[:, 0], triangles[:, 2] - triangles[:, 0]), axis=1)
+    if areas.sum() <= 0:
+        return asset.links[link].vertices()[:POINTS_PER_LINK]
+    seed = int.from_bytes(hashlib.sha256(f"collisions:{link}".encode()).digest()[:8], "little")
+    generator = np.random.default_rng(seed)
+    chosen = generator.choice(triangles.shape[0], size=POINTS_PER_LINK, p=areas / areas.sum())
+    u, v = generator.random(POINTS_PER_LINK), generator.random(POINTS_PER_LINK)
+    flip = u + v > 1.0
+    u[flip], v[flip] = 1.0 - u[flip], 1.0 - v[flip]
+    corner = triangles[chosen]
+    return corner[:, 0] + u[:, None] * (corner[:, 1] - corner[:, 0]) + v[:, None] * (corner[:, 2] - corner[:, 0])
 
 
 @lru_cache(maxsize=32)
@@ -60,12 +82,10 @@ def _shapes(asset_id: int, asset: ArticulatedAsset) -> dict[str, _LinkShape]:
     shapes = {}
     for name in asset.visual_links:
         parts = sorted(asset.links[name].parts, key=lambda p: -float(np.prod(np.ptp(p.vertices, axis=0) + 1e-9)))
-        hulls = tuple(h for h in (_hull(p.vertices) for p in parts[:MAX_HULLS_PER_LINK]) if h is not None)
         vertices = asset.links[name].vertices()
-        step = max(1, vertices.shape[0] // POINTS_PER_LINK)
-        points = vertices[::step][:POINTS_PER_LINK]
         size = float(np.linalg.norm(np.ptp(vertices, axis=0)))
-        shapes[name] = _LinkShape(hulls=hulls, points=points, size=size)
+        hulls = tuple(h for h in (_hull(p.vertices, size) for p in parts[:MAX_HULLS_PER_LINK]) if h is not None)
+        shapes[name] = _LinkShape(hulls=hulls, points=_surface_points(asset, name), size=size)
     return shapes
 
 
@@ -73,9 +93,8 @@ def _inside_fraction(points: FloatArray, shape: _LinkShape) -> float:
     """Fraction of ``points`` (other link's frame) deeper than the margin inside any hull."""
     if not shape.hulls or points.shape[0] == 0:
         return 0.0
-    margin = DEPTH_MARGIN_FRACTION * shape.size
     inside = np.zeros(points.shape[0], dtype=bool)
-    for equations, low, high in shape.hulls:
+    for equations, low, high, margin in shape.hulls:
         near = np.all((points >= low + margin) & (points <= high - margin), axis=1) & ~inside
         if not near.any():
             continue
@@ -113,3 +132,36 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
                     frame = int(frames[index])
                     found[key] = Collision(mover, other, frame, float(trajectory.times[frame]), round(fraction, 4))
     return sorted(found.values(), key=lambda c: (-c.fraction, c.moving_link, c.other_link))
+
+
+PATH_SAMPLES = 8
+
+
+def blocking_joints(asset: ArticulatedAsset, joint: str, target: float, state: dict[str, float]) -> list[str]:
+    """Movable joints whose parts (at ``state``) stand in the way of moving ``joint`` to ``target``.
+
+    The joint is swept from its value in ``state`` to ``target`` with everything else
+    still; a part of another joint that the sweep newly penetrates blocks it (an oven
+    tray behind a closed door).
+    """
+    names = asset.movable_joints
+    start = state.get(joint, asset.joints[joint].rest)
+    sweep = np.linspace(start, target, PATH_SAMPLES + 1)
+    q = np.array([[state.get(n, asset.joints[n].rest) for n in names]] * sweep.shape[0], dtype=np.float64)
+    q[:, names.index(joint)] = sweep
+    times = np.arange(sweep.shape[0], dtype=np.float64)
+    rotation = np.tile([0.0, 0.0, 0.0, 1.0], (sweep.shape[0], 1))
+    path = Trajectory(fps=1, times=times, joint_names=names, q=q, base_translation=np.zeros((sweep.shape[0], 3)), base_rotation_xyzw=rotation)
+    moving = set(asset.moving_links(joint))
+    owners = {}
+    for other in asset.movable_joints:
+        if other != joint and asset.joints[joint].child not in asset.moving_links(other):
+            for link in asset.moving_links(other):
+                if link not in moving:
+                    owners.setdefault(link, other)
+    blockers = []
+    for hit in find_collisions(asset, path, moving):
+        owner = owners.get(hit.other_link)
+        if owner is not None and owner not in blockers:
+            blockers.append(owner)
+    return blockers

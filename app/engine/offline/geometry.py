@@ -18,7 +18,7 @@ import numpy as np
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.offline.vocabulary import LABEL_CATEGORY
-from app.engine.offline.naming import link_category
+from app.engine.offline.naming import link_category, tokens
 from app.engine.types import FloatArray
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -218,10 +218,25 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
     return np.zeros(3)
 
 
+def _named_front(joints: dict[str, JointGeometry], asset: ArticulatedAsset) -> FloatArray:
+    """Front from part names: parts named front/rear (a car's wheels) point along the object's front."""
+    front, rear = [], []
+    for geometry in joints.values():
+        words = set(tokens(geometry.child)) | set(tokens(geometry.joint))
+        if "front" in words:
+            front.append(geometry.centroid)
+        elif words & {"rear", "back"}:
+            rear.append(geometry.centroid)
+    if front and rear:
+        return 3.0 * _horizontal(np.mean(front, axis=0) - np.mean(rear, axis=0))
+    return np.zeros(3)
+
+
 def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset) -> FloatArray:
-    """Horizontal unit vector the object faces: where doors, drawers and controls point."""
+    """Horizontal unit vector the object faces: where doors, drawers and controls point
+    (and where parts named "front" sit, e.g. a car's front wheels)."""
     points = _local_points(asset)
-    vote = np.zeros(3)
+    vote = _named_front(joints, asset)
     for geometry in joints.values():
         vote += _front_vote(geometry, center, asset, points)
     if np.linalg.norm(vote) < 1e-6:

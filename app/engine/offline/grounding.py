@@ -17,6 +17,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.offline.geometry import JointGeometry, ObjectGeometry
 from app.engine.offline.language import Mention
 from app.engine.offline.naming import describe_link, link_words
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES as CONTROLS
 from app.engine.offline.vocabulary import ORDINALS, SPATIAL, STOP_WORDS
 
 RELATED: dict[str, tuple[str, ...]] = {
@@ -28,8 +29,8 @@ RELATED: dict[str, tuple[str, ...]] = {
     "tray": ("drawer", "container", "turntable"),
     "container": ("drawer", "tray"),
     "turntable": ("tray",),
-    "knob": ("handle", "switch", "lever"),
-    "handle": ("knob", "lever", "latch"),
+    "knob": ("handle", "latch", "switch", "lever"),
+    "handle": ("knob", "lever", "latch", "switch"),
     "lever": ("handle", "switch", "knob"),
     "latch": ("handle", "knob", "lever"),
     "button": ("switch", "key"),
@@ -39,8 +40,9 @@ RELATED: dict[str, tuple[str, ...]] = {
 }
 OPENABLE = ("door", "lid", "screen", "window", "drawer", "tray", "container")
 NON_NAME_WORDS = frozenset(SPATIAL) | frozenset(ORDINALS) | STOP_WORDS
-QUALIFIER_TOLERANCE = 0.1
-"""Candidates within this fraction of the object size of the extreme value all qualify."""
+QUALIFIER_TOLERANCE = 0.25
+"""Candidates within this fraction of the candidates' spread of the extreme value all qualify."""
+MIN_QUALIFIER_TOLERANCE_M = 1e-3
 
 
 @dataclass(frozen=True)
@@ -70,7 +72,7 @@ def _position(part: Part, geometry: ObjectGeometry) -> np.ndarray:
 def _extreme(candidates: list[Part], geometry: ObjectGeometry, axis: int, largest: bool) -> list[Part]:
     values = np.array([_position(p, geometry)[axis] for p in candidates])
     best = values.max() if largest else values.min()
-    tolerance = QUALIFIER_TOLERANCE * max(float(geometry.extents.max()), 1e-6)
+    tolerance = max(QUALIFIER_TOLERANCE * float(np.ptp(values)), MIN_QUALIFIER_TOLERANCE_M)
     return [p for p, v in zip(candidates, values, strict=True) if abs(v - best) <= tolerance]
 
 
@@ -117,9 +119,10 @@ def _by_category(parts: list[Part], category: str) -> list[Part]:
 
 
 def openable_parts(parts: list[Part]) -> list[Part]:
-    """Parts that open and close (geometry decided which way), doors/lids before drawers."""
-    found = [p for p in parts if p.geometry.open_value is not None and (p.category in OPENABLE or p.category is None)]
-    return sorted(found, key=lambda p: (OPENABLE.index(p.category) if p.category in OPENABLE else len(OPENABLE), p.joint))
+    """Parts that open and close (geometry decided which way): doors/lids first, then drawers,
+    then any other part with an open side (a stapler's arm); controls never."""
+    found = [p for p in parts if p.geometry.open_value is not None and p.category not in CONTROLS]
+    return sorted(found, key=lambda p: (OPENABLE.index(p.category) if p.category in OPENABLE else len(OPENABLE), -p.geometry.size, p.joint))
 
 
 def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGeometry, parts: list[Part], words: set[str] | None = None) -> list[Part]:

@@ -81,6 +81,8 @@ def normalize(prompt: str) -> str:
     text = re.sub(r"(\d)([a-z%])", r"\1 \2", text)
     text = re.sub(r"([+-])\s+([xyz])\b", r"\1\2", text)
     text = re.sub(r"[\"()\[\]]", " ", text)
+    # "give the car a push" -> "push the car"
+    text = re.sub(r"\bgive\s+((?:it|them|the\s+[\w-]+(?:\s+[\w-]+)?|[\w-]+))\s+an?\s+(?:\w+\s+)?(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)\b", r"\2 \1", text)
     return re.sub(r"\s+", " ", text).strip()
 
 

@@ -27,6 +27,8 @@ def category_of_text(text: str) -> str | None:
     if label in LABEL_CATEGORY:
         return LABEL_CATEGORY[label]
     words = tokens(label)
+    if "latch" in words:  # a latch knob or latch handle behaves as a latch (springs back)
+        return "latch"
     joined = " ".join(words)
     for phrase in sorted(_WORD_CATEGORY, key=len, reverse=True):
         if " " in phrase and re.search(r"\b" + re.escape(phrase) + r"\b", joined):

@@ -34,6 +34,7 @@ BASE_KINDS = frozenset({"move", "press", "pull_out", "raise", "lower", "push_in"
 RELEASE_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock"})
 RELEASE_BUTTON_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice", "oven"})
 HINGED = ("door", "lid", "screen", "window")
+PRONOUNS = frozenset({"it", "them", "one"})
 
 
 class _Builder:
@@ -47,6 +48,9 @@ class _Builder:
         self.notes: list[str] = []
         self.mentioned: set[str] = set()
         self.sustained: dict[str, JointGoal] = {}
+        self.last_parts: list[Part] = []
+        self.last_controls: list[Part] = []
+        self.state: dict[str, float] = {}
 
     # --- grounding -----------------------------------------------------------------
     def refuse(self, why: str) -> GroundingError:
@@ -55,6 +59,10 @@ class _Builder:
         return GroundingError(f"{why}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable)
 
     def ground(self, mention: Mention, kind: str | None) -> list[Part]:
+        if mention.category == "object" and mention.head in PRONOUNS and self.last_parts:
+            if kind == "release" and self.last_controls:
+                return list(self.last_controls)
+            return list(self.last_parts)
         if mention.category == "object":
             openable = openable_parts(self.parts)
             if kind in ("open", "close") and openable:
@@ -91,6 +99,8 @@ class _Builder:
         return out
 
     def is_base(self, clause: Clause) -> bool:
+        if any(m.head in PRONOUNS for m in clause.mentions) and self.last_parts:
+            return False
         objects = [m for m in clause.mentions if m.category == "object"]
         if not objects or len(objects) != len(clause.mentions):
             return False
@@ -137,9 +147,10 @@ class _Builder:
                 self.mentioned.add(targets[0].joint)
         return effects
 
-    def unlatch_step(self, effects: list[JointGoal], kind: str | None) -> Step | None:
+    def unlatch_controls(self, effects: list[JointGoal], kind: str | None) -> list[JointGoal]:
+        """Handles, latches and knobs on a door or lid that must be operated before it opens."""
         if kind != "open":
-            return None
+            return []
         controls = []
         for goal in effects:
             if goal.category not in HINGED:
@@ -150,9 +161,7 @@ class _Builder:
                     turn = Clause(text="unlatch", verb="unlatch", kind="unlatch", particle=None, mentions=(), quantity=Quantity())
                     controls.append(self.goal(part, turn, "control", Quantity()))
                     self.mentioned.add(part.joint)
-        if not controls:
-            return None
-        return Step(primitive="unlatch", controls=tuple(controls), coupling=tuple(f"{c.joint} unlatches before the door opens" for c in controls))
+        return controls
 
     # --- steps ---------------------------------------------------------------------
     def add(self, action: Action) -> None:
@@ -181,16 +190,44 @@ class _Builder:
                 effects = self.implicit_effects(direct_controls)
         if not controls and not effects:
             raise self.refuse(f"nothing in '{clause.text}' names a part to move")
-        unlatch = self.unlatch_step(effects, clause.kind) if controls == [] or all(c.category == "pedal" for c in controls) else None
-        if unlatch is not None:
-            self.steps.append(replace(unlatch, parallel=action.parallel))
+        for prerequisite in self.prerequisites(effects):
+            self.steps.append(prerequisite)
+        if not controls:
+            controls = self.unlatch_controls(effects, clause.kind)
+            effects = [replace(g, role="effect") for g in effects] if controls else effects
         controls = self.sustain(controls, effects)
         coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
         primitive = (action.means.verb if action.means else clause.verb) or clause.kind or "move"
+        moved = effects or controls
+        self.last_parts = [p for p in self.parts if any(g.joint == p.joint for g in moved)]
+        self.last_controls = [p for p in self.parts if any(g.joint == p.joint for g in controls)]
+        self.state.update({g.joint: g.value for g in moved if g.value is not None})
         self.steps.append(
-            Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel and unlatch is None,
+            Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def prerequisites(self, effects: list[JointGoal]) -> list[Step]:
+        """State-dependent motion: open what stands in the way first (the door before the tray)."""
+        from app.engine.offline.collisions import blocking_joints
+
+        steps = []
+        for goal in effects:
+            if goal.value is None or goal.joint in self.state:
+                continue
+            for blocker in blocking_joints(self.asset, goal.joint, goal.value, self.state):
+                part = next((p for p in self.parts if p.joint == blocker), None)
+                if part is None or part.geometry.open_value is None or blocker in self.mentioned:
+                    continue
+                opening = Clause(text="open", verb="open", kind="open", particle=None, mentions=(), quantity=Quantity())
+                first = self.goal(part, opening, "direct", Quantity())
+                self.mentioned.add(blocker)
+                self.state[blocker] = part.geometry.open_value
+                latches = self.unlatch_controls([first], "open")
+                effect = replace(first, role="effect") if latches else first
+                steps.append(Step(primitive="open", controls=tuple(latches), effects=(effect,), coupling=(f"{blocker} must be open before {goal.joint} can move",)))
+                self.notes.append(f"opened {part.link} first: it blocks {goal.link}")
+        return steps
 
     def sustain(self, controls: list[JointGoal], effects: list[JointGoal]) -> list[JointGoal]:
         out = []
@@ -215,6 +252,24 @@ class _Builder:
         return [replace(g, role="control") for g in goals] + extra
 
 
+def _merge_unlatch(steps: list[Step], asset: ArticulatedAsset) -> list[Step]:
+    """"Turn the latch, then open the door": one causal step, so the latch returns while the door opens."""
+    merged: list[Step] = []
+    for step in steps:
+        previous = merged[-1] if merged else None
+        if (
+            previous is not None and previous.controls and not previous.effects and previous.base is None
+            and not step.controls and step.effects and step.base is None
+            and all(c.category in UNLATCH_CATEGORIES for c in previous.controls)
+            and all(any(c.link in asset.descendants(e.link) for e in step.effects) for c in previous.controls)
+        ):
+            effects = tuple(replace(e, role="effect") for e in step.effects)
+            merged[-1] = replace(previous, effects=effects, coupling=previous.coupling + step.coupling, primitive=step.primitive)
+            continue
+        merged.append(step)
+    return merged
+
+
 def read_intent(prompt: str, asset: ArticulatedAsset) -> Intent:
     """Deterministic reading of ``prompt`` on ``asset``.
 
@@ -231,4 +286,4 @@ def read_intent(prompt: str, asset: ArticulatedAsset) -> Intent:
         builder.add(action)
     if not builder.steps:
         raise builder.refuse(f"could not find an action in '{prompt}'")
-    return Intent(prompt=prompt, steps=tuple(builder.steps), notes=tuple(builder.notes))
+    return Intent(prompt=prompt, steps=tuple(_merge_unlatch(builder.steps, asset)), notes=tuple(builder.notes))

@@ -26,6 +26,8 @@ CONTROL_DURATION_S: dict[str, float] = {"button": 0.3, "switch": 0.3, "pedal": 0
 QUARTER = math.pi / 2
 MAX_PLAN_S = MAX_DURATION_S - FINAL_HOLD_S
 SPRING_EFFECTS = ("lid", "door", "screen", "window")
+MAX_WHEEL_OMEGA = 19.5
+"""Wheel speed cap (rad/s), just under the contract's 20."""
 DIGITS = 4
 TARGET_DIGITS = 9
 
@@ -108,7 +110,7 @@ def _joint_step(timeline: _Timeline, step: Step, start: float) -> float:
         t += duration
         held = [g.joint for g in step.controls if g.value is not None]
     if not step.effects:
-        return t
+        return t + _release(timeline, step, t, 0.0) if step.controls else t
     if step.controls:
         delay = LATENCY_SPRING_S if any(e.category in SPRING_EFFECTS for e in step.effects) else LATENCY_CONTROL_S
         timeline.add("causal_latency", "causal_latency", t, t + delay, [_hold(j) for j in held])
@@ -120,12 +122,20 @@ def _joint_step(timeline: _Timeline, step: Step, start: float) -> float:
     controls += [_hold(j) for j in sustained if j in held]
     timeline.add("move_" + "_".join(_label(g) for g in step.effects), "effect_motion", t, t + duration, controls)
     timeline.effect_start = t if timeline.effect_start is None else timeline.effect_start
-    releasing = [g for g in step.controls if not g.sustains and g.returns == "self_return" and g.value is not None]
-    if releasing:
-        back = min(max(motion_duration(g, asset) for g in releasing) * factor, duration)
-        timeline.add("release_" + "_".join(_label(g) for g in releasing), "control_release", t, t + back,
-                     [_position(g, target=timeline.rest(g.joint), expr="rest") for g in releasing])
+    _release(timeline, step, t, duration)
     return t + duration
+
+
+def _release(timeline: _Timeline, step: Step, start: float, limit: float) -> float:
+    """Return self-returning controls to rest from ``start`` (within ``limit`` s when > 0); returns the time used."""
+    releasing = [g for g in step.controls if not g.sustains and g.returns == "self_return" and g.value is not None]
+    if not releasing:
+        return 0.0
+    back = max(motion_duration(g, timeline.asset) for g in releasing) * step.speed_factor
+    back = min(back, limit) if limit > 0 else back
+    timeline.add("release_" + "_".join(_label(g) for g in releasing), "control_release", start, start + back,
+                 [_position(g, target=timeline.rest(g.joint), expr="rest") for g in releasing])
+    return back
 
 
 def _velocities(goals: tuple[JointGoal, ...]) -> list[dict[str, Any]]:
@@ -139,6 +149,10 @@ def _base_step(timeline: _Timeline, step: Step, base: BaseGoal, start: float) ->
         duration = base.distance_m / base.speed_mps
     else:
         duration = min(max(base.distance_m / BASE_SPEED_MPS, 1.0), 4.0) * step.speed_factor
+    fastest = max((abs(rate) for _, rate in base.wheels), default=0.0)
+    if fastest > 0:  # keep every wheel within the contract's |omega| <= 20 rad/s
+        peak_factor = 3.0 / (1.0 - math.exp(-3.0)) if base.coast else 1.0
+        duration = max(duration, peak_factor * base.distance_m * fastest / MAX_WHEEL_OMEGA)
     axis = list(base.axis_tuple())
     if base.coast:
         tau = duration / 3.0

@@ -91,12 +91,12 @@ def _amount(text: str) -> float | None:
 
 
 def _turn_angle(text: str) -> float | None:
-    for phrase, turns in _SPECIAL:
-        if phrase in text:
-            return 2 * math.pi * turns
     match = _TURNS.search(text)
     if match:
         return 2 * math.pi * float(match.group(1))
+    for phrase, turns in _SPECIAL:
+        if phrase in text:
+            return 2 * math.pi * turns
     return None
 
 

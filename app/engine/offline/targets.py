@@ -17,6 +17,8 @@ DEFAULT_SPIN_S = 2.0
 PUSH_CATEGORIES = ("button", "switch", "key")
 DOWN_CATEGORIES = ("pedal", "lever", "handle")
 LIMIT_EPS = 1e-9
+VERTICAL_AXIS = 0.7
+"""|axis . up| above this: the part turns about a vertical axis and is seen from above."""
 
 
 def _clamp(geometry: JointGeometry, value: float) -> float:
@@ -59,7 +61,12 @@ def _pressed(geometry: JointGeometry, category: str | None, particle: str | None
 def rotation_sign(geometry: JointGeometry, sense: str | None, obj: ObjectGeometry) -> float:
     """+1 or -1: the joint direction that turns the part clockwise (default) or counter-clockwise
     as seen by a viewer facing the face the part sits on."""
-    facing = geometry.face_normal if np.linalg.norm(geometry.face_normal) > 0 else obj.front
+    if abs(float(geometry.axis_world @ obj.up)) > VERTICAL_AXIS:
+        facing = obj.up  # turntables, caps, faucet handles: seen from above
+    elif np.linalg.norm(geometry.face_normal) > 0 and abs(float(geometry.face_normal @ obj.up)) < VERTICAL_AXIS:
+        facing = geometry.face_normal
+    else:
+        facing = obj.front
     toward_viewer = float(geometry.axis_world @ facing)
     if abs(toward_viewer) < 1e-6:
         toward_viewer = float(geometry.axis_world @ obj.front) or 1.0

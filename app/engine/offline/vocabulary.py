@@ -22,7 +22,7 @@ CATEGORY_WORDS: dict[str, tuple[str, ...]] = {
     "knob": ("knob", "knobs", "dial", "dials", "rotary knob", "control knob"),
     "handle": ("handle", "handles", "grip", "rotation handle", "door handle", "bail"),
     "lever": ("lever", "levers", "slider", "sliders", "carriage"),
-    "latch": ("latch", "latches", "catch", "bolt", "lock"),
+    "latch": ("latch", "latches", "latch knob", "latch handle", "catch", "bolt", "lock"),
     "button": ("button", "buttons", "key", "keys", "push button", "pushbutton", "release button"),
     "pedal": ("pedal", "pedals", "foot pad", "footpad", "foot pedal", "foot_pad", "foot lever", "step"),
     "screen": ("screen", "display", "monitor", "panel"),

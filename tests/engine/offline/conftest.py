@@ -1,0 +1,50 @@
+"""Run the offline agent in memory (perceive -> plan -> critic loop) with cached assets."""
+
+from __future__ import annotations
+
+import asyncio
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+from app.engine.agents.loop import refine
+from app.engine.agents.roles import Context
+from app.engine.asset.loader import load_asset
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.asset.summary import joint_summary, scale_context
+from app.engine.config import EngineConfig
+from app.engine.execute.trajectory import Trajectory
+from app.engine.offline.roles import offline_roles
+from app.engine.plan.causal import CausalDocument
+from app.engine.plan.schema import Plan
+from tests.conftest import EXAMPLES, partnet_root
+
+
+@cache
+def asset(name: str) -> ArticulatedAsset:
+    """``examples/<x>`` from the repo, anything else from the PartNet folder."""
+    path = EXAMPLES / name.split("/", 1)[1] if name.startswith("examples/") else partnet_root() / name
+    return load_asset(Path(path))
+
+
+@dataclass
+class Outcome:
+    causal: CausalDocument
+    plan: Plan
+    trajectory: Trajectory
+    state: str
+
+
+def animate(name: str, prompt: str, *, collisions: bool = True) -> Outcome:
+    model = asset(name)
+    roles = offline_roles()
+    config = EngineConfig(check_collisions=collisions)
+    context = Context(asset=model, prompt=prompt, joint_summary=joint_summary(model), scale=scale_context(model), config=config)
+
+    async def run() -> Outcome:
+        perception = await roles.perceiver.perceive(context)
+        planned = await roles.planner.plan(context, perception)
+        refined = await refine(context, perception, planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
+        return Outcome(perception.causal, refined.plan, refined.trajectory, refined.state)
+
+    return asyncio.run(run())

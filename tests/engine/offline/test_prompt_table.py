@@ -1,0 +1,237 @@
+"""Table-driven behaviour of the offline agent: prompt -> which joints move, which way, how far.
+
+Expectations are written from each asset's geometry (which limit is open, pressed, up)
+and the prompt's meaning. ``upper``/``lower`` name the joint's limits; numbers are joint
+values (radians or metres). Refusals must raise a GroundingError listing the movable parts.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pytest
+
+from app.engine.errors import GroundingError
+from tests.engine.offline.conftest import animate, asset
+
+PI = math.pi
+TOLERANCE = 0.02
+
+
+@dataclass(frozen=True)
+class E:
+    """Expectation on one joint: final value, peak then return, unchanged, or any motion."""
+
+    end: float | str | None = None
+    peak: float | str | None = None
+    still: bool = False
+    moves: bool = False
+    abs_end: float | None = None
+    sign: int | None = None
+
+
+@dataclass(frozen=True)
+class Row:
+    asset: str
+    prompt: str
+    joints: dict[str, E] = field(default_factory=dict)
+    base: tuple[float, float, float] | None = None
+    order: tuple[tuple[str, str], ...] = ()
+    refuse: bool = False
+
+    @property
+    def id(self) -> str:
+        return f"{self.asset}: {self.prompt}"
+
+
+def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
+    return Row(asset_name, prompt, **kwargs)  # type: ignore[arg-type]
+
+
+ROWS: list[Row] = [
+    # --- pedal bin (PartNet): pedal -> lid, the pedal holds the lid open ---
+    R("trash_can_102181", "press the pedal to open the lid", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("trash_can_102181", "Step on the foot pedal", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("trash_can_102181", "open the bin", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("trash_can_102181", "open the lid by pressing the pedal", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("trash_can_102181", "press the pedal, then release it", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),
+    R("trash_can_102181", "use the pedal to open the lid halfway", joints={"joint_0": E(end="upper"), "joint_1": E(end=3.15416 / 2)}),
+    # --- wheeled bin: lid, rolling ---
+    R("trash_can_102155", "open the lid", joints={"joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
+    R("trash_can_102155", "push the trash can 1 m along -X", base=(-1.0, 0.0, 0.0), joints={"joint_0": E(sign=1), "joint_1": E(sign=1), "joint_2": E(still=True)}),
+    R("trash_can_102155", "roll the bin 0.5 m in the +x direction", base=(0.5, 0.0, 0.0), joints={"joint_0": E(sign=-1), "joint_1": E(sign=-1)}),
+    R("trash_can_102155", "lift the bin 20 cm", base=(0.0, 0.0, 0.2), joints={"joint_0": E(still=True), "joint_2": E(still=True)}),
+    R("trash_can_102155", "push the bin forward 1 m and let it roll", base=(-1.0, 0.0, 0.0), joints={"joint_0": E(sign=1)}),
+    R("trash_can_102155", "drag the trash can 30 cm to the left", base=(0.0, 0.3, 0.0)),
+    # --- safes: door, knobs ---
+    R("safe_101593", "open the safe door", joints={"joint_0": E(end="upper")}),
+    R("safe_101593", "open the safe", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
+    R("safe_101593", "rotate the left knob 90 degrees clockwise", joints={"joint_1": E(end=-PI / 2), "joint_2": E(still=True), "joint_0": E(still=True)}),
+    R("safe_101593", "turn the right dial a quarter turn counterclockwise", joints={"joint_2": E(end=PI / 2), "joint_1": E(still=True)}),
+    R("safe_101593", "spin the right knob two full turns", joints={"joint_2": E(abs_end=4 * PI), "joint_1": E(still=True)}),
+    R("safe_101593", "swing the door open halfway", joints={"joint_0": E(end=2.96706 / 2)}),
+    R("safe_101593", "close the safe door", joints={"joint_0": E(still=True)}),
+    R("safe_102387", "close the safe", joints={"joint_0": E(end="lower")}),
+    R("safe_102387", "open the safe door fully", joints={"joint_0": E(end="upper")}),
+    R("safe_101564", "press the top left button", joints={"joint_0": E(peak="upper"), "joint_1": E(still=True), "joint_13": E(still=True)}),
+    R("safe_101564", "open the safe", joints={"joint_13": E(end="upper"), "joint_0": E(still=True)}),
+    # --- storage: drawers, door ---
+    R("storage_19179", "pull out the top drawer", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("storage_19179", "open the bottom drawer halfway", joints={"joint_0": E(end=0.5), "joint_1": E(still=True)}),
+    R("storage_19179", "open both drawers", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("storage_19179", "slide the upper drawer out by 30 cm", joints={"joint_1": E(end=0.3), "joint_0": E(still=True)}),
+    R("storage_19179", "open the second drawer", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("storage_19179", "open the top drawer, then open the bottom drawer", joints={"joint_1": E(end="upper"), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("storage_19179", "pull the top drawer out, then push it back in", joints={"joint_1": E(peak="upper"), "joint_0": E(still=True)}),
+    R("storage_27044", "open the drawer slightly", joints={"joint_0": E(end=0.2 * 0.684)}),
+    R("storage_20453", "pull the drawer all the way out", joints={"joint_0": E(end="upper")}),
+    R("storage_23472", "open the cabinet door", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("storage_23472", "pull the drawer all the way out", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("storage_23472", "close the drawer", joints={"joint_1": E(end="lower")}),
+    R("storage_23472", "open the door and pull out the drawer", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("storage_23472", "after opening the door, slide the drawer out", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("storage_23472", "pull out the drawer before opening the door", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    # --- microwaves ---
+    R("microwave_7119", "open the microwave", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("microwave_7119", "open the microwave door halfway", joints={"joint_0": E(end=PI / 4)}),
+    R("microwave_7119", "open the door 45 degrees", joints={"joint_0": E(end=PI / 4)}),
+    R("microwave_7119", "spin the turntable", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
+    R("microwave_7119", "rotate the glass plate one full turn", joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(still=True)}),
+    R("microwave_7119", "open the door, then spin the turntable at 2 rad/s for 3 seconds", joints={"joint_0": E(end="upper"), "joint_1": E(abs_end=6.0)}, order=(("joint_0", "joint_1"),)),
+    R("microwave_7236", "swing open the microwave door", joints={"joint_0": E(end="upper")}),
+    R("microwave_7304", "open the microwave door slowly", joints={"joint_1": E(end="upper")}),
+    # --- ovens, dishwashers, fridge ---
+    R("oven_7138", "open the oven", joints={"joint_0": E(end="upper")}),
+    R("oven_7138", "open the oven door, then close it", joints={"joint_0": E(peak="upper")}),
+    R("oven_7221", "open the oven door slightly", joints={"joint_0": E(end=0.2 * PI / 2)}),
+    R("dishwasher_11700", "open the dishwasher", joints={"joint_0": E(end="upper")}),
+    R("dishwasher_12553", "press the button", joints={"joint_1": E(peak="upper"), "joint_0": E(still=True)}),
+    R("dishwasher_12553", "pull the dishwasher door open", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "open the left door of the fridge", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "open the right door", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("refrigerator_11178", "open both doors", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("refrigerator_11178", "open the left door, then the right door", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    # --- laptops, lids, boxes ---
+    R("laptop_10101", "close the laptop", joints={"joint_1": E(end="lower")}),
+    R("laptop_10101", "open the laptop all the way", joints={"joint_1": E(end="upper")}),
+    R("laptop_10248", "shut the laptop lid", joints={"joint_1": E(end="lower")}),
+    R("laptop_10697", "fold the screen down", joints={"joint_1": E(end="lower")}),
+    R("box_102456", "close the box", joints={"joint_0": E(end="lower")}),
+    R("box_100671", "open the box lid", joints={"joint_0": E(end="upper")}),
+    R("kitchen_pot_100038", "lift the lid off the pot", joints={"joint_0": E(end="upper")}),
+    R("kitchen_pot_100038", "raise the pot lid by 10 cm", joints={"joint_0": E(end=0.1)}),
+    R("coffee_machine_103030", "lift the coffee machine lid", joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
+    R("coffee_machine_103030", "turn the knob", joints={"joint_0": E(abs_end=PI / 2), "joint_2": E(still=True)}),
+    R("toilet_102622", "lift the toilet lid", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("toilet_102622", "press the flush button", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
+    R("window_103135", "open the window", joints={"joint_0": E(end="upper")}),
+    R("window_103135", "close the window", joints={"joint_0": E(end="lower")}),
+    R("stapler_103099", "open the stapler", joints={"joint_0": E(end="upper")}),
+    R("suitcase_103762", "open the suitcase", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("washing_machine_103508", "open the washing machine door", joints={"joint_0": E(end="upper")}),
+    R("washing_machine_103508", "turn the middle knob 90 degrees", joints={"joint_2": E(abs_end=PI / 2), "joint_1": E(still=True), "joint_3": E(still=True)}),
+    # --- controls: toaster, switch, faucet, cap ---
+    R("toaster_103477", "push the toaster lever down", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("toaster_103477", "turn the toaster knob a quarter turn", joints={"joint_0": E(abs_end=PI / 2), "joint_1": E(still=True)}),
+    R("toaster_103483", "press down the lever", joints={"joint_0": E(end="upper")}),
+    R("switch_100952", "flip the switch", joints={"joint_0": E(end="upper")}),
+    R("faucet_148", "rotate the faucet handle 45 degrees", joints={"joint_0": E(abs_end=PI / 4)}),
+    R("bottle_cap_3558", "twist the bottle cap", joints={"joint_0": E(moves=True)}),
+    # --- the project's examples (signs vary on purpose: see examples/README.md) ---
+    R("examples/pedal_bin", "press the pedal to open the bin", joints={"pedal_pivot": E(end="upper"), "lid_hinge": E(end="lower")}, order=(("pedal_pivot", "lid_hinge"),)),
+    R("examples/pedal_bin", "open the lid", joints={"pedal_pivot": E(end="upper"), "lid_hinge": E(end="lower")}, order=(("pedal_pivot", "lid_hinge"),)),
+    R("examples/pedal_bin", "open the lid halfway", joints={"lid_hinge": E(end=-0.7)}),
+    R("examples/pedal_bin", "step on the pedal, then let go of it", joints={"pedal_pivot": E(peak="upper"), "lid_hinge": E(peak="lower")}),
+    R("examples/microwave", "press the door release button", joints={"release_button_slide": E(peak="upper"), "door_hinge": E(end="upper")}, order=(("release_button_slide", "door_hinge"),)),
+    R("examples/microwave", "open the microwave", joints={"door_hinge": E(end="upper"), "release_button_slide": E(peak="upper"), "turntable_spin": E(still=True)}),
+    R("examples/microwave", "spin the turntable counterclockwise", joints={"turntable_spin": E(sign=1), "door_hinge": E(still=True)}),
+    R("examples/microwave", "rotate the turntable a half turn clockwise", joints={"turntable_spin": E(end=-PI)}),
+    R("examples/cabinet", "pull out the top drawer", joints={"drawer_top_slide": E(end="upper"), "drawer_bottom_slide": E(still=True), "door_hinge": E(still=True)}),
+    R("examples/cabinet", "open the bottom drawer halfway", joints={"drawer_bottom_slide": E(end=-0.175), "drawer_top_slide": E(still=True)}),
+    R("examples/cabinet", "open the door", joints={"latch_knob_turn": E(peak="lower"), "door_hinge": E(end="lower")}, order=(("latch_knob_turn", "door_hinge"),)),
+    R("examples/cabinet", "turn the latch knob, then open the door", joints={"latch_knob_turn": E(peak="lower"), "door_hinge": E(end="lower")}, order=(("latch_knob_turn", "door_hinge"),)),
+    R("examples/cabinet", "open both drawers", joints={"drawer_top_slide": E(end="upper"), "drawer_bottom_slide": E(end="lower")}),
+    R("examples/oven", "open the oven door, then slide the tray out", joints={"door_hinge": E(end="upper"), "tray_slide": E(end="lower")}, order=(("door_hinge", "tray_slide"),)),
+    R("examples/oven", "pull out the tray", joints={"door_hinge": E(end="upper"), "tray_slide": E(end="lower")}, order=(("door_hinge", "tray_slide"),)),
+    R("examples/oven", "drop the oven door open", joints={"door_hinge": E(end="upper"), "tray_slide": E(still=True)}),
+    R("examples/toy_car", "push the car 0.5 m along +X", base=(0.5, 0.0, 0.0),
+      joints={"wheel_front_left_axle": E(end=0.5 / 0.03), "wheel_front_right_axle": E(end=-0.5 / 0.03), "wheel_rear_left_axle": E(end=0.5 / 0.03)}),
+    R("examples/toy_car", "push the toy car forward 40 cm", base=(0.4, 0.0, 0.0), joints={"wheel_rear_right_axle": E(end=-0.4 / 0.03)}),
+    R("examples/toy_car", "roll the car backwards 20 cm", base=(-0.2, 0.0, 0.0), joints={"wheel_front_left_axle": E(end=-0.2 / 0.03)}),
+    R("examples/toy_car", "give the car a push along +x and let it roll 0.3 m to a stop", base=(0.3, 0.0, 0.0), joints={"wheel_front_left_axle": E(end=0.3 / 0.03)}),
+    R("examples/toy_car", "lift the car 10 cm", base=(0.0, 0.0, 0.1), joints={"wheel_front_left_axle": E(still=True)}),
+    R("examples/toy_car", "open the trunk", refuse=True),
+    # --- refusals ---
+    R("microwave_7119", "open the flux capacitor", refuse=True),
+    R("storage_19179", "open the door", refuse=True),
+    R("laptop_10101", "press the power button", refuse=True),
+    R("toaster_103498", "push the lever down", refuse=True),
+    R("safe_101593", "spin the wheels", refuse=True),
+    R("oven_7138", "pull out the tray", refuse=True),
+    R("refrigerator_11178", "open the drawer", refuse=True),
+    R("bucket_100454", "xyzzy plugh", refuse=True),
+]
+
+
+def _value(row_asset: str, joint: str, value: float | str) -> float:
+    spec = asset(row_asset).joints[joint]
+    if value == "upper":
+        assert spec.upper is not None
+        return spec.upper
+    if value == "lower":
+        assert spec.lower is not None
+        return spec.lower
+    return float(value)
+
+
+def _first_motion(track: np.ndarray) -> int:
+    moved = np.flatnonzero(np.abs(track - track[0]) > 1e-4)
+    return int(moved[0]) if moved.size else len(track)
+
+
+def _check_joint(row: Row, joint: str, expect: E, track: np.ndarray) -> None:
+    rest = asset(row.asset).joints[joint].rest
+    label = f"{row.id} / {joint}"
+    if expect.still:
+        assert float(np.ptp(track)) < 1e-6, f"{label}: should not move, moves over {np.ptp(track):.4g}"
+    if expect.moves:
+        assert float(np.ptp(track)) > 1e-3, f"{label}: should move"
+    if expect.end is not None:
+        wanted = _value(row.asset, joint, expect.end)
+        assert track[-1] == pytest.approx(wanted, abs=TOLERANCE), f"{label}: ends at {track[-1]:.4g}, expected {wanted:.4g}"
+    if expect.abs_end is not None:
+        assert abs(track[-1] - rest) == pytest.approx(expect.abs_end, abs=TOLERANCE), f"{label}: ends {track[-1]:.4g} from rest {rest}"
+    if expect.peak is not None:
+        wanted = _value(row.asset, joint, expect.peak)
+        assert float(np.min(np.abs(track - wanted))) < TOLERANCE, f"{label}: never reaches {wanted:.4g} (range {track.min():.4g}..{track.max():.4g})"
+        assert track[-1] == pytest.approx(rest, abs=TOLERANCE), f"{label}: should return to {rest}, ends at {track[-1]:.4g}"
+    if expect.sign is not None:
+        assert np.sign(track[-1] - rest) == expect.sign, f"{label}: turned {track[-1] - rest:+.4g}, expected sign {expect.sign:+d}"
+
+
+@pytest.mark.parametrize("row", ROWS, ids=[r.id for r in ROWS])
+def test_prompt(row: Row) -> None:
+    if row.refuse:
+        with pytest.raises(GroundingError) as info:
+            animate(row.asset, row.prompt)
+        assert "Movable parts" in str(info.value) or "no movable parts" in str(info.value)
+        return
+    outcome = animate(row.asset, row.prompt)
+    trajectory = outcome.trajectory
+    for joint, expect in row.joints.items():
+        _check_joint(row, joint, expect, trajectory.joint(joint))
+    if row.base is not None:
+        assert trajectory.base_translation[-1] == pytest.approx(np.array(row.base), abs=0.01), f"{row.id}: base ends at {trajectory.base_translation[-1]}"
+    else:
+        assert not trajectory.has_base_motion(), f"{row.id}: the object should not move as a whole"
+    for first, second in row.order:
+        a, b = _first_motion(trajectory.joint(first)), _first_motion(trajectory.joint(second))
+        assert a < b, f"{row.id}: {first} should start (frame {a}) before {second} (frame {b})"
+
+
+def test_table_is_large_and_varied() -> None:
+    assert len(ROWS) >= 80
+    assert sum(r.refuse for r in ROWS) >= 6
+    assert len({r.asset for r in ROWS}) >= 25
