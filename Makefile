@@ -42,7 +42,7 @@ services:
 	@.ci/services.sh
 
 demo: setup
-	$(VENV)/bin/artimo run-plan examples/pedal_bin --plan examples/pedal_bin/plan.json --out $(DEMO_OUT)
+	$(VENV)/bin/artimo animate examples/pedal_bin --prompt "press the pedal to open the bin" --out $(DEMO_OUT)
 	$(PY) -m tests.support.gltf_validator $(DEMO_OUT)/animation.glb
 
 test: setup services

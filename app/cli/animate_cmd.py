@@ -6,7 +6,7 @@ import argparse
 import time
 from pathlib import Path
 
-from app.cli.output import err, out
+from app.cli.output import cache_dir, err, out
 
 
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -35,7 +35,7 @@ def _animate(args: argparse.Namespace) -> int:
     from app.engine.providers.registry import make_roles
 
     began = time.perf_counter()
-    config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions)
+    config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions, asset_cache_dir=cache_dir(args))
     roles = make_roles(args.provider)
     result = run_pipeline(
         PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds),

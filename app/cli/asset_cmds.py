@@ -7,8 +7,8 @@ import time
 from pathlib import Path
 from typing import Any
 
-from app.cli.output import out, out_json
-from app.engine.asset.loader import load_asset
+from app.cli.output import cache_dir, out, out_json
+from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.errors import PlanValidationError
@@ -38,7 +38,7 @@ def _fmt(value: float | None) -> str:
 
 
 def _inspect(args: argparse.Namespace) -> int:
-    asset = load_asset(args.asset)
+    asset = load_asset_cached(args.asset, cache_dir(args))
     scale = scale_context(asset)
     if args.json:
         out_json({"joints": [j.model_dump() for j in joint_summary(asset)], "scale": scale.model_dump()})
@@ -74,7 +74,7 @@ def _read_plan(path: Path) -> dict[str, Any]:
 
 
 def _load(args: argparse.Namespace) -> tuple[ArticulatedAsset, dict[str, Any]]:
-    return load_asset(args.asset), _read_plan(args.plan)
+    return load_asset_cached(args.asset, cache_dir(args)), _read_plan(args.plan)
 
 
 def _validate(args: argparse.Namespace) -> int:

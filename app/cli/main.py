@@ -17,6 +17,7 @@ COMMAND_MODULES = (asset_cmds, animate_cmd)
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="artimo", description="Text-driven articulated mesh animation.")
     parser.add_argument("-v", "--verbose", action="count", default=0, help="more logging (-vv for debug)")
+    parser.add_argument("--no-cache", action="store_true", help="do not use the asset cache ($ARTIMO_CACHE_DIR, default ~/.cache/artimo)")
     commands = parser.add_subparsers(dest="command", required=True, metavar="COMMAND")
     for module in COMMAND_MODULES:
         module.register(commands)

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 import json
+import os
 import sys
+from pathlib import Path
 from typing import Any
 
 
@@ -17,3 +19,11 @@ def err(text: str) -> None:
 
 def out_json(value: Any) -> None:
     out(json.dumps(value, indent=2, sort_keys=False))
+
+
+def cache_dir(args: object) -> Path | None:
+    """The asset cache folder for this invocation (None with --no-cache)."""
+    if getattr(args, "no_cache", False):
+        return None
+    root = os.environ.get("ARTIMO_CACHE_DIR") or str(Path.home() / ".cache" / "artimo")
+    return Path(root) / "assets"

@@ -25,3 +25,5 @@ class EngineConfig(BaseModel):
     prompts_dir: Path = PROMPTS_DIR
     request_timeout_s: float = Field(default=120.0, gt=0)
     max_concurrent_calls: int = Field(default=4, ge=1, le=32)
+    asset_cache_dir: Path | None = None
+    """Disk cache of loaded assets (see ``app.engine.asset.cache``); ``None`` disables it."""

@@ -18,7 +18,7 @@ from typing import Protocol
 
 from app.engine.agents.loop import refine
 from app.engine.agents.roles import Context, Roles
-from app.engine.asset.loader import load_asset
+from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.bundle import REPORT_FILE, write_animation, write_report
@@ -90,7 +90,7 @@ def _images(asset: ArticulatedAsset, config: EngineConfig, out_dir: Path) -> dic
 
 async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run) -> PipelineResult:
     with run.stage("load_asset"):
-        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_asset(request.asset)
+        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_asset_cached(request.asset, config.asset_cache_dir)
     report = RunReport(asset=AssetSummary.of(asset), prompt=request.prompt, provider=roles.provider)
     report.models = {"perceiver": roles.perceiver.model, "planner": roles.planner.model, "critic": roles.critic.model}
     try:

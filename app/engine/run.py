@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
-from app.engine.asset.loader import load_asset
+from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.bundle import REPORT_FILE, write_animation, write_report
 from app.engine.execute.executor import execute
@@ -16,7 +16,9 @@ from app.engine.report import AssetSummary, RunReport, StageClock
 logger = logging.getLogger(__name__)
 
 
-def run_plan(asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path) -> RunReport:
+def run_plan(
+    asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path, *, cache_dir: Path | None = None
+) -> RunReport:
     """Validate and execute ``plan`` on ``asset`` and write plan.json, trajectory.jsonl,
     animation.glb and report.json into ``out_dir``.
 
@@ -27,7 +29,7 @@ def run_plan(asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | di
     clock = StageClock()
     target = Path(out_dir)
     with clock.stage("load_asset"):
-        model = asset if isinstance(asset, ArticulatedAsset) else load_asset(asset)
+        model = asset if isinstance(asset, ArticulatedAsset) else load_asset_cached(asset, cache_dir)
     with clock.stage("validate_plan"):
         checked = validate_plan(plan if isinstance(plan, Plan | dict | str | bytes) else str(plan), model)
     with clock.stage("execute"):

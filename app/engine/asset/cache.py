@@ -1,0 +1,150 @@
+"""A disk cache of loaded assets, so a repeated run skips URDF parsing and mesh decoding.
+
+Entries are keyed by the asset's files (name, size, modification time of every file in a
+folder; the bytes of a zip) and stored as one ``.npz`` (arrays plus a JSON header, read with
+``allow_pickle=False``). Reading an entry imports neither yourdfpy nor trimesh, which is
+most of a cold process's time.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import io
+import json
+import logging
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from app.engine.asset.model import ArticulatedAsset, JointSpec, LinkSemantics, LinkSpec, Material, MeshPart, Mimic
+from app.engine.asset.safety import AssetLimits
+from app.engine.files import atomic_write_bytes
+
+logger = logging.getLogger(__name__)
+
+CACHE_VERSION = 1
+HEADER = "header"
+
+
+def cache_key(path: Path, name: str | None = None) -> str:
+    """Fingerprint of an asset folder (file names, sizes, mtimes) or zip (its bytes)."""
+    digest = hashlib.sha256(f"artimo-asset-cache:{CACHE_VERSION}:{name or ''}".encode())
+    source = path.resolve()
+    if source.is_file():
+        digest.update(source.read_bytes())
+    else:
+        for file in sorted(p for p in source.rglob("*") if p.is_file()):
+            stat = file.stat()
+            digest.update(f"{file.relative_to(source)}\0{stat.st_size}\0{stat.st_mtime_ns}\n".encode())
+    return digest.hexdigest()
+
+
+def _joint_record(joint: JointSpec) -> dict[str, Any]:
+    return {
+        "name": joint.name, "type": joint.type, "parent": joint.parent, "child": joint.child,
+        "origin": joint.origin.reshape(-1).tolist(), "axis": joint.axis.tolist(), "lower": joint.lower, "upper": joint.upper,
+        "effort": joint.effort, "velocity": joint.velocity,
+        "mimic": None if joint.mimic is None else [joint.mimic.joint, joint.mimic.multiplier, joint.mimic.offset],
+    }
+
+
+def _dump(asset: ArticulatedAsset) -> bytes:
+    arrays: dict[str, np.ndarray] = {}
+    images: dict[bytes, int] = {}
+    links = []
+    index = 0
+    for name in asset.link_order:
+        link = asset.links[name]
+        parts = []
+        for part in link.parts:
+            image = -1
+            if part.material.image_png is not None:
+                image = images.setdefault(part.material.image_png, len(images))
+            material = part.material
+            parts.append({"source": part.source, "normals": part.normals is not None, "uv": part.uv is not None,
+                          "material": [material.name, list(material.base_color), material.metallic, material.roughness, material.double_sided, image]})
+            arrays[f"v{index}"], arrays[f"f{index}"] = part.vertices, part.faces
+            if part.normals is not None:
+                arrays[f"n{index}"] = part.normals
+            if part.uv is not None:
+                arrays[f"u{index}"] = part.uv
+            index += 1
+        semantics = link.semantics
+        links.append({"name": name, "parts": parts, "semantics": [semantics.label, semantics.joint_kind, list(semantics.visual_names), semantics.source]})
+    for data, number in images.items():
+        arrays[f"img{number}"] = np.frombuffer(data, dtype=np.uint8)
+    header = {
+        "version": CACHE_VERSION, "name": asset.name, "urdf_file": asset.urdf_file, "root_link": asset.root_link,
+        "joint_order": list(asset.joint_order), "link_order": list(asset.link_order), "warnings": list(asset.warnings),
+        "content_hash": asset.content_hash, "joints": [_joint_record(asset.joints[j]) for j in asset.joint_order], "links": links,
+    }
+    arrays[HEADER] = np.frombuffer(json.dumps(header).encode(), dtype=np.uint8)
+    buffer = io.BytesIO()
+    np.savez(buffer, **arrays)
+    return buffer.getvalue()
+
+
+def _joint(record: dict[str, Any]) -> JointSpec:
+    origin = np.asarray(record["origin"], dtype=np.float64).reshape(4, 4)
+    axis = np.asarray(record["axis"], dtype=np.float64)
+    origin.setflags(write=False)
+    axis.setflags(write=False)
+    mimic = None if record["mimic"] is None else Mimic(record["mimic"][0], float(record["mimic"][1]), float(record["mimic"][2]))
+    return JointSpec(name=record["name"], type=record["type"], parent=record["parent"], child=record["child"], origin=origin, axis=axis,
+                     lower=record["lower"], upper=record["upper"], effort=record["effort"], velocity=record["velocity"], mimic=mimic)
+
+
+def _load(data: np.lib.npyio.NpzFile) -> ArticulatedAsset:
+    header = json.loads(bytes(data[HEADER]).decode())
+    if header.get("version") != CACHE_VERSION:
+        raise ValueError("cache version mismatch")
+    links: dict[str, LinkSpec] = {}
+    index = 0
+    for record in header["links"]:
+        parts = []
+        for part in record["parts"]:
+            name, color, metallic, roughness, double_sided, image = part["material"]
+            png = bytes(data[f"img{image}"]) if image >= 0 else None
+            material = Material(name=name, base_color=tuple(color), image_png=png, metallic=metallic, roughness=roughness, double_sided=double_sided)
+            parts.append(MeshPart(vertices=data[f"v{index}"], faces=data[f"f{index}"], normals=data[f"n{index}"] if part["normals"] else None,
+                                  uv=data[f"u{index}"] if part["uv"] else None, material=material, source=part["source"]))
+            index += 1
+        label, kind, visuals, source = record["semantics"]
+        links[record["name"]] = LinkSpec(name=record["name"], parts=tuple(parts), semantics=LinkSemantics(label=label, joint_kind=kind, visual_names=tuple(visuals), source=source))
+    joints = {r["name"]: _joint(r) for r in header["joints"]}
+    return ArticulatedAsset(name=header["name"], urdf_file=header["urdf_file"], root_link=header["root_link"], links=links, joints=joints,
+                            joint_order=tuple(header["joint_order"]), link_order=tuple(header["link_order"]),
+                            warnings=tuple(header["warnings"]), content_hash=header["content_hash"])
+
+
+def _fresh(source: Path, limits: AssetLimits | None, name: str | None) -> ArticulatedAsset:
+    from app.engine.asset.loader import load_asset  # imports yourdfpy and trimesh: only on a miss
+
+    return load_asset(source, limits=limits, name=name)
+
+
+def load_asset_cached(path: str | Path, cache_dir: Path | None, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+    """``load_asset`` through the cache in ``cache_dir`` (no cache when ``None``).
+
+    Raises
+    ------
+    AssetError
+        As ``load_asset`` (rejections are never cached).
+    """
+    source = Path(path)
+    if cache_dir is None or not source.exists():
+        return _fresh(source, limits, name)
+    entry = cache_dir / f"{cache_key(source, name)}.npz"
+    if entry.is_file():
+        try:
+            with np.load(entry, allow_pickle=False) as data:
+                return _load(data)
+        except (OSError, ValueError, KeyError, json.JSONDecodeError) as exc:
+            logger.warning("ignoring unreadable asset cache entry %s: %s", entry.name, exc)
+    asset = _fresh(source, limits, name)
+    try:
+        atomic_write_bytes(entry, _dump(asset))
+    except OSError as exc:
+        logger.warning("cannot write the asset cache %s: %s", cache_dir, exc)
+    return asset
