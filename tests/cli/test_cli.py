@@ -1,0 +1,63 @@
+"""The artimo command as a user runs it (in process, through main())."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from app.cli.main import main
+
+
+def test_inspect_lists_joints_and_links(capsys: pytest.CaptureFixture[str], examples_dir: Path) -> None:
+    assert main(["--no-cache", "inspect", str(examples_dir / "cabinet")]) == 0
+    text = capsys.readouterr().out
+    assert "door_hinge" in text and "revolute" in text and "drawer_top" in text and "diagonal" in text
+
+
+def test_inspect_json(capsys: pytest.CaptureFixture[str], examples_dir: Path) -> None:
+    assert main(["--no-cache", "inspect", "--json", str(examples_dir / "oven")]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert {j["joint_name"] for j in data["joints"]} >= {"door_hinge", "tray_slide"}
+    assert data["scale"]["unit_assumption"] == "meters_like_urdf_units"
+
+
+def test_validate_plan_reports_field_paths(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    plan = json.loads((examples_dir / "oven" / "plan.json").read_text())
+    plan["timeline"][0]["controls"][0]["joint"] = "no_such_joint"
+    plan["meta"]["fps"] = 25
+    bad = tmp_path / "plan.json"
+    bad.write_text(json.dumps(plan))
+    assert main(["--no-cache", "validate-plan", str(examples_dir / "oven"), "--plan", str(bad)]) == 1
+    message = capsys.readouterr().err
+    assert "meta.fps" in message
+
+
+def test_validate_plan_unknown_joint(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    plan = json.loads((examples_dir / "oven" / "plan.json").read_text())
+    plan["timeline"][0]["controls"][0]["joint"] = "no_such_joint"
+    bad = tmp_path / "plan.json"
+    bad.write_text(json.dumps(plan))
+    assert main(["--no-cache", "validate-plan", str(examples_dir / "oven"), "--plan", str(bad)]) == 1
+    message = capsys.readouterr().err
+    assert "timeline[0].controls[0].joint" in message and "no_such_joint" in message
+
+
+def test_run_plan_writes_outputs(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    assert main(["run-plan", str(examples_dir / "oven"), "--plan", str(examples_dir / "oven" / "plan.json"), "--out", str(tmp_path)]) == 0
+    for name in ("plan.json", "trajectory.jsonl", "animation.glb", "report.json"):
+        assert (tmp_path / name).is_file()
+
+
+def test_animate_and_refusal(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    assert main(["--no-cache", "animate", str(examples_dir / "microwave"), "--prompt", "open the microwave", "--out", str(tmp_path / "ok")]) == 0
+    assert "animation.glb" in capsys.readouterr().out
+    assert main(["--no-cache", "animate", str(examples_dir / "microwave"), "--prompt", "open the trunk", "--out", str(tmp_path / "no")]) == 1
+    message = capsys.readouterr().err
+    assert "Movable parts" in message and "door" in message
+
+
+def test_missing_asset_is_a_clear_error(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    assert main(["--no-cache", "inspect", str(tmp_path / "nothing")]) == 1
+    assert "does not exist" in capsys.readouterr().err

@@ -1,0 +1,67 @@
+"""The asset disk cache returns exactly what load_asset returns, and notices changes."""
+
+from __future__ import annotations
+
+import os
+import shutil
+from pathlib import Path
+
+import numpy as np
+
+from app.engine.asset.cache import cache_key, load_asset_cached
+from app.engine.asset.loader import load_asset
+from app.engine.export.glb import glb_bytes
+from app.engine.execute.executor import execute
+from app.engine.plan.schema import Plan
+
+
+def _same(a, b) -> None:  # type: ignore[no-untyped-def]
+    assert (a.name, a.urdf_file, a.root_link, a.joint_order, a.link_order, a.content_hash) == (b.name, b.urdf_file, b.root_link, b.joint_order, b.link_order, b.content_hash)
+    for name in a.joints:
+        ja, jb = a.joints[name], b.joints[name]
+        assert (ja.type, ja.parent, ja.child, ja.lower, ja.upper, ja.mimic) == (jb.type, jb.parent, jb.child, jb.lower, jb.upper, jb.mimic)
+        assert np.array_equal(ja.origin, jb.origin) and np.array_equal(ja.axis, jb.axis)
+    for name in a.links:
+        la, lb = a.links[name], b.links[name]
+        assert la.semantics == lb.semantics and len(la.parts) == len(lb.parts)
+        for pa, pb in zip(la.parts, lb.parts, strict=True):
+            assert pa.material == pb.material and pa.source == pb.source
+            for field in ("vertices", "faces", "normals", "uv"):
+                x, y = getattr(pa, field), getattr(pb, field)
+                assert (x is None and y is None) or np.array_equal(x, y)
+
+
+def test_cache_round_trip_is_exact(partnet: Path, tmp_path: Path) -> None:
+    source = partnet / "safe_102387"  # textured
+    fresh = load_asset(source)
+    first = load_asset_cached(source, tmp_path)
+    assert len(list(tmp_path.glob("*.npz"))) == 1
+    second = load_asset_cached(source, tmp_path)
+    _same(fresh, first)
+    _same(fresh, second)
+    plan = Plan.model_validate({"meta": {"fps": 30, "duration_s": 1.0}, "timeline": [{"name": "o", "phase_type": "effect_motion", "t0": 0, "t1": 1,
+                                "controls": [{"mode": "joint_position", "joint": "joint_0", "q_target_expr": "upper_limit"}]}]})
+    assert glb_bytes(fresh, execute(plan, fresh)) == glb_bytes(second, execute(plan, second))
+
+
+def test_cache_key_changes_with_the_files(tmp_path: Path, examples_dir: Path) -> None:
+    copy = tmp_path / "bin"
+    shutil.copytree(examples_dir / "pedal_bin", copy)
+    before = cache_key(copy)
+    urdf = next(copy.glob("*.urdf"))
+    os.utime(urdf, ns=(urdf.stat().st_atime_ns, urdf.stat().st_mtime_ns + 1_000_000))
+    assert cache_key(copy) != before
+    assert cache_key(copy, "other-name") != cache_key(copy)
+
+
+def test_corrupt_entry_is_ignored(tmp_path: Path, examples_dir: Path) -> None:
+    cache = tmp_path / "cache"
+    asset = load_asset_cached(examples_dir / "oven", cache)
+    entry = next(cache.glob("*.npz"))
+    entry.write_bytes(b"not a zip")
+    again = load_asset_cached(examples_dir / "oven", cache)
+    _same(asset, again)
+
+
+def test_no_cache_dir_means_plain_loading(examples_dir: Path) -> None:
+    assert load_asset_cached(examples_dir / "oven", None).name == "oven"
