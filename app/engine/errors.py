@@ -60,7 +60,10 @@ class ProviderError(EngineError):
 
 
 class ProviderRateLimited(ProviderError):
-    """The provider answered with a rate-limit response."""
+    """The provider answered with a rate-limit response (``retry_after_s`` when it said)."""
+
+    def __init__(self, message: str, *, retry_after_s: float | None = None) -> None:
+        super().__init__(message, retry_after_s=retry_after_s)
 
 
 class ProviderTimeout(ProviderError):
@@ -68,7 +71,10 @@ class ProviderTimeout(ProviderError):
 
 
 class ProviderResponseError(ProviderError):
-    """The provider answered with an error or an unreadable body."""
+    """The provider answered with an error or an unreadable body (``retriable`` for 5xx / network)."""
+
+    def __init__(self, message: str, *, retriable: bool = False, status: int | None = None) -> None:
+        super().__init__(message, retriable=retriable, status=status)
 
 
 class RoleOutputError(EngineError):

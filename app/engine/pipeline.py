@@ -147,4 +147,10 @@ def run_pipeline(
     """
     target = Path(out_dir)
     target.mkdir(parents=True, exist_ok=True)
-    return asyncio.run(_run(request, roles, config or EngineConfig(), _Run(target, observer, should_stop)))
+    async def main() -> PipelineResult:
+        try:
+            return await _run(request, roles, config or EngineConfig(), _Run(target, observer, should_stop))
+        finally:
+            await roles.aclose()
+
+    return asyncio.run(main())

@@ -8,7 +8,7 @@ the model calls it made (none for the offline agent's rules).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Protocol
+from typing import Any, Protocol
 
 from app.engine.agents.critique import Critique
 from app.engine.asset.model import ArticulatedAsset
@@ -81,3 +81,9 @@ class Roles:
     perceiver: Perceiver
     planner: Planner
     critic: Critic
+    closers: tuple[Any, ...] = ()
+    """Model clients to close (``aclose()``) when the run ends."""
+
+    async def aclose(self) -> None:
+        for closer in self.closers:
+            await closer.aclose()
