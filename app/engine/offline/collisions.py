@@ -27,7 +27,7 @@ DEPTH_MARGIN_FRACTION = 0.02
 """Points must be this fraction of the other link's size inside a hull to count ..."""
 THIN_MARGIN_FRACTION = 0.2
 """... or, for a thin part (a door slab), this fraction of its thinnest extent."""
-NEW_PENETRATION = 0.06
+NEW_PENETRATION = 0.03
 """Fraction of a link's points newly inside another link that counts as a collision."""
 
 
@@ -111,15 +111,22 @@ def _neighbours(asset: ArticulatedAsset, a: str, b: str) -> bool:
     )
 
 
-def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set[str]) -> list[Collision]:
-    """New interpenetrations of ``moving`` links with the rest, worst first (one per pair)."""
+def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set[str], frames: list[int] | None = None) -> list[Collision]:
+    """New interpenetrations of ``moving`` links with the rest, worst first (one per pair).
+
+    ``frames`` restricts the check to those frame indices (frame 0, the reference, is always
+    added); by default up to ``MAX_FRAMES`` evenly spaced frames are checked.
+    """
     shapes = _shapes(id(asset), asset)
-    frames = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(int))
+    if frames is None:
+        frames = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(int))
+    else:
+        frames = np.unique(np.clip(np.array([0, *frames], dtype=np.int64), 0, trajectory.frame_count - 1))
     poses = link_poses(asset, {n: trajectory.joint(n)[frames] for n in trajectory.joint_names}, base_transforms(trajectory.base_translation[frames]))
     found: dict[tuple[str, str], Collision] = {}
     for mover in sorted(moving & set(shapes)):
         for other in asset.visual_links:
-            if other == mover or _neighbours(asset, mover, other) or (other in moving and other < mover):
+            if other == mover or _neighbours(asset, mover, other):
                 continue
             relative = np.linalg.inv(poses[other]) @ poses[mover]
             points = shapes[mover].points
@@ -127,7 +134,7 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
             for index in range(1, frames.shape[0]):
                 local = points @ relative[index, :3, :3].T + relative[index, :3, 3]
                 fraction = _inside_fraction(local, shapes[other]) - baseline
-                key = (mover, other)
+                key = (min(mover, other), max(mover, other))
                 if fraction > NEW_PENETRATION and (key not in found or fraction > found[key].fraction):
                     frame = int(frames[index])
                     found[key] = Collision(mover, other, frame, float(trajectory.times[frame]), round(fraction, 4))
