@@ -1,4 +1,4 @@
-"""Camera math against hand-computed values (no GL)."""
+"""Camera math and framing against hand-computed values (no GL)."""
 
 from __future__ import annotations
 
@@ -7,8 +7,10 @@ import math
 import numpy as np
 import pytest
 
+from app.engine.asset.kinematics import link_poses
+from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import RenderError
-from app.engine.render.camera import FRAME_MARGIN, Camera, ViewSpec, canonical_views, orbit_camera
+from app.engine.render.camera import FRAME_MARGIN, Camera, ViewSpec, asset_bounds, canonical_views, orbit_camera
 
 
 def test_projection_matches_hand_values() -> None:
@@ -24,7 +26,15 @@ def test_projection_matches_hand_values() -> None:
 
 
 def test_matrices_agree_with_project() -> None:
-    camera = Camera(eye=np.array([1.0, -2.0, 1.5]), target=np.array([0.1, 0.2, 0.3]), fov_deg=35.0, width=320, height=240, near=0.1, far=20.0)
+    camera = Camera(
+        eye=np.array([1.0, -2.0, 1.5]),
+        target=np.array([0.1, 0.2, 0.3]),
+        fov_deg=35.0,
+        width=320,
+        height=240,
+        near=0.1,
+        far=20.0,
+    )
     points = np.array([[0.0, 0.0, 0.0], [0.3, -0.2, 0.8], [-0.5, 0.4, 0.1]])
     clip = (camera.view_projection() @ np.c_[points, np.ones(3)].T).T
     ndc = clip[:, :3] / clip[:, 3:4]
@@ -83,3 +93,15 @@ def test_top_view_is_well_defined_and_bad_cameras_raise() -> None:
         orbit_camera(np.zeros(3), 1.0, 0.0, 0.0, fov_deg=0.0)
     with pytest.raises(RenderError):
         orbit_camera(np.zeros(3), 1.0, 0.0, 0.0, distance_scale=0.0)
+
+
+def test_asset_bounds_single_frame_and_union(door_scene: ArticulatedAsset) -> None:
+    center, diag = asset_bounds(door_scene)
+    # body x in [-0.5, 0.5], closed door panel x in [0.52, 0.56]
+    np.testing.assert_allclose(center, [0.03, 0.0, 0.0], atol=1e-9)
+    assert diag == pytest.approx(float(np.linalg.norm([1.06, 1.0, 1.0])))
+    frames = link_poses(door_scene, {"hinge": np.array([0.0, math.pi / 2])})
+    union_center, union_diag = asset_bounds(door_scene, frames)
+    opened = asset_bounds(door_scene, {k: v[1] for k, v in frames.items()})
+    assert union_diag >= max(diag, opened[1]) - 1e-12
+    assert union_center[0] > center[0]  # the open door sticks out along +X

@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import hashlib
 import io
+import multiprocessing
+import multiprocessing.queues
 import os
 import subprocess
 import sys
 import textwrap
+from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
@@ -26,7 +30,9 @@ REPO = Path(__file__).resolve().parents[3]
 
 
 def _front_camera(distance: float, size: int = 256, fov: float = 35.0) -> Camera:
-    return Camera(eye=np.array([distance, 0.0, 0.0]), target=np.zeros(3), fov_deg=fov, width=size, height=size, near=0.1, far=10.0)
+    return Camera(
+        eye=np.array([distance, 0.0, 0.0]), target=np.zeros(3), fov_deg=fov, width=size, height=size, near=0.1, far=10.0
+    )
 
 
 def test_box_mask_area_matches_projection(unit_box: ArticulatedAsset) -> None:
@@ -44,7 +50,9 @@ def test_box_mask_area_matches_projection(unit_box: ArticulatedAsset) -> None:
 def test_rendered_pixels_land_where_camera_projects(tmp_path: Path) -> None:
     urdf = robot(link("marker", box((0.1, 0.1, 0.1), xyz=(0.0, 0.6, 0.4))), name="marker")
     asset = load_asset(write_asset(tmp_path / "marker", urdf))
-    camera = Camera(eye=np.array([4.0, 0.0, 0.0]), target=np.zeros(3), fov_deg=35.0, width=320, height=240, near=0.1, far=10.0)
+    camera = Camera(
+        eye=np.array([4.0, 0.0, 0.0]), target=np.zeros(3), fov_deg=35.0, width=320, height=240, near=0.1, far=10.0
+    )
     mask = gl_backend.render_link_masks(asset, rest_poses(asset), camera)["marker"]
     rows, cols = np.nonzero(mask)
     centroid = np.array([cols.mean() + 0.5, rows.mean() + 0.5])  # pixel centres
@@ -117,7 +125,11 @@ f 1/1 3/3 4/4
 
 
 def test_texture_repeat_through_the_atlas(tmp_path: Path) -> None:
-    files = {"quad.obj": QUAD_OBJ, "quad.mtl": "newmtl checker\nKd 1 1 1\nmap_Kd checker.png\n", "checker.png": _checker_png()}
+    files = {
+        "quad.obj": QUAD_OBJ,
+        "quad.mtl": "newmtl checker\nKd 1 1 1\nmap_Kd checker.png\n",
+        "checker.png": _checker_png(),
+    }
     urdf = robot(link("panel", '<visual><geometry><mesh filename="quad.obj"/></geometry></visual>'), name="quad")
     asset = load_asset(write_asset(tmp_path / "quad", urdf, files))
     camera = _front_camera(3.0)
@@ -135,17 +147,17 @@ def test_texture_repeat_through_the_atlas(tmp_path: Path) -> None:
             assert colour[name], (row, col, name, (r, g, b))
 
 
-def test_textured_partnet_asset_uses_its_texture(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_textured_partnet_asset_uses_its_texture(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     door = load_partnet("door_8877")  # wood texture
     camera = view_camera(door, canonical_views()[0], 200, 150)
     rgba = gl_backend.render_rgba(door, rest_poses(door), camera)
     object_pixels = rgba[rgba[..., 3] == 255][:, :3].astype(float)
-    r, g, b = object_pixels.mean(axis=0)
+    r, _, b = object_pixels.mean(axis=0)
     assert r > b + 40  # brown wood, not the grey base colour
     assert object_pixels.std(axis=0).max() > 10  # textured, not flat
 
 
-def test_renders_are_deterministic(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_renders_are_deterministic(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     pot = load_partnet("kitchen_pot_100038")
     camera = view_camera(pot, canonical_views()[1], 320, 240)
     first = gl_backend.render_rgba(pot, rest_poses(pot), camera)
@@ -156,7 +168,7 @@ def test_renders_are_deterministic(load_partnet) -> None:  # type: ignore[no-unt
     assert ids_a.tobytes() == ids_b.tobytes() and depth_a.tobytes() == depth_b.tobytes()
 
 
-def test_renders_are_identical_across_processes(load_partnet, partnet: Path) -> None:  # type: ignore[no-untyped-def]
+def test_renders_are_identical_across_processes(load_partnet: Callable[[str], ArticulatedAsset], partnet: Path) -> None:
     code = textwrap.dedent(
         f"""
         import hashlib, sys
@@ -170,7 +182,9 @@ def test_renders_are_identical_across_processes(load_partnet, partnet: Path) -> 
         """
     )
     env = {**os.environ, "LP_NUM_THREADS": "1"}  # another rasteriser thread count must not change pixels
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=REPO, env=env, timeout=120)
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=REPO, env=env, timeout=120
+    )
     safe = load_partnet("safe_101593")
     camera = view_camera(safe, canonical_views()[2], 320, 240)
     local = hashlib.sha256(gl_backend.render_rgba(safe, rest_poses(safe), camera).tobytes()).hexdigest()
@@ -204,3 +218,40 @@ def test_missing_egl_names_the_apt_packages(monkeypatch: pytest.MonkeyPatch) -> 
     with pytest.raises(RenderError) as caught:
         gl_backend._create_context()
     assert "libegl1 libegl-mesa0 libgl1-mesa-dri" in str(caught.value)
+
+
+def test_importing_the_render_package_does_not_import_moderngl() -> None:
+    code = "import sys, app.engine.render.views, app.engine.render.cues, app.engine.render; sys.stdout.write(str('moderngl' in sys.modules))"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True, cwd=REPO, timeout=60)
+    assert out.stdout == "False"
+
+
+def test_threads_share_the_context_safely(door_scene: ArticulatedAsset) -> None:
+    camera = view_camera(door_scene, canonical_views()[0], 128, 128)
+    angles = [0.0, 0.4, 0.8, 1.2]
+    poses = [{k: v[0] for k, v in link_poses(door_scene, {"hinge": np.array([a])}).items()} for a in angles]
+    serial = [gl_backend.render_link_masks(door_scene, p, camera)["door"] for p in poses]
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        parallel = list(pool.map(lambda p: gl_backend.render_link_masks(door_scene, p, camera)["door"], poses * 3))
+    for index, mask in enumerate(parallel):
+        assert np.array_equal(mask, serial[index % len(angles)])
+
+
+def _render_in_child(asset: ArticulatedAsset, camera: Camera, queue: multiprocessing.queues.Queue) -> None:  # type: ignore[type-arg]
+    try:
+        gl_backend.render_link_ids(asset, rest_poses(asset), camera)
+        queue.put("rendered")
+    except RenderError as exc:
+        queue.put(str(exc))
+
+
+def test_a_forked_child_of_a_rendering_process_refuses_instead_of_hanging(unit_box: ArticulatedAsset) -> None:
+    camera = _front_camera(4.0, size=32)
+    gl_backend.render_link_ids(unit_box, rest_poses(unit_box), camera)  # the parent has rendered
+    context = multiprocessing.get_context("fork")
+    queue = context.Queue()
+    child = context.Process(target=_render_in_child, args=(unit_box, camera, queue))
+    child.start()
+    child.join(60)
+    assert child.exitcode == 0
+    assert "fork" in queue.get(timeout=5)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import gc
+from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
@@ -17,11 +18,19 @@ from app.engine.render.camera import ViewSpec, canonical_views, view_camera
 from app.engine.render.palette import MAX_NAME_LABEL_CHARS, label_legend, link_colors, link_labels
 from app.engine.render.views import render_overlay_views, render_reference_views
 
-FRAMED_ASSETS = ["safe_101593", "microwave_7119", "door_8877", "kitchen_pot_100038", "washing_machine_103508", "toilet_102622", "laptop_10101"]
+FRAMED_ASSETS = [
+    "safe_101593",
+    "microwave_7119",
+    "door_8877",
+    "kitchen_pot_100038",
+    "washing_machine_103508",
+    "toilet_102622",
+    "laptop_10101",
+]
 
 
 @pytest.mark.parametrize("name", FRAMED_ASSETS)
-def test_object_is_fully_inside_all_canonical_views(load_partnet, name: str) -> None:  # type: ignore[no-untyped-def]
+def test_object_is_fully_inside_all_canonical_views(load_partnet: Callable[[str], ArticulatedAsset], name: str) -> None:
     asset = load_partnet(name)
     poses = rest_poses(asset)
     for view in canonical_views():
@@ -32,7 +41,7 @@ def test_object_is_fully_inside_all_canonical_views(load_partnet, name: str) -> 
         assert (ids >= 0).mean() > 0.03, (name, view)  # and not a speck either
 
 
-def test_reference_views_show_the_object(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_reference_views_show_the_object(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     safe = load_partnet("safe_101593")
     images = render_reference_views(safe, size=(320, 240))
     assert len(images) == 4 and all(im.size == (320, 240) and im.mode == "RGB" for im in images)
@@ -46,7 +55,7 @@ def test_reference_views_show_the_object(load_partnet) -> None:  # type: ignore[
         assert (np.abs(legend[..., 0] - 220) < 30).sum() + (np.abs(legend[..., 2] - 220) < 30).sum() > 20
 
 
-def test_reference_views_are_deterministic_and_follow_the_view(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_reference_views_are_deterministic_and_follow_the_view(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     pot = load_partnet("kitchen_pot_100038")
     first = render_reference_views(pot, views=[ViewSpec(30.0, 40.0, 50.0, 1.2)], size=(200, 160))
     second = render_reference_views(pot, views=[ViewSpec(30.0, 40.0, 50.0, 1.2)], size=(200, 160))
@@ -55,20 +64,22 @@ def test_reference_views_are_deterministic_and_follow_the_view(load_partnet) -> 
     assert other[0].tobytes() != first[0].tobytes()  # the fov is really used
 
 
-def test_overlay_colours_are_unique_and_drawn_per_link(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_overlay_colours_are_unique_and_drawn_per_link(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     safe = load_partnet("safe_101564")  # 14 links
     colors = link_colors(safe)
     assert sorted(colors) == sorted(safe.visual_links)
     assert len(set(colors.values())) == len(colors)
     assert all(max(c) - min(c) > 40 for c in colors.values())  # saturated, never background white/grey
     assert link_colors(safe) == colors  # deterministic
-    points = gl_backend.render_points(safe, rest_poses(safe), view_camera(safe, canonical_views()[2], 400, 300), colors, count=3000)
+    points = gl_backend.render_points(
+        safe, rest_poses(safe), view_camera(safe, canonical_views()[2], 400, 300), colors, count=3000
+    )
     flat = points[..., :3].reshape(-1, 3)
     for name, color in colors.items():
         assert np.all(flat == color, axis=1).sum() > 0, name
 
 
-def test_points_reveal_parts_hidden_in_the_mesh_render(load_partnet) -> None:  # type: ignore[no-untyped-def]
+def test_points_reveal_parts_hidden_in_the_mesh_render(load_partnet: Callable[[str], ArticulatedAsset]) -> None:
     safe = load_partnet("safe_101593")
     poses = rest_poses(safe)
     camera = view_camera(safe, canonical_views()[0], 400, 300)  # behind the safe: the door is hidden
@@ -112,7 +123,9 @@ def test_collected_assets_release_their_gpu_buffers(tmp_path: Path) -> None:
     resources = gl_backend._ASSETS.get(gl_backend.get_context(), {}, asset)
     del asset
     gc.collect()
-    assert resources.links and resources in gl_backend._ASSETS._dead  # queued: freed at the next render, context current
+    assert (
+        resources.links and resources in gl_backend._ASSETS._dead
+    )  # queued: freed at the next render, context current
     other = load_asset(write_asset(tmp_path / "tmp_box2", robot(link("cube", box((1.0, 1.0, 1.0))))))
     gl_backend.render_link_ids(other, rest_poses(other), camera)
     assert not resources.links and not gl_backend._ASSETS._dead
