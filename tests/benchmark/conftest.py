@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
+from support.metric_cases import SMOKE_CASES
 
 from app.engine.asset.loader import load_asset
 from app.engine.export.glb import export_glb
@@ -14,7 +15,6 @@ from app.engine.metrics.compiler import compile_case
 from benchmark.cases import read_cases
 from benchmark.synthetic import degraded_trajectories
 
-SMOKE_CASES = Path(__file__).resolve().parent / "data" / "smoke_cases.jsonl"
 BROKEN = {
     "case_id": "broken_subject",
     "asset": "safe_101593",

@@ -24,7 +24,14 @@ def _case(document, case_id):
 
 def test_statuses_and_scores(result):
     _, document = result
-    assert [c["status"] for c in document["cases"]] == ["scored", "scored", "no_prediction", "scored", "prediction_error", "case_error"]
+    assert [c["status"] for c in document["cases"]] == [
+        "scored",
+        "scored",
+        "no_prediction",
+        "scored",
+        "prediction_error",
+        "case_error",
+    ]
     perfect = _case(document, "safe_101593_open_door")
     assert (perfect["P_gIoU"], perfect["P_PC"], perfect["P_OccF1"]) == (1.0, 1.0, 1.0)
     assert perfect["matched_frames"] == [15, 42, 45, 46] and perfect["prediction"] == "trajectory.jsonl"
@@ -108,8 +115,18 @@ def test_with_2d_adds_the_mask_metrics(bench, tmp_path):
     ("content", "message"),
     [
         ("not json\n", "line 1: not JSON"),
-        ('{"case_id": "a", "asset": "x", "prompt": "p", "motion_type": "funny", "phases": [{"id": "p", "order": 0}]}\n', "line 1 (case a): motion_type"),
-        ('{"case_id": "a/b", "asset": "x", "prompt": "p", "motion_type": "independent", "phases": [{"id": "p", "order": 0}]}\n', "cannot name a prediction folder"),
+        (
+            '{"case_id": "a", "asset": "x", "prompt": "p", "motion_type": "funny", "phases": [{"id": "p", "order": 0}]}\n',
+            "line 1 (case a): motion_type",
+        ),
+        (
+            '{"case_id": "a/b", "asset": "x", "prompt": "p", "motion_type": "independent", "phases": [{"id": "p", "order": 0}]}\n',
+            "cannot name a prediction folder",
+        ),
+        (
+            '{"case_id": "a", "asset": "../x", "prompt": "p", "motion_type": "independent", "phases": [{"id": "p", "order": 0}]}\n',
+            "must be a folder name",
+        ),
         ("\n", "no cases"),
     ],
 )

@@ -17,7 +17,7 @@ import numpy as np
 
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.vocabulary import LABEL_CATEGORY
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES, LABEL_CATEGORY
 from app.engine.offline.naming import link_category, tokens
 from app.engine.types import FloatArray
 
@@ -202,6 +202,8 @@ def _horizontal(vector: FloatArray) -> FloatArray:
 
 def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray]) -> FloatArray:
     """One part's vote for the object's front (zero when it says nothing)."""
+    if geometry.category in CONTROL_CATEGORIES:
+        return np.zeros(3)
     if geometry.open_value is not None and geometry.closed_value is not None:
         if geometry.type == "prismatic":
             posed = link_poses(asset, {geometry.joint: np.array([geometry.closed_value, geometry.open_value])}, frames=2)
@@ -213,8 +215,8 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
             offset = offset - (offset @ geometry.axis_world) * geometry.axis_world
             return -0.5 * _horizontal(offset)
         return 1.0 * _horizontal(geometry.home_face)
-    if geometry.category in ("button", "knob", "switch", "pedal", "lever"):
-        return 0.5 * _horizontal(geometry.face_normal)
+    # controls say nothing reliable: a washer's knobs sit on a back panel facing the user,
+    # a faucet's lever on a column whose nearest box face is a side
     return np.zeros(3)
 
 

@@ -94,6 +94,27 @@ def _apply_spatial(candidates: list[Part], words: tuple[str, ...], geometry: Obj
     return candidates
 
 
+def _lines_of(candidates: list[Part], geometry: ObjectGeometry, axis: int, descending: bool) -> list[list[Part]]:
+    """Group candidates into rows (axis 2, top first) or columns (axis 1, left first) by 1-D gaps."""
+    ordered = sorted(candidates, key=lambda p: -_position(p, geometry)[axis] if descending else _position(p, geometry)[axis])
+    values = [float(_position(p, geometry)[axis]) for p in ordered]
+    sizes = sorted(p.geometry.size for p in ordered)
+    gap = max(0.5 * sizes[len(sizes) // 2] / 3.0, MIN_QUALIFIER_TOLERANCE_M)
+    lines: list[list[Part]] = [[ordered[0]]]
+    for previous, value, part in zip(values, values[1:], ordered[1:], strict=False):
+        if abs(value - previous) > gap:
+            lines.append([])
+        lines[-1].append(part)
+    return lines
+
+
+def _pick_line(candidates: list[Part], geometry: ObjectGeometry, index: int, axis: int) -> list[Part]:
+    lines = _lines_of(candidates, geometry, axis, descending=axis == 2)
+    if index == 0:
+        return lines[len(lines) // 2]
+    return lines[index - 1] if index > 0 and index <= len(lines) else lines[-1]
+
+
 def _ordered(candidates: list[Part], geometry: ObjectGeometry) -> list[Part]:
     """Reading order: top to bottom when stacked, else left to right."""
     positions = np.array([_position(p, geometry) for p in candidates])
@@ -139,6 +160,10 @@ def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGe
         distinctive = words - NON_NAME_WORDS - {mention.category, mention.head}
         named = [p for p in candidates if link_words(asset, p.link, visuals=False) & distinctive]
         candidates = named or candidates
+    if mention.row is not None and len(candidates) > 1:
+        candidates = _pick_line(candidates, geometry, mention.row, axis=2)
+    if mention.column is not None and len(candidates) > 1:
+        candidates = _pick_line(candidates, geometry, mention.column, axis=1)
     candidates = _apply_spatial(candidates, mention.spatial, geometry)
     if mention.ordinal is not None and len(candidates) > 1:
         ordered = _ordered(candidates, geometry)

@@ -11,6 +11,7 @@ import re
 from dataclasses import dataclass, field
 
 from app.engine.offline.quantities import Quantity, parse_quantity
+from app.engine.offline.vocabulary import OBJECT_WORDS as _OBJECT_WORDS
 from app.engine.offline.vocabulary import (
     CATEGORY_WORDS,
     COLLECTIVE,
@@ -23,10 +24,10 @@ from app.engine.offline.vocabulary import (
 )
 
 _SEQ_SPLIT = re.compile(
-    r"\s*(?:[.;!?]+(?=\s|$)\s*|,?\s*\band\s+then\b\s*|,?\s*\bthen\b\s*|,?\s*\bafterwards?\b,?\s*|,?\s*\bafter that\b,?\s*"
+    r"\s*(?:[.;!?:]+(?=\s|$)\s*|,?\s*\band\s+then\b\s*|,?\s*\bthen\b\s*|,?\s*\bafterwards?\b,?\s*|,?\s*\bafter that\b,?\s*"
     r"|,?\s*\bnext\b,?\s*|,?\s*\bfinally\b,?\s*|,?\s*\bsubsequently\b,?\s*|,?\s*\bonce (?:that is|it is|it's) done\b,?\s*)"
 )
-_PARALLEL = re.compile(r"\s*,?\s*\b(?:while|whilst|as|at the same time as|simultaneously with|and at the same time)\b\s*")
+_PARALLEL = re.compile(r"\s*,?\s*\b(?:while|whilst|at the same time as|simultaneously with|and at the same time|as soon as)\b\s*")
 _INTRANSITIVE = {
     "opens": "open", "open": "open", "pops open": "open", "swings open": "open", "flips open": "open",
     "springs open": "open", "lifts": "open", "rises": "open", "comes up": "open", "pops up": "raise",
@@ -47,6 +48,12 @@ class Mention:
     ordinal: int | None = None
     plural: bool = False
     owner: Mention | None = None
+    position: int = 0
+    instrument: bool = False
+    """Named as the means of a whole-object motion ("by its handle", "on its wheels", "lid and all")."""
+    row: int | None = None
+    column: int | None = None
+    """1-based from the top / left; -1 = last (bottom / right); 0 = middle."""
 
 
 @dataclass(frozen=True)
@@ -81,9 +88,29 @@ def normalize(prompt: str) -> str:
     text = re.sub(r"(\d)([a-z%])", r"\1 \2", text)
     text = re.sub(r"([+-])\s+([xyz])\b", r"\1\2", text)
     text = re.sub(r"[\"()\[\]]", " ", text)
+    text = re.sub(r"(\d+(?:\.\d+)?|one|two|three|four|five) and a half\b", lambda m: f"{_HALF.get(m.group(1), m.group(1))}.5", text)
+    text = _keypad(text)
+    text = re.sub(r",?\s*the one (?:with|that|which|having)\b[^,;.]*", "", text)
     # "give the car a push" -> "push the car"
     text = re.sub(r"\bgive\s+((?:it|them|the\s+[\w-]+(?:\s+[\w-]+)?|[\w-]+))\s+an?\s+(?:\w+\s+)?(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)\b", r"\2 \1", text)
     return re.sub(r"\s+", " ", text).strip()
+
+
+_HALF = {"one": "1", "two": "2", "three": "3", "four": "4", "five": "5"}
+_KEYPAD = re.compile(
+    r"\b(?:type|enter|punch|key|input)\s+(?:in\s+)?(?:the\s+)?(?:code|combination|pin|sequence|digits)?\s*:?\s*(.+?)\s+"
+    r"(?:on|into|using|at)\s+(?:the\s+)?(?:keypad|key pad|keys|buttons|number pad|keyboard)\b"
+)
+
+
+def _keypad(text: str) -> str:
+    """ "type the code top-left, bottom-middle on the keypad" -> one key press per item, in order."""
+    match = _KEYPAD.search(text)
+    if match is None:
+        return text
+    items = [i.strip() for i in re.split(r"\s*(?:,|\bthen\b|\band\b)\s*", match.group(1)) if i.strip()]
+    presses = ", then ".join(f"press the {item} key" for item in items)
+    return text[: match.start()] + presses + text[match.end():]
 
 
 def lemma(word: str) -> str:
@@ -98,6 +125,7 @@ def lemma(word: str) -> str:
     return word
 
 
+OBJECT_WORDS_SET = frozenset(_OBJECT_WORDS)
 _PHRASES = sorted(((p, c) for c, words in CATEGORY_WORDS.items() for p in words), key=lambda pc: -len(pc[0]))
 
 
@@ -117,27 +145,48 @@ def _find_mentions(text: str, exclude_verbs: set[int] | None = None) -> list[tup
     return sorted(found)
 
 
+_ROW_WORDS = {"top": 1, "first": 1, "upper": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "middle": 0, "center": 0, "centre": 0,
+              "bottom": -1, "last": -1, "lower": -1, "left": 1, "leftmost": 1, "right": -1, "rightmost": -1}
+_LINE = re.compile(r"\b(top|bottom|middle|center|centre|first|second|third|fourth|fifth|last|upper|lower|left|right|leftmost|rightmost)[\s-]+(row|column)\b")
+
+
+def _lines(text: str) -> tuple[int | None, int | None, str]:
+    """Row and column qualifiers ("second row", "left column"), and the text without them."""
+    row = column = None
+    for match in _LINE.finditer(text):
+        if match.group(2) == "row":
+            row = _ROW_WORDS[match.group(1)]
+        else:
+            column = _ROW_WORDS[match.group(1)]
+    return row, column, _LINE.sub(" ", text)
+
+
 def _qualifiers(window: str) -> tuple[tuple[str, ...], int | None, bool]:
-    words = re.findall(r"[a-z0-9]+(?:-[a-z]+)?", window)
+    words = re.findall(r"[a-z0-9]+", window)
     spatial = tuple(dict.fromkeys(SPATIAL[w] for w in words if w in SPATIAL))
     ordinal = next((ORDINALS[w] for w in words if w in ORDINALS), None)
     collective = any(w in COLLECTIVE for w in words)
     return spatial, ordinal, collective
 
 
-def _verb(text: str) -> tuple[str | None, str | None, int]:
-    """First verb of a clause: (lemma, kind, position); verbs used as nouns after 'the' are skipped."""
+def _verb(text: str) -> tuple[str | None, str | None, int, int]:
+    """First verb of a clause: (lemma, kind, start, end); verbs used as nouns after 'the' are skipped."""
     previous = ""
     for match in re.finditer(r"[a-z]+", text):
         word = match.group(0)
         base = lemma(word)
-        if base in VERBS and previous not in ("the", "a", "an", "its", "of"):
+        if base in VERBS and previous not in ("the", "a", "an", "its", "of", "this", "that", "each", "every"):
             if base == "step" and not re.search(r"\bstep\s+on\b", text[match.start():]):
                 previous = word
                 continue
-            return base, VERBS[base], match.start()
+            kind = VERBS[base]
+            if base in ("fold", "flip", "tilt") and re.match(r"\s*(?:\w+\s+){0,3}?(?:back|backwards|backward|open|out|up)\b", text[match.end():]):
+                kind = "open"
+            if base in ("spring", "snap", "pop", "bounce") and re.match(r"\s*back\b", text[match.end():]):
+                kind = "release"
+            return base, kind, match.start(), match.end()
         previous = word
-    return None, None, -1
+    return None, None, -1, -1
 
 
 def _particle(text: str, verb_end: int) -> str | None:
@@ -153,38 +202,62 @@ def _particle(text: str, verb_end: int) -> str | None:
     return None
 
 
+_INSTRUMENT_BEFORE = re.compile(r"\b(?:on|by|with|using|via|holding|gripping|from)\s+(?:its|their|the|his|her|both)?\s*(?:[a-z-]+\s+)?$")
+_DESCRIPTIVE_AFTER = re.compile(r"^\s*(?:and all|included|attached|on top)\b")
+
+
+def _object_mention(text: str, after: int, parts: list[tuple[int, int, str, str]]) -> Mention | None:
+    """The whole object named in the clause (not as a modifier: "the safe door", "the bucket's handle")."""
+    starts = {start for start, _, _, _ in parts}
+    for match in re.finditer(r"[a-z]+", text[after:]):
+        word = match.group(0)
+        if word not in OBJECT_WORDS_SET:
+            continue
+        end = after + match.end()
+        direct = re.match(r"(?:'s)?\s+", text[end:])
+        if direct is not None:
+            nxt = end + direct.end()
+            modifier = re.match(r"[a-z-]+\s+", text[nxt:])
+            if nxt in starts or (modifier is not None and nxt + modifier.end() in starts):
+                continue
+        return Mention(category="object", head=word, position=after + match.start())
+    return None
+
+
 def parse_clause(text: str) -> Clause:
     """Verb, particle, mentions and quantity of one clause."""
-    verb, kind, position = _verb(text)
-    verb_end = position + len(verb) if verb else 0
-    found = _find_mentions(text, exclude_verbs={position} if verb in ("switch", "dial", "step", "wheel", "lever") else None)
+    verb, kind, position, verb_end = _verb(text)
+    verb_end = max(verb_end, 0)
+    row, column, plain = _lines(text)
+    found = _find_mentions(plain, exclude_verbs={position} if verb in ("switch", "dial", "step", "wheel", "lever") else None)
     mentions: list[Mention] = []
-    boundary = max(verb_end, 0)
+    boundary = verb_end
     for start, end, category, phrase in found:
-        window = text[boundary:start] if start >= boundary else text[max(0, start - 25):start]
+        window = plain[boundary:start] if start >= boundary else plain[max(0, start - 25):start]
         spatial, ordinal, collective = _qualifiers(window)
         plural = collective or phrase.endswith("s") and not phrase.endswith(("ss", "us"))
-        mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural)
-        owner_link = re.match(r"\s*(?:of|on|in|at|attached to|from)\s+(?:the\s+)?", text[end:])
-        if mentions and re.search(r"\b(?:of|on|in|at|from)\s+(?:the\s+)?$", text[boundary:start]):
+        earlier_target = bool(mentions) or any(w in OBJECT_WORDS_SET for w in re.findall(r"[a-z]+", plain[verb_end:start]))
+        instrument = earlier_target and bool(_INSTRUMENT_BEFORE.search(plain[max(boundary, verb_end):start]) or _DESCRIPTIVE_AFTER.match(plain[end:]))
+        mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, position=start, instrument=instrument, row=row, column=column)
+        if mentions and re.search(r"\b(?:of|on|in|at|from)\s+(?:the\s+)?$", plain[boundary:start]):
             previous = mentions.pop()
-            mention = Mention(category=previous.category, head=previous.head, spatial=previous.spatial, ordinal=previous.ordinal, plural=previous.plural, owner=mention)
-        elif re.search(r"'s\s*$", text[boundary:start]) and mentions:
+            mention = Mention(category=previous.category, head=previous.head, spatial=previous.spatial, ordinal=previous.ordinal, plural=previous.plural,
+                              owner=mention, position=previous.position, instrument=previous.instrument, row=row, column=column)
+        elif re.search(r"'s\s*$", plain[boundary:start]) and mentions:
             owner = mentions.pop()
-            mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, owner=owner)
+            mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, owner=owner, position=start, row=row, column=column)
         mentions.append(mention)
-        boundary = end if not owner_link else end
-    if not mentions:
-        words = set(re.findall(r"[a-z]+", text))
-        if words & set(OBJECT_WORDS):
-            mentions.append(Mention(category="object", head=sorted(words & set(OBJECT_WORDS))[0]))
+        boundary = end
+    whole = _object_mention(plain, verb_end, found)
+    if whole is not None and (not mentions or whole.position < min(m.position for m in mentions)):
+        mentions.insert(0, whole)
     unknown = None
     if not mentions and verb:
-        rest = re.sub(r"^\s*(?:the|a|an|its|this|that)\s+", "", text[verb_end:]).strip()
+        rest = re.sub(r"^\s*(?:the|a|an|its|this|that)\s+", "", plain[verb_end:]).strip()
         noun = re.match(r"([a-z][a-z\- ]{1,40}?)(?:\s+(?:to|by|and|with|for|so|until|all|fully|halfway|slightly)\b|[,.]|$)", rest)
         if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES:
             unknown = noun.group(1).strip()
-    particle = _particle(text, verb_end) if verb else None
+    particle = _particle(plain, verb_end) if verb else None
     return Clause(text=text.strip(), verb=verb, kind=kind, particle=particle, mentions=tuple(mentions), quantity=parse_quantity(text), unknown_object=unknown)
 
 
@@ -238,8 +311,8 @@ def _ordered(segment: str) -> list[str]:
 
 
 def _split_and(segment: str) -> list[str]:
-    """Split "A and B" when B starts with a verb of its own (a second action)."""
-    parts = re.split(r"\s*,?\s*\band\b\s+(?=(?:also\s+)?[a-z]+)", segment)
+    """Split "A and B" / "A, B" when B starts with a verb of its own (a second action)."""
+    parts = re.split(r"\s*,?\s*\band\b\s+(?=(?:also\s+)?[a-z]+)|\s*,\s+(?=[a-z]+)", segment)
     merged: list[str] = []
     for part in parts:
         first = part.split()[0] if part.split() else ""

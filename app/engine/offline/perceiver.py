@@ -35,6 +35,7 @@ RELEASE_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock
 RELEASE_BUTTON_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice", "oven"})
 HINGED = ("door", "lid", "screen", "window")
 PRONOUNS = frozenset({"it", "them", "one"})
+OBJECT_VERBS = frozenset({"roll", "drag", "carry", "pick", "transport", "drive", "move", "lift", "shove", "wheel", "tow"})
 
 
 class _Builder:
@@ -50,6 +51,8 @@ class _Builder:
         self.sustained: dict[str, JointGoal] = {}
         self.last_parts: list[Part] = []
         self.last_controls: list[Part] = []
+        self.head_of: dict[str, str] = {}
+        self.implicit_effects_at: dict[str, int] = {}
         self.state: dict[str, float] = {}
 
     # --- grounding -----------------------------------------------------------------
@@ -59,6 +62,7 @@ class _Builder:
         return GroundingError(f"{why}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable)
 
     def ground(self, mention: Mention, kind: str | None) -> list[Part]:
+        """Parts a mention refers to ([] when it names nothing movable)."""
         if mention.category == "object" and mention.head in PRONOUNS and self.last_parts:
             if kind == "release" and self.last_controls:
                 return list(self.last_controls)
@@ -69,14 +73,20 @@ class _Builder:
                 return openable if mention.plural or "all" in self.words or "everything" in self.words else openable[:1]
             return []
         found = ground_mention(mention, self.asset, self.obj, self.parts, self.words)
-        if not found:
-            raise self.refuse(f"the prompt mentions a {mention.head}, but the asset has no such movable part")
+        if len(found) > 1 and not mention.plural:
+            return found
+        others = [p for p in ground_mention(replace(mention, plural=True), self.asset, self.obj, self.parts, self.words)
+                  if self.head_of.get(p.joint, mention.head) == mention.head]
+        if found and others and found[0].joint in self.head_of and self.head_of[found[0].joint] != mention.head:
+            found = others[:1]  # "the dial ... the handle": different words name different parts
+        for part in found:
+            self.head_of.setdefault(part.joint, mention.head)
         return found
 
     # --- goals ---------------------------------------------------------------------
     def goal(self, part: Part, clause: Clause, role: str, quantity: Quantity) -> JointGoal:
         kind = clause.kind or "operate"
-        value = goal_value(kind, clause.particle, part, quantity, self.obj)
+        value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, self.state.get(part.joint))
         returns = CONTROL_RETURN.get(part.category or "", "stays") if role == "control" else "stays"
         if value is None:
             omega, _ = spin_omega(part, quantity, self.obj)
@@ -85,12 +95,28 @@ class _Builder:
             self.notes.append(f"{part.joint} is already at the requested state")
         return JointGoal(part.joint, part.link, part.category, role, value=value, expr=target_expression(part.geometry, value), returns=returns)  # type: ignore[arg-type]
 
-    def goals(self, clause: Clause, role: str | None, quantity: Quantity) -> list[JointGoal]:
+    def goals(self, clause: Clause, role: str | None, quantity: Quantity, *, required: bool = True) -> list[JointGoal]:
+        """Goals of the parts a clause names; names that match nothing are ignored when others match."""
         parts: list[Part] = []
+        missing: list[str] = []
         for mention in clause.mentions:
-            parts.extend(p for p in self.ground(mention, clause.kind) if p not in parts)
-        if not parts and clause.unknown_object:
-            raise self.refuse(f"cannot find '{clause.unknown_object}' on the asset")
+            if mention.instrument:
+                continue
+            found = self.ground(mention, clause.kind)
+            if not found and mention.category != "object":
+                missing.append(mention.head)
+            parts.extend(p for p in found if p not in parts)
+        if clause.kind == "release" and re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text):
+            parts = [p for p in parts if p.category not in HINGED]  # "release the door latch" does not move the door itself
+        if not parts:
+            if not required:
+                return []
+            if missing:
+                raise self.refuse(f"the prompt mentions a {missing[0]}, but the asset has no such movable part")
+            if clause.unknown_object:
+                raise self.refuse(f"cannot find '{clause.unknown_object}' on the asset")
+        elif missing:
+            self.notes.append(f"ignored '{', '.join(missing)}': no such movable part")
         out = []
         for part in parts:
             self.mentioned.add(part.joint)
@@ -99,10 +125,14 @@ class _Builder:
         return out
 
     def is_base(self, clause: Clause) -> bool:
-        if any(m.head in PRONOUNS for m in clause.mentions) and self.last_parts:
+        """Whole-object motion: the first thing the verb acts on is the object itself."""
+        targets = [m for m in clause.mentions if not m.instrument]
+        if not targets or targets[0].category != "object":
             return False
-        objects = [m for m in clause.mentions if m.category == "object"]
-        if not objects or len(objects) != len(clause.mentions):
+        pronoun = targets[0].head in PRONOUNS and bool(self.last_parts)
+        quantity = clause.quantity
+        directional = quantity.direction in ("forward", "backward", "left", "right") and clause.particle not in ("in", "out", "open", "shut")
+        if pronoun and not (quantity.axis is not None or clause.verb in OBJECT_VERBS or directional):
             return False
         return clause.kind in BASE_KINDS or (clause.kind in ("open", "close") and not openable_parts(self.parts) and clause.particle in ("up", "down"))
 
@@ -176,9 +206,14 @@ class _Builder:
             self.steps.append(Step(primitive=clause.verb or "move", base=goal, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
             return
         controls = self.goals(action.means, "control", action.means.quantity) if action.means else []
-        effects = self.goals(clause, "effect" if controls else None, quantity)
+        effects = self.goals(clause, "effect" if controls else None, quantity, required=not controls)
         if clause.kind == "release":
             effects = self.release(effects)
+        if not controls and self.refine_implicit(effects):
+            return
+        implied: list[JointGoal] = []
+        if controls and not effects:
+            effects = implied = self.implicit_effects(controls)
         if not controls:
             direct_controls = [g for g in effects if g.role == "control"]
             effects = [g for g in effects if g.role != "control"]
@@ -187,7 +222,7 @@ class _Builder:
                 effects = [replace(g, role="effect") for g in effects]
             controls = direct_controls + implicit
             if direct_controls and not effects:
-                effects = self.implicit_effects(direct_controls)
+                effects = implied = self.implicit_effects(direct_controls)
         if not controls and not effects:
             raise self.refuse(f"nothing in '{clause.text}' names a part to move")
         for prerequisite in self.prerequisites(effects):
@@ -202,10 +237,26 @@ class _Builder:
         self.last_parts = [p for p in self.parts if any(g.joint == p.joint for g in moved)]
         self.last_controls = [p for p in self.parts if any(g.joint == p.joint for g in controls)]
         self.state.update({g.joint: g.value for g in moved if g.value is not None})
+        for goal in implied:
+            self.implicit_effects_at[goal.joint] = len(self.steps)
         self.steps.append(
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def refine_implicit(self, effects: list[JointGoal]) -> bool:
+        """"Press the pedal: the lid opens to vertical" - the second clause states the effect the
+        previous step already implied; update its target instead of adding a motion."""
+        last = len(self.steps) - 1
+        if not effects or any(self.implicit_effects_at.get(g.joint) != last for g in effects):
+            return False
+        step = self.steps[last]
+        updated = {g.joint: g for g in effects}
+        self.steps[last] = replace(step, effects=tuple(replace(updated[e.joint], role="effect") if e.joint in updated else e for e in step.effects))
+        self.state.update({g.joint: g.value for g in effects if g.value is not None})
+        for joint in updated:
+            del self.implicit_effects_at[joint]
+        return True
 
     def prerequisites(self, effects: list[JointGoal]) -> list[Step]:
         """State-dependent motion: open what stands in the way first (the door before the tray)."""

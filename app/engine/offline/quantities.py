@@ -49,6 +49,8 @@ class Quantity:
     sense: str | None = None
     axis: tuple[float, float, float] | None = None
     direction: str | None = None
+    orientation: str | None = None
+    """``vertical`` (upright, straight up) or ``flat`` (horizontal, lies flat)."""
 
     def merged(self, other: Quantity) -> Quantity:
         """``self`` with unset fields taken from ``other``."""
@@ -91,6 +93,8 @@ def _amount(text: str) -> float | None:
 
 
 def _turn_angle(text: str) -> float | None:
+    if re.search(r"\bunscrew|\bloosen", text) and not _TURNS.search(text):
+        return 2 * math.pi
     match = _TURNS.search(text)
     if match:
         return 2 * math.pi * float(match.group(1))
@@ -153,7 +157,13 @@ def parse_quantity(clause: str) -> Quantity:
         if re.search(r"\b" + word + r"\b", text):
             direction = value
             break
+    orientation = None
+    if re.search(r"\b(?:vertical|vertically|upright|straight up|stands? up|perpendicular)\b", text):
+        orientation = "vertical"
+    elif re.search(r"\b(?:flat|horizontal|horizontally|level)\b", text):
+        orientation = "flat"
     return Quantity(
+        orientation=orientation,
         fraction=_amount(text),
         angle_rad=angle,
         distance_m=distance,

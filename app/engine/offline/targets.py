@@ -6,7 +6,9 @@ import math
 
 import numpy as np
 
+from app.engine.asset.model import ArticulatedAsset
 from app.engine.offline.geometry import JointGeometry, ObjectGeometry
+from app.engine.offline.orientation import directional_sign, orientation_value
 from app.engine.offline.grounding import Part
 from app.engine.offline.quantities import Quantity
 
@@ -27,15 +29,17 @@ def _clamp(geometry: JointGeometry, value: float) -> float:
     return float(min(max(value, geometry.lower), geometry.upper))
 
 
-def _toward(geometry: JointGeometry, start: float, end: float, quantity: Quantity, size: float) -> float:
-    """Value from ``start`` toward ``end``: a fraction of the way, an angle or a distance."""
+def _toward(geometry: JointGeometry, start: float, end: float, quantity: Quantity, current: float | None = None) -> float:
+    """Value toward ``end``: a fraction of the way from ``start``, or an angle or distance from the
+    current value (an amount is an increment: "open it another 10 degrees")."""
     direction = 1.0 if end >= start else -1.0
+    base = start if current is None else current
     if quantity.fraction is not None:
         return start + quantity.fraction * (end - start)
     if geometry.type in ("revolute", "continuous") and quantity.angle_rad is not None:
-        return _clamp(geometry, start + direction * quantity.angle_rad)
+        return _clamp(geometry, base + direction * quantity.angle_rad)
     if geometry.type == "prismatic" and quantity.distance_m is not None:
-        return _clamp(geometry, start + direction * quantity.distance_m)
+        return _clamp(geometry, base + direction * quantity.distance_m)
     return end
 
 
@@ -85,13 +89,41 @@ def _turn(part: Part, quantity: Quantity, obj: ObjectGeometry) -> float:
     wanted = geometry.upper if sign > 0 else geometry.lower
     if abs(wanted - geometry.rest) <= LIMIT_EPS and quantity.sense is None:
         wanted = _other_limit(geometry) or wanted
-    return _toward(geometry, geometry.rest, wanted, quantity, obj.diag)
+    return _toward(geometry, geometry.rest, wanted, quantity)
 
 
-def goal_value(kind: str, particle: str | None, part: Part, quantity: Quantity, obj: ObjectGeometry) -> float | None:
-    """Target joint value of ``kind`` (open, close, press, ...) on ``part``; ``None`` = spin at a velocity."""
+def _directional(part: Part, quantity: Quantity, obj: ObjectGeometry) -> float | None:
+    """ "Swing the lever 90 degrees to the left": the way that moves the part's centre that way."""
+    vectors = {"left": -obj.right, "right": obj.right, "forward": obj.front, "backward": -obj.front}
     geometry = part.geometry
+    if quantity.direction not in vectors or geometry.type not in ("revolute", "continuous", "prismatic"):
+        return None
+    sign = directional_sign(geometry, vectors[quantity.direction])
+    if geometry.lower is None or geometry.upper is None:
+        angle = quantity.angle_rad if quantity.angle_rad is not None else DEFAULT_TURN_RAD
+        return geometry.rest + sign * angle
+    limit = geometry.upper if sign > 0 else geometry.lower
+    return _toward(geometry, geometry.rest, limit, quantity)
+
+
+def goal_value(
+    kind: str, particle: str | None, part: Part, quantity: Quantity, obj: ObjectGeometry, asset: ArticulatedAsset | None = None, current: float | None = None
+) -> float | None:
+    """Target joint value of ``kind`` (open, close, press, ...) on ``part``; ``None`` = spin at a velocity.
+
+    ``current`` is the joint's value when the motion starts (rest by default).
+    """
+    geometry = part.geometry
+    now = geometry.rest if current is None else current
     category = part.category
+    if quantity.orientation is not None and asset is not None and kind != "spin":
+        value = orientation_value(asset, geometry, quantity.orientation, opening=kind not in ("close", "push_in", "lower", "release"))
+        if value is not None:
+            return value
+    if kind in ("turn", "move", "open", "toggle", "operate", "press") and quantity.sense is None and category not in PUSH_CATEGORIES:
+        value = _directional(part, quantity, obj)
+        if value is not None and (kind != "open" or geometry.open_value is None):
+            return value
     if particle == "out" and kind in ("pull_out", "press", "move", "open"):
         kind = "pull_out"
     elif particle == "in" and kind in ("press", "move", "push_in", "pull_out"):
@@ -109,13 +141,13 @@ def goal_value(kind: str, particle: str | None, part: Part, quantity: Quantity, 
     closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
     opened = geometry.open_value
     if kind in ("open", "pull_out") and opened is not None and category not in PUSH_CATEGORIES:
-        return _toward(geometry, closed, opened, quantity, obj.diag)
+        return _toward(geometry, closed, opened, quantity, now)
     if kind in ("close", "push_in") and category not in PUSH_CATEGORIES and (opened is not None or kind == "close"):
         return closed
     if kind == "raise" and geometry.up_value is not None:
-        return _toward(geometry, geometry.rest, geometry.up_value, quantity, obj.diag)
+        return _toward(geometry, geometry.rest, geometry.up_value, quantity, now)
     if kind == "lower" and geometry.down_value is not None:
-        return _toward(geometry, geometry.rest, geometry.down_value, quantity, obj.diag)
+        return _toward(geometry, geometry.rest, geometry.down_value, quantity, now)
     if kind == "release":
         return geometry.rest
     if kind == "turn" or (geometry.type == "continuous" and kind in ("open", "close", "toggle", "press")):
@@ -124,7 +156,7 @@ def goal_value(kind: str, particle: str | None, part: Part, quantity: Quantity, 
         pressed = _pressed(geometry, category, particle)
         if pressed is None:
             return None
-        return _toward(geometry, geometry.rest, pressed, quantity, obj.diag)
+        return _toward(geometry, geometry.rest, pressed, quantity, now)
     return _other_limit(geometry)
 
 

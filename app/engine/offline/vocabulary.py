@@ -63,6 +63,9 @@ OBJECT_WORDS: tuple[str, ...] = (
     "refrigerator", "cabinet", "cupboard", "dresser", "wardrobe", "storage", "toaster", "laptop",
     "computer", "notebook", "stapler", "faucet", "tap", "washer", "dishwasher", "machine", "toilet",
     "kettle", "pot", "bottle", "chest", "crate", "table", "chair", "basket",
+    "briefcase", "nightstand", "dresser", "locker", "wheelie", "dumpster", "washer", "fridge", "freezer", "unit",
+    "appliance", "device", "cooker", "stove", "kettle", "sink", "luggage", "bag", "trolley", "stroller", "pram",
+    "wagon", "buggy", "robot", "vehicle", "truck", "bus", "cabinet", "shelf", "bookcase", "desk", "crib",
 )
 
 VerbKind = Literal["operate", "open", "close", "press", "release", "pull_out", "push_in", "turn", "raise", "lower", "toggle", "move", "unlatch", "spin"]
@@ -84,6 +87,9 @@ VERBS: dict[str, str] = {
     "translate": "move", "shift": "move", "nudge": "move", "wheel": "move",
     "operate": "operate", "use": "operate", "activate": "operate", "engage": "operate", "trigger": "operate",
     "work": "operate", "hold": "press",
+    "type": "press", "enter": "press", "punch": "press", "fall": "lower", "spring": "release", "snap": "release",
+    "bounce": "release", "return": "release", "swivel": "turn", "pivot": "turn", "screw": "turn",
+    "unscrew": "turn", "loosen": "turn", "tighten": "turn", "reopen": "open", "raise_up": "raise",
     "unlatch": "unlatch", "unlock": "unlatch", "unhook": "unlatch", "unbolt": "unlatch",
 }
 # verb forms -> lemma (regular -s/-ed/-ing endings are handled by ``lemma``)
@@ -104,7 +110,10 @@ IRREGULAR: dict[str, str] = {
     "stomping": "stomp", "cranking": "crank", "winding": "wind", "dialing": "dial", "dialling": "dial",
     "switching": "switch", "switched": "switch", "flicking": "flick", "shoving": "shove", "carrying": "carry",
     "carried": "carry", "driving": "drive", "tilting": "tilt", "tilted": "tilt", "picking": "pick",
-    "sliding": "slide", "pumping": "pump", "squeezing": "squeeze", "nudging": "nudge", "shifting": "shift",
+    "sliding": "slide", "pumping": "pump", "fell": "fall", "falling": "fall", "falls": "fall", "sprang": "spring",
+    "springs": "spring", "springing": "spring", "snaps": "snap", "snapped": "snap",
+    "typed": "type", "typing": "type", "entered": "enter", "entering": "enter", "returns": "return", "returned": "return",
+    "unscrewing": "unscrew", "unscrewed": "unscrew", "swivelling": "swivel", "swiveled": "swivel", "squeezing": "squeeze", "nudging": "nudge", "shifting": "shift",
 }
 
 # directional particles after a verb change its meaning ("pull out", "push in", "press down")

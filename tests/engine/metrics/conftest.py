@@ -3,32 +3,15 @@
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Any
 
 import pytest
+from support.metric_cases import SMOKE_CASES
 from support.primitive_assets import write_cabinet
 
 from app.engine.asset.loader import load_asset
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.metrics.annotation import Case
 from app.engine.metrics.geometry import AssetGeometry, build_geometry
-
-SMOKE_CASES = Path(__file__).resolve().parents[2] / "benchmark" / "data" / "smoke_cases.jsonl"
-
-
-def make_case(phases: list[dict[str, Any]], constraints: list[dict[str, Any]] | None = None, relations: list[dict[str, Any]] | None = None, **extra: Any) -> Case:
-    """A case on the cabinet (or ``asset=...``) from its annotation parts."""
-    document = {
-        "case_id": "test_case",
-        "asset": "cabinet",
-        "prompt": "test",
-        "motion_type": "independent",
-        "phases": phases,
-        "constraints": constraints or [],
-        "relations": relations or [],
-    }
-    document.update(extra)
-    return Case.model_validate(document)
 
 
 @pytest.fixture(scope="session")

@@ -16,7 +16,7 @@ def _brute_force(similarity: np.ndarray, allow_equal: list[bool]) -> tuple[int, 
     states, frames = similarity.shape
     best, choice = None, None
     for combo in itertools.product(range(frames), repeat=states):
-        ok = all(b > a or (allow_equal[k] and b == a) for k, (a, b) in enumerate(zip(combo[:-1], combo[1:], strict=True)))
+        ok = all(b > a or (allow_equal[k] and b == a) for k, (a, b) in enumerate(itertools.pairwise(combo)))
         if not ok:
             continue
         total = round(sum(similarity[k, t] for k, t in enumerate(combo)) * 1e9)

@@ -80,7 +80,9 @@ def test_hull_keeps_every_extreme_vertex():
 def _grid_link(spacing=1.0, count=6):
     axis = np.arange(count) * spacing
     samples = np.array([[x, y, z] for x in axis for y in axis for z in axis])
-    return LinkGeometry(name="grid", samples=samples, hull=hull_vertices(samples), local_diagonal=1.0, tree=cKDTree(samples))
+    return LinkGeometry(
+        name="grid", samples=samples, hull=hull_vertices(samples), local_diagonal=1.0, tree=cKDTree(samples)
+    )
 
 
 def test_chamfer_of_a_half_step_shift_is_half_a_step():
@@ -123,7 +125,7 @@ def test_occupancy_grid_is_32_cells_per_axis():
     line = np.stack([np.linspace(0.0, 1.0, 1000), np.zeros(1000), np.zeros(1000)], axis=1)
     # shifted by one cell: the two sets share 31 of their 32 occupied cells along x
     cell = (1.0 + 0.04) / 32 / 1.0
-    shifted = line + [cell * 1.0001, 0.0, 0.0]
+    shifted = line + np.array([cell * 1.0001, 0.0, 0.0])
     assert 0.9 < occupancy_f1(line, shifted) < 1.0
 
 

@@ -41,7 +41,9 @@ def test_perfect_prediction_scores_one_one_zero(safe):
 def test_half_way_prediction_scores_worse_on_every_2d_metric(safe):
     asset, _, truth = safe
     scores = _scores(safe, trajectory_sequence(asset, degraded_trajectories(asset, truth)["half_way"], "half"))
-    assert scores.values["P_MaskIoU"] < 1.0 and scores.values["P_BoundaryF1"] < 1.0 and scores.values["P_ContourCD"] > 0.0
+    assert (
+        scores.values["P_MaskIoU"] < 1.0 and scores.values["P_BoundaryF1"] < 1.0 and scores.values["P_ContourCD"] > 0.0
+    )
     door = [link for state in scores.states for link in state.links if link.link == "link_0"]
     assert door[-1].values["P_MaskIoU"] < 0.9  # the door ends half open
 

@@ -14,7 +14,7 @@ from app.engine.metrics.prediction import NodeMap, load_prediction
 from app.engine.metrics.results import METRICS_3D
 from app.engine.metrics.scoring import score_case, weighted
 from app.engine.metrics.sequence import empty_sequence, trajectory_sequence
-from benchmark.synthetic import with_values, degraded_trajectories, deleted_link_glb
+from benchmark.synthetic import degraded_trajectories, deleted_link_glb, with_values
 
 DEGRADATIONS = ("half_way", "wrong_joint", "reversed", "static", "missing_part")
 ORDER_BLIND = {("microwave_7119_open_door", "reversed"), ("microwave_7119_turn_tray", "reversed")}
@@ -42,17 +42,28 @@ def test_weighting_renormalises_only_when_a_group_is_empty():
     assert weighted([0.25, 0.75], [False, False]) == 0.5
 
 
-@pytest.mark.parametrize("case_id", ["safe_101593_open_door", "microwave_7119_open_door", "microwave_7119_turn_tray", "toaster_103477_press_lever", "storage_19179_lift"])
+@pytest.mark.parametrize(
+    "case_id",
+    [
+        "safe_101593_open_door",
+        "microwave_7119_open_door",
+        "microwave_7119_turn_tray",
+        "toaster_103477_press_lever",
+        "storage_19179_lift",
+    ],
+)
 def test_a_perfect_jsonl_prediction_scores_exactly_one(compiled, case_id, tmp_path):
     asset, geometry, truth = compiled[case_id]
     path = write_trajectory_jsonl(truth.trajectory, tmp_path / "trajectory.jsonl")
     scores = score_case(asset, geometry, truth, load_prediction(path, asset))
     assert scores.values == {"P_gIoU": 1.0, "P_PC": 1.0, "P_OccF1": 1.0}
-    assert all(link.values == {m: 1.0 for m in METRICS_3D} for state in scores.states for link in state.links)
+    assert all(link.values == dict.fromkeys(METRICS_3D, 1.0) for state in scores.states for link in state.links)
     assert scores.matched_frames is not None and not scores.padded
 
 
-@pytest.mark.parametrize("case_id", ["safe_101593_open_door", "microwave_7119_open_door", "toaster_103477_press_lever", "storage_19179_lift"])
+@pytest.mark.parametrize(
+    "case_id", ["safe_101593_open_door", "microwave_7119_open_door", "toaster_103477_press_lever", "storage_19179_lift"]
+)
 @pytest.mark.parametrize("degradation", DEGRADATIONS)
 def test_degraded_predictions_score_strictly_lower(compiled, case_id, degradation):
     asset, _, truth = compiled[case_id]
@@ -78,8 +89,15 @@ def test_reversed_order_needs_the_terminal_check_when_every_state_is_reached_at_
 
 def test_a_deleted_link_scores_worst_and_is_never_dropped(compiled, tmp_path):
     asset, geometry, truth = compiled["safe_101593_open_door"]
-    full = score_case(asset, geometry, truth, load_prediction(export_glb(asset, truth.trajectory, tmp_path / "a.glb"), asset))
-    cut = score_case(asset, geometry, truth, load_prediction(deleted_link_glb(asset, truth.trajectory, "link_0", tmp_path / "b.glb"), asset))
+    full = score_case(
+        asset, geometry, truth, load_prediction(export_glb(asset, truth.trajectory, tmp_path / "a.glb"), asset)
+    )
+    cut = score_case(
+        asset,
+        geometry,
+        truth,
+        load_prediction(deleted_link_glb(asset, truth.trajectory, "link_0", tmp_path / "b.glb"), asset),
+    )
     assert all(cut.values[m] < full.values[m] for m in METRICS_3D)
     door = [link for state in cut.states for link in state.links if link.link == "link_0"]
     assert len(door) == len(truth.key_states)
@@ -109,7 +127,9 @@ def test_glb_frames_are_brought_back_to_z_up(compiled, tmp_path):
     reference = trajectory_sequence(asset, truth.trajectory, "gt")
     for link in asset.visual_links:
         assert np.allclose(glb.poses[link], reference.poses[link], atol=1e-5)
-    as_is = load_prediction(export_glb(asset, truth.trajectory, tmp_path / "b.glb"), asset, node_map=NodeMap(up_axis="Z"))
+    as_is = load_prediction(
+        export_glb(asset, truth.trajectory, tmp_path / "b.glb"), asset, node_map=NodeMap(up_axis="Z")
+    )
     assert not np.allclose(as_is.poses["link_2"], reference.poses["link_2"], atol=1e-3)
 
 
@@ -120,7 +140,7 @@ def test_no_prediction_scores_worst(compiled):
 
 
 def test_predicted_values_are_clamped_to_the_limits(compiled, tmp_path):
-    asset, geometry, truth = compiled["microwave_7119_open_door"]
+    asset, _, truth = compiled["microwave_7119_open_door"]
     trajectory = degraded_trajectories(asset, truth)["half_way"]
     over = trajectory.q.copy()
     column = trajectory.joint_names.index("joint_0")

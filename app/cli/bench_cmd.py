@@ -1,0 +1,82 @@
+"""``artimo bench run`` and ``artimo bench evaluate``."""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+from typing import Any
+
+from app.cli.output import cache_dir, out
+
+
+def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
+    bench = commands.add_parser("bench", help="benchmark: animate annotated cases and score them")
+    sub = bench.add_subparsers(dest="bench_command", required=True, metavar="SUBCOMMAND")
+
+    run = sub.add_parser("run", help="animate every case with a provider, then evaluate")
+    _common(run)
+    run.add_argument("--out", type=Path, required=True, help="folder for OUT/<case_id>/ outputs, evaluation.json and report/")
+    run.add_argument("--provider", default="offline")
+    run.add_argument("--model", action="append", default=[], metavar="ROLE=NAME")
+    run.add_argument("--base-url", default=None)
+    run.set_defaults(handler=_run)
+
+    evaluate = sub.add_parser("evaluate", help="score existing predictions PRED/<case_id>/trajectory.jsonl (or animation.glb)")
+    _common(evaluate)
+    evaluate.add_argument("--pred", type=Path, required=True)
+    evaluate.add_argument("--out", type=Path, required=True, help="OUT.json")
+    evaluate.add_argument("--node-map", type=Path, default=None, help="JSON mapping GLB node names to links (third-party GLBs)")
+    evaluate.set_defaults(handler=_evaluate)
+
+
+def _common(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--cases", type=Path, required=True, help="JSON Lines, one case per line")
+    parser.add_argument("--assets", type=Path, required=True, help="folder holding the cases' asset folders")
+    parser.add_argument("--jobs", type=int, default=2, help="worker processes (results do not depend on it)")
+    parser.add_argument("--with-2d", action="store_true", help="also P_MaskIoU / P_BoundaryF1 / P_ContourCD (renders through EGL)")
+    parser.add_argument("--no-report", action="store_true", help="skip report.md, CSVs and charts")
+    parser.add_argument("--contact-sheets", action="store_true", help="render GT vs predicted key states per case into the report")
+
+
+def _print_summary(document: dict[str, Any]) -> None:
+    summary = document["summary"]
+    out(json.dumps({k: v for k, v in summary.items() if k != "settings"}, indent=2))
+
+
+def _report(args: argparse.Namespace, out_json: Path, pred: Path) -> None:
+    if args.no_report:
+        return
+    from benchmark.report import write_report
+
+    path = write_report(out_json, out_json.parent / "report", contact_sheets=args.contact_sheets, cases_file=args.cases,
+                        assets_root=args.assets, pred_root=pred, node_map=getattr(args, "node_map", None))
+    out(f"report     {path}")
+
+
+def _evaluate(args: argparse.Namespace) -> int:
+    from benchmark.runner import evaluate
+
+    document = evaluate(args.cases, args.assets, args.pred, args.out, node_map=args.node_map, with_2d=args.with_2d, jobs=args.jobs)
+    _print_summary(document)
+    out(f"scores     {args.out}")
+    _report(args, args.out, args.pred)
+    return 0
+
+
+def _run(args: argparse.Namespace) -> int:
+    from app.cli.animate_cmd import _provider_config
+    from app.engine.config import EngineConfig
+    from benchmark.run import animate_cases
+    from benchmark.runner import evaluate
+
+    config = EngineConfig(asset_cache_dir=cache_dir(args))
+    records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=_provider_config(args), config=config, jobs=args.jobs)
+    failed = [r for r in records if r["status"] != "ok"]
+    out(f"animated   {len(records) - len(failed)}/{len(records)} cases ({len(failed)} failed; see {args.out / 'runs.json'})")
+    out_json = args.out / "evaluation.json"
+    document = evaluate(args.cases, args.assets, args.out, out_json, with_2d=args.with_2d, jobs=args.jobs)
+    _print_summary(document)
+    out(f"scores     {out_json}")
+    _report(args, out_json, args.out)
+    return 0
