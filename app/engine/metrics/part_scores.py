@@ -108,8 +108,12 @@ def occupancy_f1(points_a: Points, points_b: Points, resolution: int = OCC_RESOL
     lo = both.min(axis=0)
     hi = both.max(axis=0)
     pad = OCC_PADDING * max(float((hi - lo).max()), OCC_MIN_EXTENT)
+    thin = (hi - lo) < 1e-6 * max(float((hi - lo).max()), OCC_MIN_EXTENT)
     lo = lo - pad
     size = np.maximum((hi + pad) - lo, OCC_MIN_EXTENT)
+    # a flat part lying exactly in an axis plane would sit on the middle cell boundary, where
+    # rounding noise splits it between two cells: centre it in a cell instead
+    lo = np.where(thin, lo - 0.5 * size / resolution, lo)
 
     def cells(points: Points) -> NDArray[np.bool_]:
         index = np.clip(np.floor((points - lo) / size * resolution).astype(np.int64), 0, resolution - 1)

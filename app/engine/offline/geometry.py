@@ -57,6 +57,8 @@ class JointGeometry:
     face_normal: FloatArray
     radius: float
     size: float
+    tip: FloatArray
+    """The moving part's point farthest from the joint axis at rest (the end a hand pushes)."""
 
     @property
     def span(self) -> float | None:
@@ -126,6 +128,14 @@ def _radius(asset: ArticulatedAsset, points: dict[str, FloatArray], joint: str, 
     return float(np.linalg.norm(radial, axis=1).max())
 
 
+def _tip(moved: FloatArray, pivot: FloatArray, axis: FloatArray, fallback: FloatArray) -> FloatArray:
+    if moved.shape[0] == 0:
+        return fallback
+    offset = moved - pivot
+    radial = offset - np.outer(offset @ axis, axis)
+    return moved[int(np.argmax(np.linalg.norm(radial, axis=1)))]
+
+
 def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> JointGeometry:
     spec = asset.joints[joint]
     moving = asset.moving_links(joint)
@@ -191,6 +201,7 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
         face_normal=face,
         radius=_radius(asset, points, joint, rest),
         size=size,
+        tip=_tip(moved, frame[:3, 3], axis_world, centroid),
     )
 
 

@@ -115,6 +115,22 @@ def _pick_line(candidates: list[Part], geometry: ObjectGeometry, index: int, axi
     return lines[index - 1] if index > 0 and index <= len(lines) else lines[-1]
 
 
+NAME_SIDES = {"front": {"front"}, "back": {"back", "rear"}, "left": {"left"}, "right": {"right"}, "top": {"top", "upper"}, "bottom": {"bottom", "lower"}}
+
+
+def _named_spatial(candidates: list[Part], words: tuple[str, ...], asset: ArticulatedAsset) -> list[Part]:
+    """Candidates whose own names say where they are ("wheel_front_left"): the object's own
+    left/right, which for a car differs from the left/right of someone facing it."""
+    if not words or len(candidates) < 2:
+        return []
+    chosen = candidates
+    for word in words:
+        if word not in NAME_SIDES:
+            return []
+        chosen = [p for p in chosen if link_words(asset, p.link, visuals=False) & NAME_SIDES[word]]
+    return chosen
+
+
 def _ordered(candidates: list[Part], geometry: ObjectGeometry) -> list[Part]:
     """Reading order: top to bottom when stacked, else left to right."""
     positions = np.array([_position(p, geometry) for p in candidates])
@@ -164,7 +180,10 @@ def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGe
         candidates = _pick_line(candidates, geometry, mention.row, axis=2)
     if mention.column is not None and len(candidates) > 1:
         candidates = _pick_line(candidates, geometry, mention.column, axis=1)
-    candidates = _apply_spatial(candidates, mention.spatial, geometry)
+    candidates = _named_spatial(candidates, mention.spatial, asset) or _apply_spatial(candidates, mention.spatial, geometry)
+    if mention.size is not None and len(candidates) > 1:
+        pick = max if mention.size == "large" else min
+        candidates = [pick(candidates, key=lambda p: p.geometry.size)]
     if mention.ordinal is not None and len(candidates) > 1:
         ordered = _ordered(candidates, geometry)
         index = mention.ordinal - 1 if mention.ordinal > 0 else len(ordered) - 1

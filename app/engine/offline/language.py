@@ -8,7 +8,7 @@ Handles sequences ("first A, then B", "A and then B", "after A-ing, B", "B after
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from app.engine.offline.quantities import Quantity, parse_quantity
 from app.engine.offline.vocabulary import OBJECT_WORDS as _OBJECT_WORDS
@@ -25,10 +25,13 @@ from app.engine.offline.vocabulary import (
 
 _SEQ_SPLIT = re.compile(
     r"\s*(?:[.;!?:]+(?=\s|$)\s*|,?\s*\band\s+then\b\s*|,?\s*\bthen\b\s*|,?\s*\bafterwards?\b,?\s*|,?\s*\bafter that\b,?\s*"
-    r"|,?\s*\bnext\b,?\s*|,?\s*\bfinally\b,?\s*|,?\s*\bsubsequently\b,?\s*|,?\s*\bonce (?:that is|it is|it's) done\b,?\s*)"
+    r"|,?\s*\bnext\b,?\s*|,?\s*\b(?:and\s+)?(?:after|once) (?:it|that|this)(?: is done)?\b,?\s*|,?\s*\bfinally\b,?\s*|,?\s*\bsubsequently\b,?\s*|,?\s*\bonce (?:that is|it is|it's) done\b,?\s*)"
 )
 _PARALLEL = re.compile(r"\s*,?\s*\b(?:while|whilst|at the same time as|simultaneously with|and at the same time|as soon as)\b\s*")
 _INTRANSITIVE = {
+    "drops shut": "close", "falls shut": "close", "slams shut": "close", "swings shut": "close", "snaps shut": "close",
+    "drops closed": "close", "falls closed": "close", "drops open": "open", "falls open": "open", "flips all the way back": "open",
+    "flips back": "open", "flips up": "open", "swings up": "open", "comes down": "lower",
     "opens": "open", "open": "open", "pops open": "open", "swings open": "open", "flips open": "open",
     "springs open": "open", "lifts": "open", "rises": "open", "comes up": "open", "pops up": "raise",
     "closes": "close", "shuts": "close", "slides out": "pull_out", "comes out": "pull_out",
@@ -54,6 +57,8 @@ class Mention:
     row: int | None = None
     column: int | None = None
     """1-based from the top / left; -1 = last (bottom / right); 0 = middle."""
+    size: str | None = None
+    """``large`` or ``small`` ("the large dial")."""
 
 
 @dataclass(frozen=True)
@@ -88,11 +93,17 @@ def normalize(prompt: str) -> str:
     text = re.sub(r"(\d)([a-z%])", r"\1 \2", text)
     text = re.sub(r"([+-])\s+([xyz])\b", r"\1\2", text)
     text = re.sub(r"[\"()\[\]]", " ", text)
-    text = re.sub(r"(\d+(?:\.\d+)?|one|two|three|four|five) and a half\b", lambda m: f"{_HALF.get(m.group(1), m.group(1))}.5", text)
+    for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
+        text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", lambda m, d=digits: f"{_HALF.get(m.group(1), m.group(1))}.{d}", text)
     text = _keypad(text)
+    # "..., without using the pedal": a part the user says not to use is not an instrument
+    text = re.sub(r",?\s*\b(?:without|but not|and not|never)\s+(?:using|pressing|touching|stepping on|moving|opening)?\s*(?:the|its|a|any)\s+[\w-]+", " manually", text)
     text = re.sub(r",?\s*the one (?:with|that|which|having)\b[^,;.]*", "", text)
     # "give the car a push" -> "push the car"
-    text = re.sub(r"\bgive\s+((?:it|them|the\s+[\w-]+(?:\s+[\w-]+)?|[\w-]+))\s+an?\s+(?:\w+\s+)?(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)\b", r"\2 \1", text)
+    text = re.sub(
+        r"\bgive\s+((?:it|them|the\s+[\w-]+(?:\s+[\w-]+)??|[\w-]+))\s+((?:a|an|half|quarter|one|two|three|full|\d[\w.]*)\s+(?:[\w.]+\s+){0,2}?)"
+        r"(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)s?\b",
+        _give, text)
     return re.sub(r"\s+", " ", text).strip()
 
 
@@ -111,6 +122,17 @@ def _keypad(text: str) -> str:
     items = [i.strip() for i in re.split(r"\s*(?:,|\bthen\b|\band\b)\s*", match.group(1)) if i.strip()]
     presses = ", then ".join(f"press the {item} key" for item in items)
     return text[: match.start()] + presses + text[match.end():]
+
+
+def _give(match: re.Match[str]) -> str:
+    """ "give the car a push" -> "push the car"; "give the dial half a turn" -> "turn the dial half a turn"."""
+    target, amount, verb = match.group(1), match.group(2), match.group(3)
+    measured = re.search(r"\b(?:half|quarter|full|one|two|three|\d)", amount)
+    return f"{verb} {target} {amount}{verb}" if measured else f"{verb} {target}"
+
+
+_NEGATED = re.compile(r"^(?:without|not|never|do not|don't|avoid|but not)\b")
+_PROGRESSIVE = re.compile(r"^(?:the|its|it)\b[^,]*\b(?:is|are)\s+(?:still\s+)?[a-z]+ing\b[^,]*$")
 
 
 def lemma(word: str) -> str:
@@ -161,6 +183,20 @@ def _lines(text: str) -> tuple[int | None, int | None, str]:
     return row, column, _LINE.sub(" ", text)
 
 
+_LARGE = frozenset({"large", "larger", "largest", "big", "bigger", "biggest", "main", "wide", "spoked"})
+_SMALL = frozenset({"small", "smaller", "smallest", "little", "tiny", "mini", "narrow"})
+
+
+def _size(window: str, head: str, text: str) -> str | None:
+    """Size qualifier of a mention; a dial named next to a handle is the smaller of the two."""
+    words = set(re.findall(r"[a-z]+", window))
+    if words & _LARGE:
+        return "large"
+    if words & _SMALL:
+        return "small"
+    return None
+
+
 def _qualifiers(window: str) -> tuple[tuple[str, ...], int | None, bool]:
     words = re.findall(r"[a-z0-9]+", window)
     spatial = tuple(dict.fromkeys(SPATIAL[w] for w in words if w in SPATIAL))
@@ -175,7 +211,8 @@ def _verb(text: str) -> tuple[str | None, str | None, int, int]:
     for match in re.finditer(r"[a-z]+", text):
         word = match.group(0)
         base = lemma(word)
-        if base in VERBS and previous not in ("the", "a", "an", "its", "of", "this", "that", "each", "every"):
+        hyphenated = text[match.end() : match.end() + 1] == "-" or text[max(0, match.start() - 1) : match.start()] == "-"
+        if base in VERBS and not hyphenated and previous not in ("the", "a", "an", "its", "of", "this", "that", "each", "every"):
             if base == "step" and not re.search(r"\bstep\s+on\b", text[match.start():]):
                 previous = word
                 continue
@@ -202,7 +239,10 @@ def _particle(text: str, verb_end: int) -> str | None:
     return None
 
 
-_INSTRUMENT_BEFORE = re.compile(r"\b(?:on|by|with|using|via|holding|gripping|from)\s+(?:its|their|the|his|her|both)?\s*(?:[a-z-]+\s+)?$")
+_INSTRUMENT_BEFORE = re.compile(
+    r"\b(?:on|by|with|using|via|holding|gripping|from|below|above|under|beneath|over|beside|behind|near|next to|left of|right of|against)"
+    r"\s+(?:its|their|the|his|her|both)?\s*(?:[a-z-]+\s+)?$"
+)
 _DESCRIPTIVE_AFTER = re.compile(r"^\s*(?:and all|included|attached|on top)\b")
 
 
@@ -230,6 +270,8 @@ def parse_clause(text: str) -> Clause:
     verb_end = max(verb_end, 0)
     row, column, plain = _lines(text)
     found = _find_mentions(plain, exclude_verbs={position} if verb in ("switch", "dial", "step", "wheel", "lever") else None)
+    # "the pedal bin", "the drawer unit": a part word naming the object it belongs to
+    found = [f for f in found if not ((after := re.match(r"\s+([a-z]+)", plain[f[1]:])) and after.group(1) in OBJECT_WORDS_SET)]
     mentions: list[Mention] = []
     boundary = verb_end
     for start, end, category, phrase in found:
@@ -238,7 +280,8 @@ def parse_clause(text: str) -> Clause:
         plural = collective or phrase.endswith("s") and not phrase.endswith(("ss", "us"))
         earlier_target = bool(mentions) or any(w in OBJECT_WORDS_SET for w in re.findall(r"[a-z]+", plain[verb_end:start]))
         instrument = earlier_target and bool(_INSTRUMENT_BEFORE.search(plain[max(boundary, verb_end):start]) or _DESCRIPTIVE_AFTER.match(plain[end:]))
-        mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, position=start, instrument=instrument, row=row, column=column)
+        size = _size(window, phrase, plain)
+        mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, position=start, instrument=instrument, row=row, column=column, size=size)
         if mentions and re.search(r"\b(?:of|on|in|at|from)\s+(?:the\s+)?$", plain[boundary:start]):
             previous = mentions.pop()
             mention = Mention(category=previous.category, head=previous.head, spatial=previous.spatial, ordinal=previous.ordinal, plural=previous.plural,
@@ -257,7 +300,8 @@ def parse_clause(text: str) -> Clause:
         noun = re.match(r"([a-z][a-z\- ]{1,40}?)(?:\s+(?:to|by|and|with|for|so|until|all|fully|halfway|slightly)\b|[,.]|$)", rest)
         if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES:
             unknown = noun.group(1).strip()
-    particle = _particle(plain, verb_end) if verb else None
+    scope = re.split(r"\b(?:with|while|without)\b", plain[verb_end:], maxsplit=1)[0] if verb else ""
+    particle = _particle(plain[:verb_end] + scope, verb_end) if verb else None
     return Clause(text=text.strip(), verb=verb, kind=kind, particle=particle, mentions=tuple(mentions), quantity=parse_quantity(text), unknown_object=unknown)
 
 
@@ -317,7 +361,8 @@ def _split_and(segment: str) -> list[str]:
     for part in parts:
         first = part.split()[0] if part.split() else ""
         modifier = lemma(first) == "let" and re.match(r"let (?:it|them|the \w+) (?:roll|coast|glide|slide|return|spring back)", part)
-        if merged and (lemma(first) not in VERBS or modifier):
+        own_verb = lemma(first) in VERBS or (first in ("the", "its", "it") and _verb(part)[0] is not None)
+        if merged and (not own_verb or modifier):
             merged[-1] = merged[-1] + " and " + part
         else:
             merged.append(part)
@@ -331,10 +376,24 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
     for segment in (s for s in _SEQ_SPLIT.split(text) if s and s.strip(" ,")):
         segment = _FILLER.sub("", segment.strip(" ,"))
         for ordered in _ordered(segment):
-            parallel_parts = [p for p in _PARALLEL.split(ordered) if p.strip(" ,")]
+            # "while the door is moving" describes an ongoing motion, not a new one
+            split = [p for p in _PARALLEL.split(ordered) if p.strip(" ,")]
+            parallel_parts = [p for p in split if len(split) == 1 or not _PROGRESSIVE.match(p.strip(" ,"))]
+            if len(parallel_parts) == 1 and _PARALLEL.search(ordered) and actions:
+                parallel_parts = ["", *parallel_parts]
             for index, part in enumerate(parallel_parts):
+                if not part:
+                    continue
                 for piece_index, piece in enumerate(_split_and(_FILLER.sub("", part.strip(" ,")))):
+                    if _NEGATED.match(piece.strip(" ,")):
+                        continue  # "without using the pedal", "don't touch the door"
                     action = _means_end(piece.strip(" ,"))
                     parallel = index > 0 and piece_index == 0
-                    actions.append(Action(clause=action.clause, means=action.means, parallel=parallel))
+                    clause = action.clause
+                    parts = [m for m in clause.mentions if m.category != "object"]
+                    if clause.kind is None and action.means is None and parts and actions:
+                        # "open the left door, then the right door": the verb carries over
+                        previous = actions[-1].clause
+                        clause = replace(clause, verb=previous.verb, kind=previous.kind, particle=previous.particle)
+                    actions.append(Action(clause=clause, means=action.means, parallel=parallel))
     return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

@@ -24,6 +24,7 @@ PANEL_RATIO = 0.35
 PEAK_TOLERANCE = 0.08
 """Local best matches this close to the global best count as candidates (about 20 degrees)."""
 UP = np.array([0.0, 0.0, 1.0])
+SNAP_RAD = math.radians(4.0)
 
 
 def _principal_axes(points: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -60,8 +61,16 @@ def orientation_value(asset: ArticulatedAsset, geometry: JointGeometry, orientat
     reference = geometry.closed_value if geometry.closed_value is not None else geometry.rest
     distance = [abs(float(values[i]) - reference) for i in clusters]
     farthest = orientation == "flat" and opening
-    chosen = clusters[int(np.argmax(distance) if farthest else np.argmin(distance))]
-    return float(values[chosen])
+    chosen = float(values[clusters[int(np.argmax(distance) if farthest else np.argmin(distance))]])
+    return _snap(geometry, chosen, reference)
+
+
+def _snap(geometry: JointGeometry, value: float, reference: float) -> float:
+    """Round to a whole quarter turn from the closed state when within SNAP_RAD (meshes are not perfectly flat)."""
+    quarters = round((value - reference) / (math.pi / 2))
+    snapped = reference + quarters * math.pi / 2
+    inside = geometry.lower is None or geometry.upper is None or geometry.lower - 1e-9 <= snapped <= geometry.upper + 1e-9
+    return snapped if abs(snapped - value) <= SNAP_RAD and inside else value
 
 
 def directional_sign(geometry: JointGeometry, direction: FloatArray) -> float:
@@ -69,5 +78,5 @@ def directional_sign(geometry: JointGeometry, direction: FloatArray) -> float:
     if geometry.type == "prismatic":
         along = float(geometry.axis_world @ direction)
     else:
-        along = float(np.cross(geometry.axis_world, geometry.home_centroid - geometry.pivot_world) @ direction)
+        along = float(np.cross(geometry.axis_world, geometry.tip - geometry.pivot_world) @ direction)
     return 1.0 if along >= 0 else -1.0

@@ -25,7 +25,7 @@ from app.engine.offline.grounding import Part, ground_mention, movable_parts, op
 from app.engine.offline.intent import Intent, JointGoal, Step
 from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
 from app.engine.offline.quantities import Quantity
-from app.engine.offline.targets import goal_value, spin_omega, target_expression
+from app.engine.offline.targets import effective_kind, goal_value, spin_omega, target_expression
 from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, UNLATCH_CATEGORIES
 
 logger = logging.getLogger(__name__)
@@ -34,7 +34,10 @@ BASE_KINDS = frozenset({"move", "press", "pull_out", "raise", "lower", "push_in"
 RELEASE_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock"})
 RELEASE_BUTTON_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice", "oven"})
 HINGED = ("door", "lid", "screen", "window")
+REACHED_TOLERANCE = 1e-6
 PRONOUNS = frozenset({"it", "them", "one"})
+EVERYTHING = re.compile(r"\b(?:everything|all (?!the way)\w+|all$|every (?:door|drawer|lid|part))")
+MANUAL = re.compile(r"\b(?:by hand|manually|with (?:my|your|one|a) hand|without (?:using |pressing |touching )?the)\b")
 OBJECT_VERBS = frozenset({"roll", "drag", "carry", "pick", "transport", "drive", "move", "lift", "shove", "wheel", "tow"})
 
 
@@ -52,6 +55,7 @@ class _Builder:
         self.last_parts: list[Part] = []
         self.last_controls: list[Part] = []
         self.head_of: dict[str, str] = {}
+        self.clause_text = ""
         self.implicit_effects_at: dict[str, int] = {}
         self.state: dict[str, float] = {}
 
@@ -70,8 +74,10 @@ class _Builder:
         if mention.category == "object":
             openable = openable_parts(self.parts)
             if kind in ("open", "close") and openable:
-                return openable if mention.plural or "all" in self.words or "everything" in self.words else openable[:1]
+                return openable if mention.plural or EVERYTHING.search(self.clause_text) else openable[:1]
             return []
+        if mention.size is None and mention.head.startswith("dial") and "handle" in self.words:
+            mention = replace(mention, size="small")  # a dial named beside a handle is the smaller of the two
         found = ground_mention(mention, self.asset, self.obj, self.parts, self.words)
         if len(found) > 1 and not mention.plural:
             return found
@@ -88,12 +94,19 @@ class _Builder:
         kind = clause.kind or "operate"
         value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, self.state.get(part.joint))
         returns = CONTROL_RETURN.get(part.category or "", "stays") if role == "control" else "stays"
+        if returns == "self_return" and (quantity.orientation is not None or (part.category == "handle" and not self._on_hinged(part))):
+            returns = "stays"  # a requested end state, or a carry handle (a bucket's), is kept
         if value is None:
             omega, _ = spin_omega(part, quantity, self.obj)
             return JointGoal(part.joint, part.link, part.category, role, omega=omega, returns="stays")  # type: ignore[arg-type]
         if part.geometry.type != "continuous" and abs(value - part.geometry.rest) < 1e-9 and kind not in ("close", "release", "push_in", "lower"):
             self.notes.append(f"{part.joint} is already at the requested state")
         return JointGoal(part.joint, part.link, part.category, role, value=value, expr=target_expression(part.geometry, value), returns=returns)  # type: ignore[arg-type]
+
+    def _on_hinged(self, part: Part) -> bool:
+        joint = self.asset.joints[part.joint]
+        parent = next((p for p in self.parts if p.link == joint.parent), None)
+        return parent is not None and parent.category in HINGED
 
     def goals(self, clause: Clause, role: str | None, quantity: Quantity, *, required: bool = True) -> list[JointGoal]:
         """Goals of the parts a clause names; names that match nothing are ignored when others match."""
@@ -106,14 +119,21 @@ class _Builder:
             if not found and mention.category != "object":
                 missing.append(mention.head)
             parts.extend(p for p in found if p not in parts)
-        if clause.kind == "release" and re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text):
-            parts = [p for p in parts if p.category not in HINGED]  # "release the door latch" does not move the door itself
+        if not parts and required:  # "unlatch the cupboard with the knob": the tool is what moves
+            for mention in clause.mentions:
+                if mention.instrument and mention.category != "object":
+                    parts.extend(p for p in self.ground(mention, clause.kind) if p not in parts)
+        if clause.kind == "unlatch" or (clause.kind == "release" and re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text)):
+            parts = [p for p in parts if p.category not in HINGED]  # "unlatch the door" does not move the door itself
         if not parts:
             if not required:
                 return []
             if missing:
                 raise self.refuse(f"the prompt mentions a {missing[0]}, but the asset has no such movable part")
-            if clause.unknown_object:
+            if len(self.parts) == 1 and clause.kind not in (None, "operate") and (clause.unknown_object or clause.mentions):
+                parts = list(self.parts)  # a name we do not know, on an object with one movable part
+                self.notes.append(f"read '{clause.text}' as acting on {self.parts[0].describe(self.asset)}, the only movable part")
+            elif clause.unknown_object:
                 raise self.refuse(f"cannot find '{clause.unknown_object}' on the asset")
         elif missing:
             self.notes.append(f"ignored '{', '.join(missing)}': no such movable part")
@@ -137,8 +157,8 @@ class _Builder:
         return clause.kind in BASE_KINDS or (clause.kind in ("open", "close") and not openable_parts(self.parts) and clause.particle in ("up", "down"))
 
     # --- causal knowledge ----------------------------------------------------------
-    def implicit_controls(self, effects: list[JointGoal], kind: str | None) -> list[JointGoal]:
-        if kind not in ("open", "raise") or not effects:
+    def implicit_controls(self, effects: list[JointGoal], kind: str | None, text: str = "") -> list[JointGoal]:
+        if kind not in ("open", "raise") or not effects or MANUAL.search(text):
             return []
         lids = [g for g in effects if g.category in HINGED]
         if not lids:
@@ -196,19 +216,31 @@ class _Builder:
     # --- steps ---------------------------------------------------------------------
     def add(self, action: Action) -> None:
         clause = action.clause
+        self.clause_text = clause.text
         quantity = replace(clause.quantity, speed_factor=clause.quantity.speed_factor if clause.quantity.speed_factor != 1.0 else self.parsed.quantity.speed_factor)
-        if clause.kind is None and not clause.mentions and action.means is None:
-            if clause.unknown_object or clause.text.strip():
-                self.notes.append(f"ignored '{clause.text}' (no action found)")
+        if clause.kind is None and action.means is None:
+            self.notes.append(f"ignored '{clause.text}' (no action found)")
+            named = [p for m in clause.mentions if m.category != "object" for p in ground_mention(m, self.asset, self.obj, self.parts, self.words)]
+            if named:  # "The top drawer is sticking out; push it shut."
+                self.last_parts = named
             return
         if self.is_base(clause) and action.means is None:
             goal = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
             self.steps.append(Step(primitive=clause.verb or "move", base=goal, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
             return
-        controls = self.goals(action.means, "control", action.means.quantity) if action.means else []
+        means = action.means
+        if means is not None and means.mentions and all(m.head in PRONOUNS for m in means.mentions):
+            # "take the lid off by lifting it 15 cm": the means says how far the goal's part moves
+            clause = replace(clause, quantity=means.quantity.merged(clause.quantity), particle=clause.particle or means.particle)
+            quantity = replace(clause.quantity, speed_factor=quantity.speed_factor)
+            means = None
+        if means is None:
+            means = self.instrument_means(clause)
+        kind = effective_kind(clause.kind, clause.particle)
+        controls = self.goals(means, "control", means.quantity) if means else []
         effects = self.goals(clause, "effect" if controls else None, quantity, required=not controls)
         if clause.kind == "release":
-            effects = self.release(effects)
+            effects = self.release(self.hold_until_released(effects))
         if not controls and self.refine_implicit(effects):
             return
         implied: list[JointGoal] = []
@@ -217,7 +249,7 @@ class _Builder:
         if not controls:
             direct_controls = [g for g in effects if g.role == "control"]
             effects = [g for g in effects if g.role != "control"]
-            implicit = self.implicit_controls(effects, clause.kind)
+            implicit = self.implicit_controls(effects, kind, clause.text)
             if implicit:
                 effects = [replace(g, role="effect") for g in effects]
             controls = direct_controls + implicit
@@ -225,24 +257,61 @@ class _Builder:
                 effects = implied = self.implicit_effects(direct_controls)
         if not controls and not effects:
             raise self.refuse(f"nothing in '{clause.text}' names a part to move")
+        controls, effects = self.drop_reached(controls), self.drop_reached(effects)
+        if not controls and not effects:
+            return
         for prerequisite in self.prerequisites(effects):
             self.steps.append(prerequisite)
-        if not controls:
-            controls = self.unlatch_controls(effects, clause.kind)
+        if not controls and not MANUAL.search(clause.text):
+            controls = self.unlatch_controls(effects, kind)
             effects = [replace(g, role="effect") for g in effects] if controls else effects
         controls = self.sustain(controls, effects)
         coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
-        primitive = (action.means.verb if action.means else clause.verb) or clause.kind or "move"
+        primitive = (means.verb if means else clause.verb) or clause.kind or "move"
         moved = effects or controls
         self.last_parts = [p for p in self.parts if any(g.joint == p.joint for g in moved)]
         self.last_controls = [p for p in self.parts if any(g.joint == p.joint for g in controls)]
         self.state.update({g.joint: g.value for g in moved if g.value is not None})
+        for control in controls:  # a control that springs back ends at rest
+            if control.returns == "self_return" and not control.sustains:
+                self.state[control.joint] = self.asset.joints[control.joint].rest
         for goal in implied:
             self.implicit_effects_at[goal.joint] = len(self.steps)
         self.steps.append(
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def instrument_means(self, clause: Clause) -> Clause | None:
+        """ "Open the microwave with its release button": a control named as the tool is the means."""
+        tools = [m for m in clause.mentions if m.instrument and m.category in CONTROL_CATEGORIES]
+        targets = [m for m in clause.mentions if not m.instrument]
+        if not tools or not targets:
+            return None
+        return Clause(text=clause.text, verb="operate", kind="operate", particle=None,
+                      mentions=tuple(replace(m, instrument=False) for m in tools), quantity=Quantity())
+
+    def drop_reached(self, goals: list[JointGoal]) -> list[JointGoal]:
+        """Goals already met by the state the earlier steps left (an elaboration repeating them)."""
+        kept = []
+        for goal in goals:
+            current = self.state.get(goal.joint)
+            if goal.value is not None and current is not None and abs(goal.value - current) < REACHED_TOLERANCE:
+                self.notes.append(f"{goal.joint} is already at {goal.value:.4g}")
+                continue
+            kept.append(goal)
+        return kept
+
+    def hold_until_released(self, goals: list[JointGoal]) -> list[JointGoal]:
+        """ "... and only then let the knob turn back": a control released explicitly later is held
+        until then instead of springing back on its own."""
+        for goal in goals:
+            for index, step in enumerate(self.steps):
+                held = [replace(c, returns="stays") if c.joint == goal.joint and c.returns == "self_return" else c for c in step.controls]
+                if held != list(step.controls):
+                    self.steps[index] = replace(step, controls=tuple(held))
+                    self.state[goal.joint] = next(c.value for c in held if c.joint == goal.joint and c.value is not None)
+        return goals
 
     def refine_implicit(self, effects: list[JointGoal]) -> bool:
         """"Press the pedal: the lid opens to vertical" - the second clause states the effect the

@@ -93,14 +93,14 @@ def _amount(text: str) -> float | None:
 
 
 def _turn_angle(text: str) -> float | None:
-    if re.search(r"\bunscrew|\bloosen", text) and not _TURNS.search(text):
-        return 2 * math.pi
     match = _TURNS.search(text)
     if match:
         return 2 * math.pi * float(match.group(1))
     for phrase, turns in _SPECIAL:
         if phrase in text:
             return 2 * math.pi * turns
+    if re.search(r"\bunscrew|\bloosen", text):
+        return 2 * math.pi
     return None
 
 
@@ -147,7 +147,7 @@ def parse_quantity(clause: str) -> Quantity:
         if re.search(r"\b" + word + r"\b", text):
             factor = value
             break
-    sense = None
+    sense = "ccw" if re.search(r"\b(?:unscrew|loosen)", text) else "cw" if re.search(r"\b(?:screw|tighten)", text) else None
     for word, value in sorted(ROTATION_SENSE.items(), key=lambda item: -len(item[0])):
         if re.search(r"(?<![\w-])" + re.escape(word) + r"(?![\w-])", text):
             sense = value
@@ -164,7 +164,7 @@ def parse_quantity(clause: str) -> Quantity:
         orientation = "flat"
     return Quantity(
         orientation=orientation,
-        fraction=_amount(text),
+        fraction=None if angle is not None else _amount(text),
         angle_rad=angle,
         distance_m=distance,
         omega_radps=_omega(text),

@@ -7,6 +7,7 @@ import math
 import numpy as np
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.offline.base_motion import wheel_rates
 from app.engine.offline.geometry import JointGeometry, ObjectGeometry
 from app.engine.offline.orientation import directional_sign, orientation_value
 from app.engine.offline.grounding import Part
@@ -96,14 +97,37 @@ def _directional(part: Part, quantity: Quantity, obj: ObjectGeometry) -> float |
     """ "Swing the lever 90 degrees to the left": the way that moves the part's centre that way."""
     vectors = {"left": -obj.right, "right": obj.right, "forward": obj.front, "backward": -obj.front}
     geometry = part.geometry
-    if quantity.direction not in vectors or geometry.type not in ("revolute", "continuous", "prismatic"):
+    if quantity.axis is not None:
+        wanted = np.asarray(quantity.axis, dtype=np.float64)
+    elif quantity.direction in vectors:
+        wanted = vectors[quantity.direction]
+    else:
         return None
-    sign = directional_sign(geometry, vectors[quantity.direction])
+    if geometry.type not in ("revolute", "continuous", "prismatic"):
+        return None
+    if part.category == "wheel" and quantity.direction in ("forward", "backward"):
+        rates = wheel_rates([part], wanted, obj)  # "the forward-rolling direction"
+        sign = 1.0 if not rates or rates[0][1] >= 0 else -1.0
+    else:
+        sign = directional_sign(geometry, wanted)
     if geometry.lower is None or geometry.upper is None:
         angle = quantity.angle_rad if quantity.angle_rad is not None else DEFAULT_TURN_RAD
         return geometry.rest + sign * angle
     limit = geometry.upper if sign > 0 else geometry.lower
     return _toward(geometry, geometry.rest, limit, quantity)
+
+
+def effective_kind(kind: str | None, particle: str | None) -> str | None:
+    """The verb's kind after its particle: "push ... in" = push_in, "swing ... shut" = close."""
+    if particle == "out" and kind in ("pull_out", "press", "move", "open"):
+        return "pull_out"
+    if particle == "in" and kind in ("press", "move", "push_in", "pull_out"):
+        return "push_in"
+    if particle == "open" and kind not in ("unlatch",):
+        return "open"
+    if particle == "shut":
+        return "close"
+    return kind
 
 
 def goal_value(
@@ -120,18 +144,11 @@ def goal_value(
         value = orientation_value(asset, geometry, quantity.orientation, opening=kind not in ("close", "push_in", "lower", "release"))
         if value is not None:
             return value
-    if kind in ("turn", "move", "open", "toggle", "operate", "press") and quantity.sense is None and category not in PUSH_CATEGORIES:
+    if kind in ("turn", "move", "open", "toggle", "operate", "press", "lower", "raise") and quantity.sense is None and not (category in PUSH_CATEGORIES and geometry.type == "prismatic"):
         value = _directional(part, quantity, obj)
         if value is not None and (kind != "open" or geometry.open_value is None):
             return value
-    if particle == "out" and kind in ("pull_out", "press", "move", "open"):
-        kind = "pull_out"
-    elif particle == "in" and kind in ("press", "move", "push_in", "pull_out"):
-        kind = "push_in"
-    elif particle == "open":
-        kind = "open"
-    elif particle == "shut":
-        kind = "close"
+    kind = effective_kind(kind, particle)
     if kind in ("operate", "unlatch"):
         kind = "turn" if category in ("knob", "handle", "latch") and geometry.type != "prismatic" else "press"
     if kind == "move":

@@ -87,7 +87,7 @@ VERBS: dict[str, str] = {
     "translate": "move", "shift": "move", "nudge": "move", "wheel": "move",
     "operate": "operate", "use": "operate", "activate": "operate", "engage": "operate", "trigger": "operate",
     "work": "operate", "hold": "press",
-    "type": "press", "enter": "press", "punch": "press", "fall": "lower", "spring": "release", "snap": "release",
+    "stamp": "press", "lay": "lower", "take": "pull_out", "remove": "pull_out", "run": "spin", "start": "spin", "type": "press", "enter": "press", "punch": "press", "fall": "lower", "spring": "release", "snap": "release",
     "bounce": "release", "return": "release", "swivel": "turn", "pivot": "turn", "screw": "turn",
     "unscrew": "turn", "loosen": "turn", "tighten": "turn", "reopen": "open", "raise_up": "raise",
     "unlatch": "unlatch", "unlock": "unlatch", "unhook": "unlatch", "unbolt": "unlatch",
@@ -112,7 +112,8 @@ IRREGULAR: dict[str, str] = {
     "carried": "carry", "driving": "drive", "tilting": "tilt", "tilted": "tilt", "picking": "pick",
     "sliding": "slide", "pumping": "pump", "fell": "fall", "falling": "fall", "falls": "fall", "sprang": "spring",
     "springs": "spring", "springing": "spring", "snaps": "snap", "snapped": "snap",
-    "typed": "type", "typing": "type", "entered": "enter", "entering": "enter", "returns": "return", "returned": "return",
+    "took": "take", "taking": "take", "taken": "take", "removing": "remove", "removed": "remove", "ran": "run", "running": "run",
+    "stamped": "stamp", "stamping": "stamp", "laid": "lay", "laying": "lay", "typed": "type", "typing": "type", "entered": "enter", "entering": "enter", "returns": "return", "returned": "return",
     "unscrewing": "unscrew", "unscrewed": "unscrew", "swivelling": "swivel", "swiveled": "swivel", "squeezing": "squeeze", "nudging": "nudge", "shifting": "shift",
 }
 
