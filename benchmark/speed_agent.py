@@ -20,6 +20,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from app.engine.errors import EngineError
 from app.engine.pipeline import PipelineRequest, run_pipeline
 from app.engine.providers.registry import make_roles
 from benchmark.cases import read_cases
@@ -56,7 +57,7 @@ def main() -> int:
             began = time.perf_counter()
             try:
                 run_pipeline(PipelineRequest(asset=args.assets / case.asset, prompt=case.prompt), roles=make_roles("offline"), out_dir=work / f"in{index}")
-            except Exception as exc:  # noqa: BLE001 - a refusal still counts its time
+            except EngineError as exc:  # a refusal still counts its time
                 sys.stdout.write(f"  {case.case_id}: {type(exc).__name__}\n")
             inside.append(time.perf_counter() - began)
     _line("artimo animate, whole process, cold cache", cold)

@@ -23,7 +23,7 @@ MIN_SEGMENT_S = 0.05
 def _value_at(trajectory: Trajectory | None, joint: str, time: float, rest: float) -> float:
     if trajectory is None:
         return rest
-    index = min(int(round(time * trajectory.fps)), trajectory.frame_count - 1)
+    index = min(round(time * trajectory.fps), trajectory.frame_count - 1)
     return float(trajectory.joint(joint)[index])
 
 

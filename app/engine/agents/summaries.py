@@ -16,7 +16,7 @@ DIGITS = 5
 
 
 def _frame(trajectory: Trajectory, time: float) -> int:
-    return min(max(int(round(time * trajectory.fps)), 0), trajectory.frame_count - 1)
+    return min(max(round(time * trajectory.fps), 0), trajectory.frame_count - 1)
 
 
 def _intended(intent: Intent, joint: str) -> str:

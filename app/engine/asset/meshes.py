@@ -50,7 +50,7 @@ class _ConfinedResolver(trimesh.resolvers.Resolver):
             raise FileNotFoundError(name)
         return candidate.read_bytes()
 
-    def write(self, name: str, data: bytes | str) -> None:  # pragma: no cover - never used
+    def write(self, name: str, data: bytes | str) -> None:  # noqa: ARG002 - trimesh's Resolver signature
         raise PermissionError("the asset resolver is read-only")
 
     def namespaced(self, namespace: str) -> _ConfinedResolver:

@@ -8,6 +8,7 @@ Velocity and spring controls are integrated on sub-steps of at most 1 ms.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -157,7 +158,7 @@ def _spring_parameters(control: SpringReturn, ctx: JointContext) -> tuple[float,
     return float(k), float(c), float(ctx.clamp(np.array(rest)))
 
 
-def _spring(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:
+def _spring(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
     control = timed.control
     assert isinstance(control, SpringReturn)
     k, c, rest = _spring_parameters(control, ctx)
@@ -193,7 +194,7 @@ def _critically_damped(piece: _Piece, timed: TimedControl, ctx: JointContext, re
     return ctx.clamp(at(piece.times)), float(ctx.clamp(at(np.array(piece.b))))
 
 
-def _hold(piece: _Piece, timed: TimedControl | None, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:
+def _hold(piece: _Piece, timed: TimedControl | None, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
     return np.full(piece.times.shape[0], piece.q_a), piece.q_a
 
 
@@ -225,7 +226,7 @@ def track_joint(ctx: JointContext, controls: list[TimedControl], times: FloatArr
     events.extend(overlap_notes(ctx, controls))
     cuts = sorted({0.0, *(c.t0 for c in controls), *(c.t1 for c in controls)})
     current = ctx.rest
-    for a, b in zip(cuts[:-1], cuts[1:], strict=True):
+    for a, b in itertools.pairwise(cuts):
         if b - a <= TIME_EPS:
             continue
         mask = (times >= a - TIME_EPS) & (times < b - TIME_EPS)

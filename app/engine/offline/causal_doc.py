@@ -16,7 +16,18 @@ from app.engine.offline.geometry import analyse
 from app.engine.offline.grounding import movable_parts
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Step
 from app.engine.offline.naming import link_category
-from app.engine.plan.causal import Action, Causal, CausalDocument, CausalSegment, Effects, JointTarget, LinkSemantic, ModeFlag, Semantics, TimeHint
+from app.engine.plan.causal import (
+    Action,
+    Causal,
+    CausalDocument,
+    CausalSegment,
+    Effects,
+    JointTarget,
+    LinkSemantic,
+    ModeFlag,
+    Semantics,
+    TimeHint,
+)
 from app.engine.plan.checks import joint_limits
 from app.engine.plan.expr import evaluate_expr
 
@@ -59,7 +70,7 @@ def _to(goal: JointGoal) -> str:
 
 
 def _segment_parts(step: Step, asset: ArticulatedAsset) -> tuple[Action, Effects]:
-    controls = [g for g in step.controls]
+    controls = list(step.controls)
     primary = step.target
     if step.base is not None:
         target = _root_link(asset)

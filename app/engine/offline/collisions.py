@@ -78,7 +78,7 @@ def _surface_points(asset: ArticulatedAsset, link: str) -> FloatArray:
 
 
 @lru_cache(maxsize=32)
-def _shapes(asset_id: int, asset: ArticulatedAsset) -> dict[str, _LinkShape]:
+def _shapes(asset: ArticulatedAsset) -> dict[str, _LinkShape]:
     shapes = {}
     for name in asset.visual_links:
         parts = sorted(asset.links[name].parts, key=lambda p: -float(np.prod(np.ptp(p.vertices, axis=0) + 1e-9)))
@@ -117,7 +117,7 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
     ``frames`` restricts the check to those frame indices (frame 0, the reference, is always
     added); by default up to ``MAX_FRAMES`` evenly spaced frames are checked.
     """
-    shapes = _shapes(id(asset), asset)
+    shapes = _shapes(asset)
     if frames is None:
         frames = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(int))
     else:

@@ -48,7 +48,7 @@ def _drivers(plan: Plan) -> dict[str, list[_Driver]]:
 
 
 def _frame_index(trajectory: Trajectory, time: float) -> int:
-    return min(max(int(round(time * trajectory.fps)), 0), trajectory.frame_count - 1)
+    return min(max(round(time * trajectory.fps), 0), trajectory.frame_count - 1)
 
 
 def _value(trajectory: Trajectory, joint: str, time: float) -> float:

@@ -17,8 +17,8 @@ import numpy as np
 
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.vocabulary import CONTROL_CATEGORIES, LABEL_CATEGORY
 from app.engine.offline.naming import link_category, tokens
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES, LABEL_CATEGORY
 from app.engine.types import FloatArray
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -231,7 +231,7 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
     return np.zeros(3)
 
 
-def _named_front(joints: dict[str, JointGeometry], asset: ArticulatedAsset) -> FloatArray:
+def _named_front(joints: dict[str, JointGeometry]) -> FloatArray:
     """Front from part names: parts named front/rear (a car's wheels) point along the object's front."""
     front, rear = [], []
     for geometry in joints.values():
@@ -249,7 +249,7 @@ def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
     """Horizontal unit vector the object faces: where doors, drawers and controls point
     (and where parts named "front" sit, e.g. a car's front wheels)."""
     points = _local_points(asset)
-    vote = _named_front(joints, asset)
+    vote = _named_front(joints)
     for geometry in joints.values():
         vote += _front_vote(geometry, center, asset, points)
     if np.linalg.norm(vote) < 1e-6:
@@ -262,7 +262,7 @@ def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
 
 
 @lru_cache(maxsize=64)
-def _cached(asset_id: int, asset: ArticulatedAsset) -> ObjectGeometry:
+def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     points = _local_points(asset)
     rest = link_poses(asset, {}, frames=1)
     everything = _posed(points, rest, asset.visual_links)
@@ -285,7 +285,7 @@ def _cached(asset_id: int, asset: ArticulatedAsset) -> ObjectGeometry:
 
 def analyse(asset: ArticulatedAsset) -> ObjectGeometry:
     """Geometric summary of ``asset`` (cached per asset object)."""
-    return _cached(id(asset), asset)
+    return _cached(asset)
 
 
 def object_category(asset: ArticulatedAsset) -> str | None:

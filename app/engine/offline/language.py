@@ -11,17 +11,16 @@ import re
 from dataclasses import dataclass, field, replace
 
 from app.engine.offline.quantities import Quantity, parse_quantity
-from app.engine.offline.vocabulary import OBJECT_WORDS as _OBJECT_WORDS
 from app.engine.offline.vocabulary import (
     CATEGORY_WORDS,
     COLLECTIVE,
     IRREGULAR,
-    OBJECT_WORDS,
     ORDINALS,
     PARTICLES,
     SPATIAL,
     VERBS,
 )
+from app.engine.offline.vocabulary import OBJECT_WORDS as _OBJECT_WORDS
 
 _SEQ_SPLIT = re.compile(
     r"\s*(?:[.;!?:]+(?=\s|$)\s*|,?\s*\band\s+then\b\s*|,?\s*\bthen\b\s*|,?\s*\bafterwards?\b,?\s*|,?\s*\bafter that\b,?\s*"
@@ -187,8 +186,8 @@ _LARGE = frozenset({"large", "larger", "largest", "big", "bigger", "biggest", "m
 _SMALL = frozenset({"small", "smaller", "smallest", "little", "tiny", "mini", "narrow"})
 
 
-def _size(window: str, head: str, text: str) -> str | None:
-    """Size qualifier of a mention; a dial named next to a handle is the smaller of the two."""
+def _size(window: str) -> str | None:
+    """Size qualifier of a mention ("the large dial")."""
     words = set(re.findall(r"[a-z]+", window))
     if words & _LARGE:
         return "large"
@@ -277,10 +276,10 @@ def parse_clause(text: str) -> Clause:
     for start, end, category, phrase in found:
         window = plain[boundary:start] if start >= boundary else plain[max(0, start - 25):start]
         spatial, ordinal, collective = _qualifiers(window)
-        plural = collective or phrase.endswith("s") and not phrase.endswith(("ss", "us"))
+        plural = collective or (phrase.endswith("s") and not phrase.endswith(("ss", "us")))
         earlier_target = bool(mentions) or any(w in OBJECT_WORDS_SET for w in re.findall(r"[a-z]+", plain[verb_end:start]))
         instrument = earlier_target and bool(_INSTRUMENT_BEFORE.search(plain[max(boundary, verb_end):start]) or _DESCRIPTIVE_AFTER.match(plain[end:]))
-        size = _size(window, phrase, plain)
+        size = _size(window)
         mention = Mention(category=category, head=phrase, spatial=spatial, ordinal=ordinal, plural=plural, position=start, instrument=instrument, row=row, column=column, size=size)
         if mentions and re.search(r"\b(?:of|on|in|at|from)\s+(?:the\s+)?$", plain[boundary:start]):
             previous = mentions.pop()

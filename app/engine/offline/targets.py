@@ -9,8 +9,8 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.offline.base_motion import wheel_rates
 from app.engine.offline.geometry import JointGeometry, ObjectGeometry
-from app.engine.offline.orientation import directional_sign, orientation_value
 from app.engine.offline.grounding import Part
+from app.engine.offline.orientation import directional_sign, orientation_value
 from app.engine.offline.quantities import Quantity
 
 DEFAULT_TURN_RAD = math.pi / 2

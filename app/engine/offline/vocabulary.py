@@ -110,7 +110,7 @@ IRREGULAR: dict[str, str] = {
     "stomping": "stomp", "cranking": "crank", "winding": "wind", "dialing": "dial", "dialling": "dial",
     "switching": "switch", "switched": "switch", "flicking": "flick", "shoving": "shove", "carrying": "carry",
     "carried": "carry", "driving": "drive", "tilting": "tilt", "tilted": "tilt", "picking": "pick",
-    "sliding": "slide", "pumping": "pump", "fell": "fall", "falling": "fall", "falls": "fall", "sprang": "spring",
+    "pumping": "pump", "fell": "fall", "falling": "fall", "falls": "fall", "sprang": "spring",
     "springs": "spring", "springing": "spring", "snaps": "snap", "snapped": "snap",
     "took": "take", "taking": "take", "taken": "take", "removing": "remove", "removed": "remove", "ran": "run", "running": "run",
     "stamped": "stamp", "stamping": "stamp", "laid": "lay", "laying": "lay", "typed": "type", "typing": "type", "entered": "enter", "entering": "enter", "returns": "return", "returned": "return",
