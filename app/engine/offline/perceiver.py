@@ -26,7 +26,7 @@ from app.engine.offline.intent import Intent, JointGoal, Step
 from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
 from app.engine.offline.quantities import Quantity
 from app.engine.offline.targets import effective_kind, goal_value, spin_omega, target_expression
-from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, UNLATCH_CATEGORIES
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, OBJECT_WORDS, UNLATCH_CATEGORIES
 
 logger = logging.getLogger(__name__)
 
@@ -103,6 +103,16 @@ class _Builder:
             self.notes.append(f"{part.joint} is already at the requested state")
         return JointGoal(part.joint, part.link, part.category, role, value=value, expr=target_expression(part.geometry, value), returns=returns)  # type: ignore[arg-type]
 
+    def _names_the_only_part(self, clause: Clause) -> bool:
+        """An unknown part name is read as the asset's only movable part only when the prompt ties it
+        to the object ("the stapler's staple magazine") and the verb fits that part; never a bare guess."""
+        part = self.parts[0]
+        kind = effective_kind(clause.kind, clause.particle)
+        possessed = bool(re.search(r"\b(?:" + "|".join(sorted(OBJECT_WORDS)) + r")(?:'s\b|\s+\w+\s+of\b)", clause.text)) or bool(
+            re.search(r"\b(?:of|on) (?:the|this) (?:" + "|".join(sorted(OBJECT_WORDS)) + r")\b", clause.text))
+        fits = kind in ("open", "close", "raise", "lower", "pull_out", "push_in") and part.geometry.open_value is not None
+        return possessed and fits
+
     def _on_hinged(self, part: Part) -> bool:
         joint = self.asset.joints[part.joint]
         parent = next((p for p in self.parts if p.link == joint.parent), None)
@@ -130,7 +140,7 @@ class _Builder:
                 return []
             if missing:
                 raise self.refuse(f"the prompt mentions a {missing[0]}, but the asset has no such movable part")
-            if len(self.parts) == 1 and clause.kind not in (None, "operate") and (clause.unknown_object or clause.mentions):
+            if len(self.parts) == 1 and self._names_the_only_part(clause):
                 parts = list(self.parts)  # a name we do not know, on an object with one movable part
                 self.notes.append(f"read '{clause.text}' as acting on {self.parts[0].describe(self.asset)}, the only movable part")
             elif clause.unknown_object:

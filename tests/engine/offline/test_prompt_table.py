@@ -208,6 +208,8 @@ ROWS: list[Row] = [
     R("oven_7138", "pull out the tray", refuse=True),
     R("refrigerator_11178", "open the drawer", refuse=True),
     R("bucket_100454", "xyzzy plugh", refuse=True),
+    R("stapler_103099", "spin the propeller", refuse=True),
+    R("laptop_10101", "open the flux capacitor", refuse=True),
 ]
 
 
