@@ -133,7 +133,10 @@ class ModelPlanner:
     async def plan(self, context: Context, perception: Perception) -> Planned:
         prompt = self.prompts.render("planner", prompt=context.prompt, joint_summary=_summary_text(context),
                                      scale_context=context.scale.model_dump_json(indent=2), causal=perception.causal.dumps())
-        plan, calls = await ask(self.chat, prompt, Plan, attempts=context.config.role_attempts, check=lambda p: validate_plan(p, context.asset))
+        def check(plan: Plan) -> None:
+            validate_plan(plan, context.asset)
+
+        plan, calls = await ask(self.chat, prompt, Plan, attempts=context.config.role_attempts, check=check)
         return Planned(plan=plan, calls=tuple(calls))
 
 

@@ -81,7 +81,7 @@ def _dump(asset: ArticulatedAsset) -> bytes:
     }
     arrays[HEADER] = np.frombuffer(json.dumps(header).encode(), dtype=np.uint8)
     buffer = io.BytesIO()
-    np.savez(buffer, **arrays)
+    np.savez(buffer, **arrays)  # type: ignore[arg-type]  # numpy's stub types the first keyword as allow_pickle
     return buffer.getvalue()
 
 

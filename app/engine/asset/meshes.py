@@ -216,6 +216,8 @@ def load_mesh_file(
         raise AssetError("mesh references a file outside the asset directory: " + "; ".join(escapes), file=relative, element=f"reference {names}")
     budget.warnings.extend(f"{relative}: referenced file {r}" for r in report)
     parts = []
+    if not isinstance(scene, trimesh.Scene):
+        raise AssetError("mesh did not load as a scene", file=relative)
     for index, (mesh, node_transform) in enumerate(_scene_meshes(scene)):
         budget.spend(len(mesh.faces), relative)
         material, uv = _material_of(mesh, fallback_rgba, f"{label}_{index}")

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
@@ -198,7 +199,7 @@ def _hold(piece: _Piece, timed: TimedControl | None, ctx: JointContext, events: 
     return np.full(piece.times.shape[0], piece.q_a), piece.q_a
 
 
-_HANDLERS = {
+_HANDLERS: dict[str, Callable[[_Piece, TimedControl, JointContext, list[str]], tuple[FloatArray, float]]] = {
     "joint_position": _position,
     "joint_velocity": _velocity,
     "spring_return": _spring,
@@ -233,7 +234,9 @@ def track_joint(ctx: JointContext, controls: list[TimedControl], times: FloatArr
         active = [c for c in controls if c.t0 <= a + TIME_EPS and c.t1 >= b - TIME_EPS]
         winner = active[-1] if active else None
         piece = _Piece(a=a, b=b, times=times[mask], q_a=current)
-        handler = _hold if winner is None else _HANDLERS[winner.control.mode]
-        values[mask], current = handler(piece, winner, ctx, events)  # type: ignore[operator]
+        if winner is None:
+            values[mask], current = _hold(piece, None, ctx, events)
+        else:
+            values[mask], current = _HANDLERS[winner.control.mode](piece, winner, ctx, events)
     values[times >= cuts[-1] - TIME_EPS] = current
     return values

@@ -7,6 +7,8 @@ schedules, so the planner role works from the contract alone.
 
 from __future__ import annotations
 
+from typing import Literal
+
 import numpy as np
 
 from app.engine.asset.model import ArticulatedAsset
@@ -82,7 +84,7 @@ def _segment_parts(step: Step, asset: ArticulatedAsset) -> tuple[Action, Effects
         modes = [ModeFlag(name="coast", set=True)] if step.base.coast else []
         return action, Effects(effect_links=[asset.joints[j].child for j, _ in step.base.wheels], joint_targets=targets, modes=modes, coupling_rules=rules)
     assert primary is not None
-    role = "control" if controls or primary.role == "control" else "direct_object"
+    role: Literal["control", "direct_object"] = "control" if controls or primary.role == "control" else "direct_object"
     links = [g.link for g in (controls or step.effects)]
     behaviour = controls[0].returns if controls else "stays"
     magnitude = None if primary.value is None else round(abs(primary.value - asset.joints[primary.joint].rest), 6)
@@ -140,7 +142,8 @@ def _step_of(action: Action | None, effects: Effects | None, asset: ArticulatedA
         wheels = tuple((t.joint, rates[t.joint]) for t in targets if t.joint in rates)
         return Step(primitive=action.primitive, base=BaseGoal(axis=axis, distance_m=float(distance), coast=coast, wheels=wheels), parallel=parallel)
     control_links = set(action.target_links or [action.target_link]) if action.target_role == "control" else set()
-    controls, moved = [], []
+    controls: list[JointGoal] = []
+    moved: list[JointGoal] = []
     for target in targets:
         joint = asset.joints[target.joint]
         is_control = any(joint.child == link or joint.child in asset.descendants(link) for link in control_links)

@@ -119,10 +119,10 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
     """
     shapes = _shapes(asset)
     if frames is None:
-        frames = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(int))
+        checked = np.unique(np.linspace(0, trajectory.frame_count - 1, min(MAX_FRAMES, trajectory.frame_count)).round().astype(np.int64))
     else:
-        frames = np.unique(np.clip(np.array([0, *frames], dtype=np.int64), 0, trajectory.frame_count - 1))
-    poses = link_poses(asset, {n: trajectory.joint(n)[frames] for n in trajectory.joint_names}, base_transforms(trajectory.base_translation[frames]))
+        checked = np.unique(np.clip(np.array([0, *frames], dtype=np.int64), 0, trajectory.frame_count - 1))
+    poses = link_poses(asset, {n: trajectory.joint(n)[checked] for n in trajectory.joint_names}, base_transforms(trajectory.base_translation[checked]))
     found: dict[tuple[str, str], Collision] = {}
     for mover in sorted(moving & set(shapes)):
         for other in asset.visual_links:
@@ -131,12 +131,12 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
             relative = np.linalg.inv(poses[other]) @ poses[mover]
             points = shapes[mover].points
             baseline = _inside_fraction(points @ relative[0, :3, :3].T + relative[0, :3, 3], shapes[other])
-            for index in range(1, frames.shape[0]):
+            for index in range(1, checked.shape[0]):
                 local = points @ relative[index, :3, :3].T + relative[index, :3, 3]
                 fraction = _inside_fraction(local, shapes[other]) - baseline
                 key = (min(mover, other), max(mover, other))
                 if fraction > NEW_PENETRATION and (key not in found or fraction > found[key].fraction):
-                    frame = int(frames[index])
+                    frame = int(checked[index])
                     found[key] = Collision(mover, other, frame, float(trajectory.times[frame]), round(fraction, 4))
     return sorted(found.values(), key=lambda c: (-c.fraction, c.moving_link, c.other_link))
 
@@ -160,7 +160,7 @@ def blocking_joints(asset: ArticulatedAsset, joint: str, target: float, state: d
     rotation = np.tile([0.0, 0.0, 0.0, 1.0], (sweep.shape[0], 1))
     path = Trajectory(fps=1, times=times, joint_names=names, q=q, base_translation=np.zeros((sweep.shape[0], 3)), base_rotation_xyzw=rotation)
     moving = set(asset.moving_links(joint))
-    owners = {}
+    owners: dict[str, str] = {}
     for other in asset.movable_joints:
         if other != joint and asset.joints[joint].child not in asset.moving_links(other):
             for link in asset.moving_links(other):

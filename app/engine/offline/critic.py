@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.engine.agents.critique import Critique, FixHint, Issue
+from app.engine.agents.critique import Critique, FixHint, Issue, Repairability
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.collisions import find_collisions
@@ -183,7 +183,7 @@ def critique(asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, intent
     return Critique(
         semantic_ok=not diagnosis.issues,
         detailed_reasoning="\n".join(diagnosis.notes) or "every intended motion reached its target; nothing else moved",
-        repairability={"param_fixable": not structural, "structural_fix_needed": structural, "preferred_repair_level": "structural" if structural else "param"},
+        repairability=Repairability(param_fixable=not structural, structural_fix_needed=structural, preferred_repair_level="structural" if structural else "param"),
         issues=diagnosis.issues,
         param_fix_hints=diagnosis.hints,
         confidence=1.0,

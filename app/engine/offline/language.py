@@ -8,6 +8,7 @@ Handles sequences ("first A, then B", "A and then B", "after A-ing, B", "B after
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
 from app.engine.offline.quantities import Quantity, parse_quantity
@@ -93,7 +94,7 @@ def normalize(prompt: str) -> str:
     text = re.sub(r"([+-])\s+([xyz])\b", r"\1\2", text)
     text = re.sub(r"[\"()\[\]]", " ", text)
     for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
-        text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", lambda m, d=digits: f"{_HALF.get(m.group(1), m.group(1))}.{d}", text)
+        text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", _and_a_fraction(digits), text)
     text = _keypad(text)
     # "..., without using the pedal": a part the user says not to use is not an instrument
     text = re.sub(r",?\s*\b(?:without|but not|and not|never)\s+(?:using|pressing|touching|stepping on|moving|opening)?\s*(?:the|its|a|any)\s+[\w-]+", " manually", text)
@@ -121,6 +122,15 @@ def _keypad(text: str) -> str:
     items = [i.strip() for i in re.split(r"\s*(?:,|\bthen\b|\band\b)\s*", match.group(1)) if i.strip()]
     presses = ", then ".join(f"press the {item} key" for item in items)
     return text[: match.start()] + presses + text[match.end():]
+
+
+def _and_a_fraction(digits: str) -> Callable[[re.Match[str]], str]:
+    """Replacement for "one and a half" -> "1.5" (``digits`` = the decimals)."""
+
+    def replace_match(match: re.Match[str]) -> str:
+        return f"{_HALF.get(match.group(1), match.group(1))}.{digits}"
+
+    return replace_match
 
 
 def _give(match: re.Match[str]) -> str:

@@ -235,8 +235,8 @@ class _Builder:
                 self.last_parts = named
             return
         if self.is_base(clause) and action.means is None:
-            goal = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
-            self.steps.append(Step(primitive=clause.verb or "move", base=goal, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
+            motion = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
+            self.steps.append(Step(primitive=clause.verb or "move", base=motion, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
             return
         means = action.means
         if means is not None and means.mentions and all(m.head in PRONOUNS for m in means.mentions):
@@ -285,8 +285,8 @@ class _Builder:
         for control in controls:  # a control that springs back ends at rest
             if control.returns == "self_return" and not control.sustains:
                 self.state[control.joint] = self.asset.joints[control.joint].rest
-        for goal in implied:
-            self.implicit_effects_at[goal.joint] = len(self.steps)
+        for implied_goal in implied:
+            self.implicit_effects_at[implied_goal.joint] = len(self.steps)
         self.steps.append(
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)

@@ -65,7 +65,9 @@ def _position(goal: JointGoal, target: float | None = None, expr: str | None = N
     control: dict[str, Any] = {"mode": "joint_position", "joint": goal.joint, "curve": "ease_in_out"}
     if expr is not None:
         control["q_target_expr"] = expr
-    control["q_target_rad"] = _q(goal.value if target is None else target)
+    value = goal.value if target is None else target
+    assert value is not None, "position controls need a target"
+    control["q_target_rad"] = _q(value)
     return control
 
 

@@ -143,19 +143,19 @@ def parse_quantity(clause: str) -> Quantity:
     elif re.search(r"\bfor a (?:second|moment)\b", text):
         duration = 1.0
     factor = 1.0
-    for word, value in SPEEDS.items():
+    for word, speed in SPEEDS.items():
         if re.search(r"\b" + word + r"\b", text):
-            factor = value
+            factor = speed
             break
-    sense = "ccw" if re.search(r"\b(?:unscrew|loosen)", text) else "cw" if re.search(r"\b(?:screw|tighten)", text) else None
-    for word, value in sorted(ROTATION_SENSE.items(), key=lambda item: -len(item[0])):
+    sense: str | None = "ccw" if re.search(r"\b(?:unscrew|loosen)", text) else "cw" if re.search(r"\b(?:screw|tighten)", text) else None
+    for word, turning in sorted(ROTATION_SENSE.items(), key=lambda item: -len(item[0])):
         if re.search(r"(?<![\w-])" + re.escape(word) + r"(?![\w-])", text):
-            sense = value
+            sense = turning
             break
-    direction = None
-    for word, value in DIRECTION_WORDS.items():
+    direction: str | None = None
+    for word, heading in DIRECTION_WORDS.items():
         if re.search(r"\b" + word + r"\b", text):
-            direction = value
+            direction = heading
             break
     orientation = None
     if re.search(r"\b(?:vertical|vertically|upright|straight up|stands? up|perpendicular)\b", text):

@@ -148,7 +148,7 @@ def goal_value(
         value = _directional(part, quantity, obj)
         if value is not None and (kind != "open" or geometry.open_value is None):
             return value
-    kind = effective_kind(kind, particle)
+    kind = effective_kind(kind, particle) or "operate"
     if kind in ("operate", "unlatch"):
         kind = "turn" if category in ("knob", "handle", "latch") and geometry.type != "prismatic" else "press"
     if kind == "move":

@@ -96,7 +96,7 @@ def resolve_target(control: JointPosition, asset: ArticulatedAsset) -> float:
 
 def _position_issues(control: JointPosition, asset: ArticulatedAsset, where: str, warnings: list[str]) -> list[str]:
     spec = asset.joints[control.joint]
-    issues = []
+    issues: list[str] = []
     try:
         expr_value = None if control.q_target_expr is None else evaluate_expr(control.q_target_expr, joint_limits(asset, control.joint))
     except ExpressionError as exc:

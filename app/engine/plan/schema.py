@@ -134,7 +134,8 @@ def _velocity_target_to_control(raw: Any) -> Any:
     """A ``joint_position`` whose target is ``velocity:<n>`` becomes ``joint_velocity`` (SPEC §2)."""
     if not isinstance(raw, dict) or raw.get("mode") != "joint_position":
         return raw
-    omega = parse_velocity(raw.get("q_target_expr")) if isinstance(raw.get("q_target_expr"), str) else None
+    target = raw.get("q_target_expr")
+    omega = parse_velocity(target) if isinstance(target, str) else None
     if omega is None:
         return raw
     return {"mode": "joint_velocity", "joint": raw.get("joint"), "omega_radps": omega}

@@ -79,7 +79,8 @@ async def post_json(
             retriable = not isinstance(exc, ProviderResponseError) or exc.context.get("retriable", False)
             if not retriable or attempt == attempts:
                 raise
-            wait = exc.context.get("retry_after_s") or min(MAX_BACKOFF_S, BACKOFF_S * 2 ** (attempt - 1))
+            hinted = exc.context.get("retry_after_s")
+            wait = float(hinted) if isinstance(hinted, int | float) else min(MAX_BACKOFF_S, BACKOFF_S * 2 ** (attempt - 1))
             logger.warning("%s (attempt %d/%d); retrying in %.1f s", exc, attempt, attempts, wait)
-            await sleep(float(wait))
+            await sleep(wait)
     raise ProviderError(f"{provider}: no attempts made")  # pragma: no cover - attempts >= 1
