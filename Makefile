@@ -8,6 +8,7 @@ PIP    := $(VENV)/bin/pip
 EXTRAS ?= render,models,bench,service,dev
 VALIDATOR_DIR := tests/tools/gltf_validator
 DEMO_OUT ?= out/demo
+DEMO_CLI_OUT ?= out/demo-cli
 PYTEST_ARGS ?=
 
 export PYOPENGL_PLATFORM ?= egl
@@ -15,7 +16,7 @@ export PYOPENGL_PLATFORM ?= egl
 .PHONY: setup system-deps venv validator services demo test lint clean help
 
 help:
-	@echo "make demo   - set up everything, run the main job on the embedded default"
+	@echo "make demo   - set up everything, animate an example with the CLI, then submit it to the embedded service (artimo serve) and download the GLB"
 	@echo "make test   - set up everything, run the whole test suite"
 	@echo "make lint   - ruff + import contracts"
 
@@ -42,8 +43,9 @@ services:
 	@.ci/services.sh
 
 demo: setup
-	$(VENV)/bin/artimo animate examples/pedal_bin --prompt "press the pedal to open the bin" --out $(DEMO_OUT)
-	$(PY) -m tests.support.gltf_validator $(DEMO_OUT)/animation.glb
+	$(VENV)/bin/artimo animate examples/pedal_bin --prompt "press the pedal to open the bin" --out $(DEMO_CLI_OUT)
+	$(PY) -m tests.support.gltf_validator $(DEMO_CLI_OUT)/animation.glb
+	VENV=$(VENV) DEMO_OUT=$(DEMO_OUT) .ci/demo-service.sh
 
 test: setup services
 	$(PY) -m pytest -q $(PYTEST_ARGS)

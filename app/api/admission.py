@@ -1,0 +1,34 @@
+"""Admission control: at most ``max_in_flight`` HTTP requests inside the app per process.
+
+Why: a sync route hops between threadpool threads (a dependency, the endpoint, the
+response validation) while its database session keeps a pooled connection checked out.
+With more requests in flight than pooled connections, every threadpool thread can end up
+waiting for a connection held by a request that itself waits for a thread: a deadlock that
+only the pool timeout (30 s) breaks, failing every request of the burst. Keeping the
+requests in flight at or below the pool's capacity means a checkout never waits; the
+others queue here, in the event loop, holding neither a thread nor a connection.
+"""
+
+from __future__ import annotations
+
+import asyncio
+
+from starlette.types import ASGIApp, Receive, Scope, Send
+
+
+class AdmissionMiddleware:
+    """Pure ASGI middleware: a semaphore around every HTTP request (lifespan passes through)."""
+
+    def __init__(self, app: ASGIApp, max_in_flight: int) -> None:
+        self.app = app
+        self.max_in_flight = max(1, int(max_in_flight))
+        self._slots: asyncio.Semaphore | None = None
+
+    async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
+        if scope["type"] != "http":
+            await self.app(scope, receive, send)
+            return
+        if self._slots is None:  # created inside the server's event loop
+            self._slots = asyncio.Semaphore(self.max_in_flight)
+        async with self._slots:
+            await self.app(scope, receive, send)

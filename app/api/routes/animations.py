@@ -1,0 +1,122 @@
+"""``/v1/animations``: submit a job (202), read it, list them, cancel it."""
+
+from __future__ import annotations
+
+import logging
+import uuid
+from functools import partial
+from typing import Annotated
+
+from fastapi import APIRouter, Query, Request, Response, status
+from fastapi.concurrency import run_in_threadpool
+from sqlalchemy.orm import Session
+
+from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep
+from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
+from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder, validate_fields
+from app.api.intake import asset_by_ref, store_upload
+from app.api.presenters import job_public, job_url
+from app.api.queue import Enqueuer, dispatch_jobs
+from app.crud import jobs as crud_jobs
+from app.db.models import ApiClient, Asset, Job, JobStatus
+from app.schemas.jobs import MAX_PROMPT_CHARS, JobAccepted, JobCreate, JobPublic, JobsPublic
+
+logger = logging.getLogger(__name__)
+
+router = APIRouter(prefix="/v1/animations", tags=["animations"])
+
+MAX_OFFSET = 1_000_000_000
+JOB_FIELDS = ("prompt", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds")
+_TEXT = {"type": "string"}
+SUBMIT_BODY = multipart_openapi(
+    {
+        "asset": ASSET_FILES_SCHEMA,
+        "asset_ref": {"type": "string", "maxLength": 100, "description": "instead of files: an asset id or sha256 from POST /v1/assets"},
+        "prompt": {"type": "string", "minLength": 1, "maxLength": MAX_PROMPT_CHARS},
+        "provider": {**_TEXT, "description": "offline (default), openai or gemini"},
+        "perceiver_model": _TEXT, "planner_model": _TEXT, "critic_model": _TEXT,
+        "fps": {"type": "integer", "enum": [24, 30]},
+        "max_critic_rounds": {"type": "integer", "minimum": 0, "maximum": 3},
+    },
+    ["prompt"],
+)
+ERRORS = error_responses(401, 404, 429)
+
+
+def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer) -> Job:
+    job = crud_jobs.create_job(session, client=client, asset=asset, prompt=spec.prompt, options=spec.stored())
+    dispatch_jobs(session, [job], enqueue)
+    return job
+
+
+def _job_or_404(session: Session, job_id: uuid.UUID, client: ApiClient) -> Job:
+    job = crud_jobs.get_job_for_client(session, job_id=job_id, client=client)
+    if job is None:
+        raise NotFound(f"no animation job {job_id}")
+    return job
+
+
+@router.post(
+    "",
+    status_code=status.HTTP_202_ACCEPTED,
+    response_model=JobAccepted,
+    responses=error_responses(401, 404, 413, 415, 422, 429, 503),
+    openapi_extra=SUBMIT_BODY,
+)
+async def create_animation(
+    request: Request, response: Response, client: ClientDep, session: SessionDep, settings: SettingsDep,
+    storage: StorageDep, enqueue: EnqueuerDep,
+) -> JobAccepted:
+    """Submit an asset (file(s) or ``asset_ref``) and a prompt; poll the returned ``url``."""
+    async with upload_folder(settings) as folder:
+        form = await read_form(request, settings, folder)
+        spec = validate_fields(JobCreate, form, JOB_FIELDS)
+        files, ref = form.files_of("asset"), (form.value("asset_ref") or "").strip()
+        if files and ref:
+            raise Unprocessable("send either asset file(s) or 'asset_ref', not both")
+        if ref:
+            asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref))
+        else:
+            asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client)
+    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue)
+    url = job_url(request, job.id)
+    response.headers["Location"] = url
+    logger.info("job %s queued for client %s", job.id, client.name)
+    return JobAccepted(id=job.id, url=url, status=JobStatus(job.status))
+
+
+@router.get("", response_model=JobsPublic, responses=ERRORS)
+def list_animations(
+    request: Request, client: ClientDep, session: SessionDep,
+    limit: Annotated[int, Query(ge=1, le=crud_jobs.MAX_PAGE_SIZE)] = 50,
+    offset: Annotated[int, Query(ge=0, le=MAX_OFFSET)] = 0,
+    status_filter: Annotated[JobStatus | None, Query(alias="status")] = None,
+) -> JobsPublic:
+    """This client's jobs, newest first."""
+    jobs, count = crud_jobs.list_jobs(session, client=client, limit=limit, offset=offset, status=status_filter)
+    return JobsPublic(data=[job_public(request, job) for job in jobs], count=count, limit=limit, offset=offset)
+
+
+@router.get("/{job_id}", response_model=JobPublic, responses=ERRORS)
+def get_animation(request: Request, job_id: uuid.UUID, client: ClientDep, session: SessionDep) -> JobPublic:
+    """Status, stage, progress, timings, error and output links of one job."""
+    return job_public(request, _job_or_404(session, job_id, client))
+
+
+@router.delete(
+    "/{job_id}",
+    response_model=JobPublic,
+    responses={**error_responses(401, 404, 409, 429),
+               202: {"model": JobPublic, "description": "running: it stops at its next stage"}},
+)
+def cancel_animation(request: Request, response: Response, job_id: uuid.UUID, client: ClientDep, session: SessionDep) -> JobPublic:
+    """Cancel: a queued job at once (200), a running one at its next stage (202)."""
+    job = _job_or_404(session, job_id, client)
+    if job.status in (JobStatus.succeeded, JobStatus.failed):
+        raise Conflict(f"job {job_id} already {job.status}; nothing to cancel", status=str(job.status))
+    crud_jobs.request_cancel(session, job=job)
+    if job.status == JobStatus.running:
+        response.status_code = status.HTTP_202_ACCEPTED
+    elif job.status in (JobStatus.succeeded, JobStatus.failed):  # it finished while we asked
+        raise Conflict(f"job {job_id} already {job.status}; nothing to cancel", status=str(job.status))
+    return job_public(request, job)

@@ -1,0 +1,44 @@
+"""``/v1/assets``: upload an asset once, reuse it by id or sha256."""
+
+from __future__ import annotations
+
+from fastapi import APIRouter, Path, Request, Response, status
+
+from app.api.deps import ClientDep, SessionDep, SettingsDep, StorageDep
+from app.api.errors import error_responses
+from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder
+from app.api.intake import asset_by_ref, store_upload
+from app.api.presenters import asset_public
+from app.schemas.assets import AssetPublic
+
+router = APIRouter(prefix="/v1/assets", tags=["assets"])
+
+ERRORS = error_responses(401, 413, 415, 422, 429)
+
+
+@router.post(
+    "",
+    status_code=status.HTTP_201_CREATED,
+    response_model=AssetPublic,
+    responses={200: {"model": AssetPublic, "description": "identical content was already stored"}, **ERRORS},
+    openapi_extra=multipart_openapi({"asset": ASSET_FILES_SCHEMA}, ["asset"]),
+)
+async def upload_asset(
+    request: Request, response: Response, client: ClientDep, session: SessionDep, settings: SettingsDep, storage: StorageDep
+) -> AssetPublic:
+    """Store and validate an asset (201), or find identical content already stored (200)."""
+    async with upload_folder(settings) as folder:
+        form = await read_form(request, settings, folder)
+        asset, created = await store_upload(form.files_of("asset"), work=folder, session=session, storage=storage, client=client)
+    if not created:
+        response.status_code = status.HTTP_200_OK
+    return asset_public(request, asset, created=created)
+
+
+@router.get("/{ref}", response_model=AssetPublic, responses=error_responses(401, 404, 429))
+def get_asset(
+    request: Request, client: ClientDep, session: SessionDep,
+    ref: str = Path(min_length=1, max_length=100, description="asset id or sha256"),
+) -> AssetPublic:
+    """An asset this client uploaded."""
+    return asset_public(request, asset_by_ref(session, client=client, ref=ref))

@@ -1,0 +1,94 @@
+"""Service settings: the only place that reads the environment (and ``.env``)."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+from pydantic import Field, SecretStr
+from pydantic_settings import BaseSettings, SettingsConfigDict
+
+from app.engine.config import EngineConfig
+
+DEFAULT_DATA_DIR = Path.home() / ".local" / "share" / "artimo"
+
+
+class Settings(BaseSettings):
+    """Environment variables (names in capitals) with documented defaults.
+
+    Embedded default: SQLite and a SQLite-backed Celery broker under ``ARTIMO_DATA_DIR``.
+    Production: set ``DATABASE_URL`` (Postgres) and ``REDIS_URL`` (broker).
+    """
+
+    model_config = SettingsConfigDict(env_file=".env", env_file_encoding="utf-8", extra="ignore")
+
+    artimo_data_dir: Path = DEFAULT_DATA_DIR
+    database_url: str | None = None
+    """SQLAlchemy URL; default ``sqlite:///$ARTIMO_DATA_DIR/artimo.db``."""
+    redis_url: str | None = None
+    """When set, Celery uses Redis as broker; otherwise kombu's SQLAlchemy transport on SQLite."""
+    artimo_api_key: SecretStr | None = None
+    """An accepted API key (so the embedded service works out of the box)."""
+    artimo_storage_dir: Path | None = None
+    """Artifacts and uploads; default ``$ARTIMO_DATA_DIR/storage``."""
+
+    max_upload_bytes: int = Field(default=256 * 1024 * 1024, gt=0)
+    max_upload_files: int = Field(default=2000, gt=0)
+    rate_limit_per_minute: int = Field(default=120, gt=0)
+    """Requests per API key per minute (health routes are exempt)."""
+    job_soft_time_limit_s: int = Field(default=900, gt=0)
+    job_hard_time_limit_s: int = Field(default=960, gt=0)
+    max_batch_cases: int = Field(default=500, gt=0)
+    api_max_in_flight: int = Field(default=8, ge=1)
+    """HTTP requests inside one API process at once (others wait in the event loop); must stay <= the
+    DB pool's capacity (5+10 SQLite, 10+20 Postgres) or sync routes can deadlock (see app/api/admission.py).
+    8 measured best for latency on 2 cores (benchmark/load_service.py)."""
+    celery_queue: str = "artimo"
+    """Celery queue the API sends jobs to and the workers consume."""
+    job_max_attempts: int = Field(default=3, ge=1)
+    """Deliveries of one job (worker lost, time limit kill) before it is failed for good."""
+    broker_visibility_timeout_s: int | None = Field(default=None, gt=0)
+    """Redis: an unacknowledged job is redelivered after this; default hard time limit + 120 s."""
+    requeue_queued_after_s: int = Field(default=120, ge=0)
+    """On (re)connection a worker re-sends jobs still queued after this long (their message may be lost)."""
+    job_stage_delay_s: float = Field(default=0.0, ge=0, le=60)
+    """Pause after each pipeline stage (tests/demos: makes progress, cancel and kill observable)."""
+
+    log_level: str = "INFO"
+    """Level of the service's root logger (API, workers)."""
+
+    openai_api_key: SecretStr | None = None
+    openai_base_url: str = "https://api.openai.com/v1"
+    gemini_api_key: SecretStr | None = None
+    gemini_base_url: str = "https://generativelanguage.googleapis.com/v1beta"
+    default_provider: str = "offline"
+
+    @property
+    def data_dir(self) -> Path:
+        return self.artimo_data_dir.expanduser()
+
+    @property
+    def sqlalchemy_url(self) -> str:
+        return self.database_url or f"sqlite:///{self.data_dir / 'artimo.db'}"
+
+    @property
+    def broker_url(self) -> str:
+        return self.redis_url or f"sqla+sqlite:///{self.data_dir / 'broker.db'}"
+
+    @property
+    def visibility_timeout_s(self) -> int:
+        return self.broker_visibility_timeout_s or self.job_hard_time_limit_s + 120
+
+    @property
+    def storage_dir(self) -> Path:
+        return (self.artimo_storage_dir or self.data_dir / "storage").expanduser()
+
+    def engine_config(self) -> EngineConfig:
+        """The engine's tunables for one job (API keys never reach the engine this way)."""
+        return EngineConfig(asset_cache_dir=self.data_dir / "asset-cache")
+
+
+@lru_cache(maxsize=1)
+def get_settings() -> Settings:
+    """Cached settings; tests clear the cache (``get_settings.cache_clear()``) after changing the environment."""
+    return Settings()

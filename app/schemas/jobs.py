@@ -1,0 +1,105 @@
+"""Animation job requests and responses."""
+
+from __future__ import annotations
+
+import uuid
+from typing import Any, Literal
+
+from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+from app.db.models import JobStatus
+from app.schemas.common import Name, Text, UtcDatetime
+
+MAX_PROMPT_CHARS = 2000
+MAX_MODEL_NAME_CHARS = 200
+
+
+class JobOptions(BaseModel):
+    """How to run a job (all optional; the server's defaults apply)."""
+
+    model_config = ConfigDict(extra="forbid")
+
+    provider: Name | None = Field(default=None, max_length=40, description="offline (default), openai or gemini")
+    perceiver_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
+    planner_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
+    critic_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
+    fps: Literal[24, 30] | None = None
+    max_critic_rounds: int | None = Field(default=None, ge=0, le=3)
+
+    @field_validator("provider")
+    @classmethod
+    def _known_provider(cls, value: str | None) -> str | None:
+        from app.engine.providers.registry import available_providers
+
+        if value is not None and value not in available_providers():
+            raise ValueError(f"unknown provider {value!r} (available: {', '.join(available_providers())})")
+        return value
+
+    def stored(self) -> dict[str, Any]:
+        """The options saved with the job (unset ones left out)."""
+        return self.model_dump(exclude_none=True)
+
+
+class JobCreate(JobOptions):
+    """The text fields of ``POST /v1/animations`` (the asset comes as file(s) or ``asset_ref``)."""
+
+    prompt: Text = Field(min_length=1, max_length=MAX_PROMPT_CHARS)
+
+    @field_validator("prompt")
+    @classmethod
+    def _not_blank(cls, value: str) -> str:
+        if not value.strip():
+            raise ValueError("the prompt is blank")
+        return value.strip()
+
+    def stored(self) -> dict[str, Any]:
+        return self.model_dump(exclude_none=True, exclude={"prompt"})
+
+
+class JobAccepted(BaseModel):
+    """Answer of ``POST /v1/animations`` (202): poll ``url``."""
+
+    id: uuid.UUID
+    url: str
+    status: JobStatus
+
+
+class ArtifactPublic(BaseModel):
+    name: str
+    url: str
+    content_type: str
+    size_bytes: int
+    sha256: str
+
+
+class JobPublic(BaseModel):
+    id: uuid.UUID
+    url: str
+    status: JobStatus
+    stage: str | None
+    progress: int = Field(ge=0, le=100)
+    cancel_requested: bool
+    prompt: str
+    options: dict[str, Any]
+    asset_id: uuid.UUID
+    batch_id: uuid.UUID | None
+    case_id: str | None
+    error: str | None
+    """The engine's message when the job failed (e.g. the grounding error listing movable parts)."""
+    error_kind: str | None
+    """The error class (``AssetError``, ``GroundingError``, ``TimeLimitExceeded``, ...)."""
+    timings: dict[str, float]
+    """Seconds per pipeline stage, plus ``total``."""
+    attempts: int
+    created_at: UtcDatetime
+    started_at: UtcDatetime | None
+    finished_at: UtcDatetime | None
+    artifacts: list[ArtifactPublic]
+
+
+class JobsPublic(BaseModel):
+    data: list[JobPublic]
+    count: int
+    """Jobs matching the filter in total (not only on this page)."""
+    limit: int
+    offset: int

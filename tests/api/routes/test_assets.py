@@ -1,0 +1,138 @@
+"""POST /v1/assets and GET /v1/assets/{ref}: upload, dedupe, validation errors, limits."""
+
+from __future__ import annotations
+
+import pytest
+from fastapi.testclient import TestClient
+
+from app.core.config import Settings
+from app.main import create_app
+from tests.support import upload_assets as assets
+
+
+def _upload(http: TestClient, headers: dict[str, str], *uploads: tuple[str, bytes]):  # type: ignore[no-untyped-def]
+    return http.post("/v1/assets", headers=headers, files=[("asset", (name, data)) for name, data in uploads])
+
+
+def test_zip_upload_is_stored_once_and_reused(http, alice, settings) -> None:
+    first = _upload(http, alice.headers, assets.cabinet_zip())
+    assert first.status_code == 201, first.text
+    body = first.json()
+    assert body["created"] is True and body["filename"] == "cabinet.zip" and len(body["sha256"]) == 64
+    again = _upload(http, alice.headers, assets.cabinet_zip())
+    assert again.status_code == 200
+    assert again.json()["id"] == body["id"] and again.json()["created"] is False
+    stored = list((settings.storage_dir / "assets").iterdir())
+    assert [p.name for p in stored] == [f"{body['sha256']}.zip"]
+
+
+def test_multi_file_upload_is_packed_deterministically(http, alice) -> None:
+    first = _upload(http, alice.headers, *assets.mesh_asset_files())
+    assert first.status_code == 201, first.text
+    assert first.json()["filename"] == "door.zip"
+    reordered = _upload(http, alice.headers, *reversed(assets.mesh_asset_files()))
+    assert reordered.status_code == 200
+    assert reordered.json()["sha256"] == first.json()["sha256"]
+
+
+def test_asset_is_found_by_id_and_sha256_but_not_by_other_clients(http, alice, bob) -> None:
+    body = _upload(http, alice.headers, assets.hinge_zip("-lookup")).json()
+    for ref in (body["id"], body["sha256"], body["sha256"].upper()):
+        found = http.get(f"/v1/assets/{ref}", headers=alice.headers)
+        assert found.status_code == 200 and found.json()["id"] == body["id"]
+    assert http.get(f"/v1/assets/{body['id']}", headers=bob.headers).status_code == 404
+    assert http.get(f"/v1/assets/{body['sha256']}", headers=bob.headers).status_code == 404
+    assert http.get("/v1/assets/not-a-ref", headers=alice.headers).status_code == 404
+
+
+def test_same_content_from_another_client_is_granted_not_duplicated(http, alice, bob) -> None:
+    first = _upload(http, alice.headers, assets.hinge_zip("-shared")).json()
+    second = _upload(http, bob.headers, assets.hinge_zip("-shared"))
+    assert second.status_code == 200 and second.json()["id"] == first["id"]
+    assert http.get(f"/v1/assets/{first['id']}", headers=bob.headers).status_code == 200
+
+
+@pytest.mark.parametrize(
+    ("builder", "words"),
+    [
+        (assets.zip_slip, ["unsafe zip member", "../evil.txt", "slip.zip"]),
+        (assets.zip_bomb, ["zip bomb", "padding.bin", "bomb.zip"]),
+        (assets.xml_bomb, ["forbidden XML construct", "mobility.urdf"]),
+        (assets.missing_mesh, ["meshes/missing.obj", "does not exist", "link lid"]),
+        (assets.no_urdf, ["no .urdf file", "empty.zip"]),
+        (assets.not_a_zip, ["not a readable zip", "broken.zip"]),
+    ],
+    ids=lambda value: getattr(value, "__name__", None),
+)
+def test_every_asset_error_is_a_422_naming_the_problem(http, alice, settings, builder, words) -> None:
+    response = _upload(http, alice.headers, builder())
+    assert response.status_code == 422, response.text
+    body = response.json()
+    assert body["kind"] == "AssetError"
+    for word in words:
+        assert word in body["detail"]
+    assert not (settings.storage_dir / "assets").exists() or not any((settings.storage_dir / "assets").iterdir())
+
+
+@pytest.mark.parametrize("name", ["../escape.urdf", "/abs/mobility.urdf", "C:/x/mobility.urdf", "a/../../b.obj", "folder/"])
+def test_unsafe_file_names_in_multi_file_uploads_are_rejected(http, alice, name) -> None:
+    files = [("asset", ("ok/mobility.urdf", assets.hinge_urdf().encode())), ("asset", (name, b"data"))]
+    response = http.post("/v1/assets", headers=alice.headers, files=files)
+    assert response.status_code == 422, response.text
+
+
+def test_duplicate_names_are_rejected(http, alice) -> None:
+    urdf = assets.hinge_urdf().encode()
+    response = _upload(http, alice.headers, ("a/mobility.urdf", urdf), ("a\\mobility.urdf", urdf))
+    assert response.status_code == 422 and "twice" in response.json()["detail"]
+
+
+def test_no_asset_is_a_422(http, alice) -> None:
+    response = http.post("/v1/assets", headers=alice.headers, files=[("other", ("x.txt", b"x"))])
+    assert response.status_code == 422 and "no asset" in response.json()["detail"]
+
+
+def _limited_app(settings: Settings, **limits: int) -> TestClient:
+    return TestClient(create_app(settings.model_copy(update=limits)))
+
+
+def test_upload_larger_than_the_limit_is_a_413(settings, alice) -> None:
+    with _limited_app(settings, max_upload_bytes=64 * 1024) as http:
+        big = ("big.zip", b"PK\x03\x04" + b"\0" * (200 * 1024))
+        response = _upload(http, alice.headers, big)
+        assert response.status_code == 413 and "limit" in response.json()["detail"]
+        small = _upload(http, alice.headers, assets.hinge_zip("-small"))
+        assert small.status_code == 201, small.text
+
+
+def test_declared_huge_body_is_refused_before_reading(http, alice) -> None:
+    headers = {**alice.headers, "Content-Type": "multipart/form-data; boundary=xyz", "Content-Length": str(2 * 1024**3)}
+    response = http.post("/v1/assets", headers=headers, content=b"--xyz--\r\n")
+    assert response.status_code == 413
+
+
+def test_too_many_files_is_a_413(settings, alice) -> None:
+    with _limited_app(settings, max_upload_files=3) as http:
+        files = [(f"a/file{i}.obj", b"v 0 0 0\n") for i in range(4)]
+        response = _upload(http, alice.headers, *files)
+        assert response.status_code == 413 and "more than 3 files" in response.json()["detail"]
+
+
+def test_wrong_content_type_is_a_415(http, alice) -> None:
+    assert http.post("/v1/assets", headers=alice.headers, json={"asset": "x"}).status_code == 415
+    assert http.post("/v1/assets", headers=alice.headers, content=b"raw").status_code == 415
+
+
+@pytest.mark.parametrize(
+    "body",
+    [b"garbage without boundary", b"--xyz\r\nContent-Type: text/plain\r\n\r\nno disposition\r\n--xyz--\r\n"],
+)
+def test_malformed_multipart_is_a_400(http, alice, body) -> None:
+    headers = {**alice.headers, "Content-Type": "multipart/form-data; boundary=xyz"}
+    response = http.post("/v1/assets", headers=headers, content=body)
+    assert 400 <= response.status_code < 500, response.text
+
+
+def test_multipart_without_boundary_is_a_400(http, alice) -> None:
+    headers = {**alice.headers, "Content-Type": "multipart/form-data"}
+    assert http.post("/v1/assets", headers=headers, content=b"x").status_code == 400

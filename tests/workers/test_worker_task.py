@@ -1,0 +1,195 @@
+"""The task function called directly (no broker): outcomes, status mapping, idempotency, leases."""
+
+from __future__ import annotations
+
+import uuid
+
+import pytest
+from celery.exceptions import SoftTimeLimitExceeded, TimeLimitExceeded
+from sqlalchemy import update
+
+from app.core.config import Settings
+from app.core.storage import LocalStorage
+from app.crud import jobs as crud_jobs
+from app.db.models import Job, JobStatus
+from app.db.session import session_factory
+from tests.workers.jobs import load_job, make_job
+from workers import tasks
+from workers.lease import job_lease
+from workers.observer import JobObserver
+from workers.tasks import Outcome, execute_job
+
+EXPECTED_FILES = {"animation.glb", "causal.json", "plan.json", "report.json", "trajectory.jsonl"}
+
+
+def _stored_keys(settings: Settings, job_id: uuid.UUID) -> list[str]:
+    return list(LocalStorage(settings.storage_dir).iter_keys(f"jobs/{job_id}"))
+
+
+def test_job_succeeds_with_artifacts_timings_and_events(settings: Settings) -> None:
+    job_id = make_job(settings)
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.succeeded
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.succeeded and job.progress == 100 and job.attempts == 1 and job.worker == "w1"
+    assert {a.name for a in job.artifacts} == EXPECTED_FILES
+    assert {"load_asset", "perceive", "plan", "refine", "export", "total"} <= set(job.timings)
+    glb = next(a for a in job.artifacts if a.name == "animation.glb")
+    assert glb.content_type == "model/gltf-binary" and glb.storage_key == f"jobs/{job_id}/animation.glb" and glb.size_bytes > 1000
+    stages = [e.stage for e in job.events if e.kind == "stage"]
+    assert stages == ["load_asset", "preprocess", "perceive", "plan", "refine", "export", "report"]
+    assert [e.message for e in job.events if e.kind == "status"][-1] == "succeeded"
+
+
+def test_calling_it_twice_leaves_one_set_of_artifacts(settings: Settings) -> None:
+    job_id = make_job(settings)
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.succeeded
+    first = load_job(settings, job_id)
+    keys = _stored_keys(settings, job_id)
+    assert execute_job(str(job_id), settings=settings, worker="w2") is Outcome.skipped
+    second = load_job(settings, job_id)
+    assert sorted((a.id, a.sha256) for a in second.artifacts) == sorted((a.id, a.sha256) for a in first.artifacts)
+    assert second.attempts == 1 and second.worker == "w1" and len(second.events) == len(first.events)
+    assert _stored_keys(settings, job_id) == keys and len(keys) == len(EXPECTED_FILES)
+
+
+def test_redelivered_running_job_restarts_cleanly(settings: Settings) -> None:
+    """A job left 'running' by a dead worker, with partial outputs, is re-run from scratch."""
+    job_id = make_job(settings)
+    storage = LocalStorage(settings.storage_dir)
+    with session_factory(settings.sqlalchemy_url)() as session:
+        job = session.get(Job, job_id)
+        assert job is not None
+        crud_jobs.mark_running(session, job=job, worker="dead-worker")
+        stale = storage.put_bytes(f"jobs/{job_id}/stale.partial", b"half a file")
+        crud_jobs.add_artifact(session, job=job, name="stale.partial", storage_key=stale.key, sha256=stale.sha256,
+                               size_bytes=stale.size, content_type="application/octet-stream")
+    assert execute_job(str(job_id), settings=settings, worker="w2") is Outcome.succeeded
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.succeeded and job.attempts == 2 and job.worker == "w2"
+    assert {a.name for a in job.artifacts} == EXPECTED_FILES
+    assert not storage.exists(f"jobs/{job_id}/stale.partial")
+    assert len(_stored_keys(settings, job_id)) == len(EXPECTED_FILES)
+
+
+def test_ungroundable_prompt_fails_with_the_engine_message(settings: Settings) -> None:
+    job_id = make_job(settings, prompt="fly to the moon")
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.failed and job.error_kind == "GroundingError"
+    assert job.error is not None and "lid_hinge" in job.error and "pedal_pivot" in job.error
+    assert [a.name for a in job.artifacts] == ["report.json"]  # the failure report is kept
+    assert "perceive" in job.timings
+
+
+def test_cancel_flag_before_start_cancels(settings: Settings) -> None:
+    job_id = make_job(settings)
+    with session_factory(settings.sqlalchemy_url)() as session:
+        session.execute(update(Job).where(Job.id == job_id).values(cancel_requested=True))
+        session.commit()
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.cancelled
+    assert load_job(settings, job_id).status == JobStatus.cancelled
+
+
+def test_cancel_during_run_stops_at_next_stage(settings: Settings, monkeypatch: pytest.MonkeyPatch) -> None:
+    job_id = make_job(settings)
+    original = JobObserver.on_stage
+
+    def cancel_at_plan(self: JobObserver, stage: str, progress: int) -> None:
+        original(self, stage, progress)
+        if stage == "plan":
+            with session_factory(settings.sqlalchemy_url)() as session:
+                job = session.get(Job, self.job_id)
+                assert job is not None
+                crud_jobs.request_cancel(session, job=job)
+
+    monkeypatch.setattr(JobObserver, "on_stage", cancel_at_plan)
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.cancelled
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.cancelled and job.stage == "plan"
+    assert not any(a.name == "animation.glb" for a in job.artifacts)
+
+
+def test_soft_time_limit_fails_as_timed_out(settings: Settings, monkeypatch: pytest.MonkeyPatch) -> None:
+    job_id = make_job(settings)
+
+    def slow(self: JobObserver, stage: str, progress: int) -> None:
+        if stage == "refine":
+            raise SoftTimeLimitExceeded()
+
+    monkeypatch.setattr(JobObserver, "on_stage", slow)
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.failed and job.error_kind == "TimeLimitExceeded"
+    assert job.error == f"timed out after {settings.job_soft_time_limit_s} s"
+
+
+def test_unexpected_engine_error_fails_the_job(settings: Settings, monkeypatch: pytest.MonkeyPatch) -> None:
+    job_id = make_job(settings)
+
+    def broken(*_: object, **__: object) -> None:
+        raise ZeroDivisionError("engine bug")
+
+    monkeypatch.setattr(tasks, "_roles", broken)
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    job = load_job(settings, job_id)
+    assert job.error_kind == "InternalError" and job.error == "internal error: ZeroDivisionError: engine bug"
+
+
+def test_missing_asset_object_fails_the_job(settings: Settings) -> None:
+    job_id = make_job(settings)
+    job = load_job(settings, job_id)
+    with session_factory(settings.sqlalchemy_url)() as session:
+        from app.db.models import Asset
+
+        asset = session.get(Asset, job.asset_id)
+        assert asset is not None
+        original_key, asset.storage_key = asset.storage_key, "assets/missing.zip"
+        session.commit()
+    try:
+        assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+        failed = load_job(settings, job_id)
+        assert failed.error_kind == "StorageError" and "assets/missing.zip" in (failed.error or "")
+    finally:
+        with session_factory(settings.sqlalchemy_url)() as session:
+            asset = session.get(Asset, job.asset_id)
+            assert asset is not None
+            asset.storage_key = original_key
+            session.commit()
+
+
+def test_duplicate_delivery_while_leased_is_dropped(settings: Settings) -> None:
+    job_id = make_job(settings)
+    with job_lease(settings, str(job_id)) as held:
+        assert held
+        assert execute_job(str(job_id), settings=settings, worker="w2") is Outcome.skipped
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.queued and job.attempts == 0
+
+
+def test_gives_up_after_max_attempts(settings: Settings) -> None:
+    job_id = make_job(settings)
+    with session_factory(settings.sqlalchemy_url)() as session:
+        session.execute(update(Job).where(Job.id == job_id).values(status=JobStatus.running, attempts=settings.job_max_attempts))
+        session.commit()
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    job = load_job(settings, job_id)
+    assert job.error_kind == "WorkerLost" and f"after {settings.job_max_attempts} attempts" in (job.error or "")
+
+
+@pytest.mark.parametrize("job_id", ["not-a-uuid", str(uuid.uuid4())])
+def test_malformed_or_unknown_id_is_dropped(settings: Settings, job_id: str) -> None:
+    assert execute_job(job_id, settings=settings, worker="w1") is Outcome.skipped
+
+
+def test_hard_time_limit_kill_fails_the_job(settings: Settings) -> None:
+    """The worker's main process gets Celery's task_failure signal after killing the pool process."""
+    job_id = make_job(settings)
+    with session_factory(settings.sqlalchemy_url)() as session:
+        job = session.get(Job, job_id)
+        assert job is not None
+        crud_jobs.mark_running(session, job=job, worker="w-killed")  # the killed process left it running
+    tasks._hard_time_limit(exception=TimeLimitExceeded(settings.job_hard_time_limit_s), args=(str(job_id),))
+    job = load_job(settings, job_id)
+    assert job.status == JobStatus.failed and job.error_kind == "TimeLimitExceeded"
+    assert job.error == f"timed out: killed at the hard time limit of {settings.job_hard_time_limit_s} s"
+    tasks._hard_time_limit(exception=ValueError("another failure"), args=(str(job_id),))  # ignored
