@@ -49,9 +49,7 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     every request reads the cached environment settings.
     """
     app = FastAPI(title="ArtiMo", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
-    app.state.settings = settings
-    if settings is not None:
-        app.dependency_overrides[get_settings] = lambda: settings
+    app.state.settings = settings  # read by app.api.deps.app_settings
     install_error_handlers(app)
     app.include_router(api_router)
     app.add_middleware(MetricsMiddleware)

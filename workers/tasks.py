@@ -121,7 +121,9 @@ def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObse
     config = settings.engine_config()
     rounds = claim.options.get("max_critic_rounds")
     try:
-        request = PipelineRequest(asset=asset_zip, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds))
+        fps = claim.options.get("fps")
+        request = PipelineRequest(asset=asset_zip, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds),
+                                  fps=None if fps is None else int(fps))
         roles = _roles(claim.options, settings, config)
         run_pipeline(request, roles=roles, config=config, out_dir=out_dir, observer=observer, should_stop=observer.should_stop)
     except CancelledError as exc:

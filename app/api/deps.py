@@ -3,33 +3,49 @@
 from __future__ import annotations
 
 import hmac
-from collections.abc import Iterator
+import threading
+import time
+from collections.abc import AsyncIterator
 from functools import lru_cache
 from pathlib import Path
 from typing import Annotated
 
 from fastapi import Depends, Request
+from fastapi.concurrency import run_in_threadpool
 from fastapi.security import HTTPAuthorizationCredentials, HTTPBearer
 from sqlalchemy.orm import Session
 
 from app.api.errors import RateLimited, Unauthorized
 from app.api.queue import Enqueuer, celery_enqueuer
-from app.api.ratelimit import RateLimiter, make_rate_limiter
+from app.api.ratelimit import MemoryRateLimiter, RateLimiter, make_rate_limiter
 from app.core.config import Settings, get_settings
 from app.core.storage import LocalStorage, Storage
-from app.crud.clients import client_by_key, ensure_client_for_key
+from app.crud.clients import client_by_key, ensure_client_for_key, hash_key
 from app.db.models import ApiClient
 from app.db.session import session_factory
 
 MAX_KEY_CHARS = 256
 
-SettingsDep = Annotated[Settings, Depends(get_settings)]
+async def app_settings(request: Request) -> Settings:
+    """The app's settings (``create_app(settings)``), else the cached environment settings.
+
+    Dependencies here are ``async`` when they do no I/O: FastAPI runs every sync dependency
+    in the thread pool, and those hops (not the queries) dominated a status poll.
+    """
+    configured: Settings | None = getattr(request.app.state, "settings", None)
+    return configured or get_settings()
 
 
-def get_db(settings: SettingsDep) -> Iterator[Session]:
-    """One session per request on the configured database."""
-    with session_factory(settings.sqlalchemy_url)() as session:
+SettingsDep = Annotated[Settings, Depends(app_settings)]
+
+
+async def get_db(settings: SettingsDep) -> AsyncIterator[Session]:
+    """One session per request on the configured database (opened lazily, closed in a thread)."""
+    session = session_factory(settings.sqlalchemy_url)()
+    try:
         yield session
+    finally:
+        await run_in_threadpool(session.close)
 
 
 SessionDep = Annotated[Session, Depends(get_db)]
@@ -40,14 +56,14 @@ def _storage(root: Path) -> LocalStorage:
     return LocalStorage(root)
 
 
-def get_storage(settings: SettingsDep) -> Storage:
+async def get_storage(settings: SettingsDep) -> Storage:
     return _storage(settings.storage_dir)
 
 
 StorageDep = Annotated[Storage, Depends(get_storage)]
 
 
-def get_enqueuer(settings: SettingsDep) -> Enqueuer:
+async def get_enqueuer(settings: SettingsDep) -> Enqueuer:
     """Replace with ``app.dependency_overrides[get_enqueuer]`` to run the API without workers."""
     return celery_enqueuer(settings)
 
@@ -55,7 +71,7 @@ def get_enqueuer(settings: SettingsDep) -> Enqueuer:
 EnqueuerDep = Annotated[Enqueuer, Depends(get_enqueuer)]
 
 
-def get_rate_limiter(request: Request, settings: SettingsDep) -> RateLimiter:
+async def get_rate_limiter(request: Request, settings: SettingsDep) -> RateLimiter:
     """The app's limiter (created on first use from ``REDIS_URL``)."""
     limiter: RateLimiter | None = getattr(request.app.state, "rate_limiter", None)
     if limiter is None:
@@ -67,7 +83,48 @@ def get_rate_limiter(request: Request, settings: SettingsDep) -> RateLimiter:
 _bearer = HTTPBearer(auto_error=False, description="an API key: `artimo keys create --name NAME`, or $ARTIMO_API_KEY")
 
 
+class _KeyCache:
+    """Recently authenticated keys (by hash) -> their detached client rows, for ``ttl`` seconds.
+
+    A status poll then costs one query instead of two; only successes are remembered.
+    """
+
+    def __init__(self) -> None:
+        self._entries: dict[tuple[str, str], tuple[float, ApiClient]] = {}
+        self._lock = threading.Lock()
+
+    def get(self, database: str, key: str, ttl: float) -> ApiClient | None:
+        if ttl <= 0:
+            return None
+        with self._lock:
+            entry = self._entries.get((database, hash_key(key)))
+        return entry[1] if entry is not None and time.monotonic() - entry[0] < ttl else None
+
+    def put(self, database: str, key: str, client: ApiClient, ttl: float) -> None:
+        if ttl <= 0:
+            return
+        with self._lock:
+            if len(self._entries) > MAX_CACHED_KEYS:
+                self._entries.clear()
+            self._entries[(database, hash_key(key))] = (time.monotonic(), client)
+
+
+_KEYS = _KeyCache()
+MAX_CACHED_KEYS = 10_000
+
+
 def _authenticate(session: Session, settings: Settings, key: str) -> ApiClient | None:
+    cached = _KEYS.get(settings.sqlalchemy_url, key, settings.auth_cache_s)
+    if cached is not None:
+        return cached
+    client = _lookup(session, settings, key)
+    if client is not None and settings.auth_cache_s > 0:
+        session.expunge(client)
+        _KEYS.put(settings.sqlalchemy_url, key, client, settings.auth_cache_s)
+    return client
+
+
+def _lookup(session: Session, settings: Settings, key: str) -> ApiClient | None:
     client = client_by_key(session, key=key)
     if client is not None:
         return client
@@ -78,7 +135,7 @@ def _authenticate(session: Session, settings: Settings, key: str) -> ApiClient |
     return None
 
 
-def get_client(
+async def get_client(
     session: SessionDep,
     settings: SettingsDep,
     limiter: Annotated[RateLimiter, Depends(get_rate_limiter)],
@@ -95,11 +152,13 @@ def get_client(
     """
     if credentials is None or not credentials.credentials or len(credentials.credentials) > MAX_KEY_CHARS:
         raise Unauthorized()
-    client = _authenticate(session, settings, credentials.credentials)
+    key = credentials.credentials
+    client = _KEYS.get(settings.sqlalchemy_url, key, settings.auth_cache_s) or await run_in_threadpool(_authenticate, session, settings, key)
     if client is None:
         raise Unauthorized()
     limit = client.rate_limit_per_minute or settings.rate_limit_per_minute
-    retry_after = limiter.hit(str(client.id), limit)
+    in_memory = isinstance(limiter, MemoryRateLimiter)
+    retry_after = limiter.hit(str(client.id), limit) if in_memory else await run_in_threadpool(limiter.hit, str(client.id), limit)
     if retry_after is not None:
         raise RateLimited(limit, retry_after)
     return client

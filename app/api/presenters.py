@@ -5,6 +5,7 @@ from __future__ import annotations
 import uuid
 from collections import Counter
 from collections.abc import Iterable
+from urllib.parse import quote
 
 from fastapi import Request
 
@@ -13,24 +14,35 @@ from app.schemas.assets import AssetPublic
 from app.schemas.batches import BatchCasePublic, BatchPublic
 from app.schemas.jobs import ArtifactPublic, JobPublic
 
+ANIMATIONS = "/v1/animations"
 NAMED_ARTIFACTS = ("animation.glb", "trajectory.jsonl", "plan.json", "causal.json", "report.json")
 """Outputs with their own route ``/v1/animations/{id}/<name>``."""
 KEYFRAME_FOLDERS = ("keyframes/", "images/")
 """Images are served by ``/v1/animations/{id}/keyframes/<file>``."""
 
 
+def _base(request: Request) -> str:
+    """The server's base URL (scheme, host, root path) without the trailing slash.
+
+    URLs are formatted from the fixed route paths instead of ``url_for``, which walks the
+    route table on every call (it dominated the cost of a status poll).
+    """
+    return str(request.base_url).rstrip("/")
+
+
 def job_url(request: Request, job_id: uuid.UUID) -> str:
-    return str(request.url_for("get_animation", job_id=str(job_id)))
+    return f"{_base(request)}{ANIMATIONS}/{job_id}"
 
 
 def artifact_url(request: Request, job_id: uuid.UUID, name: str) -> str:
+    prefix = f"{_base(request)}{ANIMATIONS}/{job_id}"
     if name in NAMED_ARTIFACTS:
-        return str(request.url_for("get_artifact", job_id=str(job_id), name=name))
+        return f"{prefix}/{quote(name)}"
     for folder in KEYFRAME_FOLDERS:
         rest = name[len(folder):]
         if name.startswith(folder) and rest and "/" not in rest:
-            return str(request.url_for("get_keyframe", job_id=str(job_id), name=rest))
-    return str(request.url_for("get_file", job_id=str(job_id), name=name))
+            return f"{prefix}/keyframes/{quote(rest)}"
+    return f"{prefix}/files/{quote(name)}"
 
 
 def keyframe_names(name: str) -> list[str]:

@@ -21,6 +21,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
                         help="model per role, e.g. --model perceiver=gpt-4.1 --model critic=geometric (repeatable)")
     parser.add_argument("--base-url", default=None, help="provider endpoint (default: $OPENAI_BASE_URL / $GEMINI_BASE_URL or the public API)")
     parser.add_argument("--critic-rounds", type=int, default=None, help="critic-actor repair rounds (default 3)")
+    parser.add_argument("--fps", type=int, choices=(24, 30), default=None, help="output frame rate (default: the planner's, 30)")
     parser.add_argument("--render", action="store_true", help="also render reference/overlay images into OUT/images")
     parser.add_argument("--no-collisions", action="store_true", help="skip the critic's collision checks")
     parser.set_defaults(handler=_animate)
@@ -59,7 +60,7 @@ def _animate(args: argparse.Namespace) -> int:
     config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions, asset_cache_dir=cache_dir(args))
     roles = make_roles(args.provider, _provider_config(args), config)
     result = run_pipeline(
-        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds),
+        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps),
         roles=roles, config=config, out_dir=args.out, observer=_Progress(),
     )
     report = result.report

@@ -35,6 +35,8 @@ class Settings(BaseSettings):
     max_upload_bytes: int = Field(default=256 * 1024 * 1024, gt=0)
     max_upload_files: int = Field(default=2000, gt=0)
     rate_limit_per_minute: int = Field(default=120, gt=0)
+    auth_cache_s: float = Field(default=2.0, ge=0)
+    """How long an authenticated key is remembered in-process (a disabled key stops working within this)."""
     """Requests per API key per minute (health routes are exempt)."""
     job_soft_time_limit_s: int = Field(default=900, gt=0)
     job_hard_time_limit_s: int = Field(default=960, gt=0)

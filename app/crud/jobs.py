@@ -14,7 +14,7 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from sqlalchemy import delete, func, select, update
-from sqlalchemy.orm import Session, selectinload
+from sqlalchemy.orm import Session, joinedload, selectinload
 
 from app.db.models import TERMINAL, ApiClient, Artifact, Asset, Job, JobEvent, JobStatus, utcnow
 
@@ -55,7 +55,8 @@ def get_job(session: Session, *, job_id: uuid.UUID) -> Job | None:
 
 def get_job_for_client(session: Session, *, job_id: uuid.UUID, client: ApiClient) -> Job | None:
     """The job if it exists and belongs to ``client`` (another client's job is ``None``, like a missing one)."""
-    return session.execute(select(Job).where(Job.id == job_id, Job.client_id == client.id)).scalar_one_or_none()
+    query = select(Job).where(Job.id == job_id, Job.client_id == client.id).options(joinedload(Job.artifacts))
+    return session.execute(query).unique().scalar_one_or_none()
 
 
 def list_jobs(

@@ -45,6 +45,8 @@ class PipelineRequest:
     asset: Path | ArticulatedAsset
     prompt: str
     max_critic_rounds: int | None = None
+    fps: int | None = None
+    """Frame rate of the output (24 or 30); ``None`` keeps the planner's."""
 
 
 @dataclass
@@ -104,9 +106,12 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
         with run.stage("plan"):
             planned = await roles.planner.plan(context, perception)
             report.role_calls.extend(planned.calls)
+            plan = planned.plan
+            if request.fps is not None and request.fps != plan.meta.fps:
+                plan = plan.model_copy(update={"meta": plan.meta.model_copy(update={"fps": request.fps})})
         with run.stage("refine"):
             rounds = config.max_critic_rounds if request.max_critic_rounds is None else request.max_critic_rounds
-            refined = await refine(context, perception, planned.plan, roles.critic, max_rounds=rounds, should_stop=run.should_stop)
+            refined = await refine(context, perception, plan, roles.critic, max_rounds=rounds, should_stop=run.should_stop)
             report.role_calls.extend(refined.calls)
             report.critic_rounds = refined.rounds
             report.final_state = f"{refined.state} (best round {refined.best_round})"

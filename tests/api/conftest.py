@@ -38,6 +38,7 @@ def settings(pg_url: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Se
     """Settings of one test: the session's Postgres, storage in ``tmp_path``, no env key."""
     monkeypatch.delenv("ARTIMO_API_KEY", raising=False)
     return Settings(
+        auth_cache_s=0.0,
         _env_file=None,  # type: ignore[call-arg]
         artimo_data_dir=tmp_path / "data", database_url=pg_url, redis_url=None,
         artimo_api_key="env-key-" + uuid.uuid4().hex,  # type: ignore[arg-type]

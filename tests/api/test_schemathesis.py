@@ -16,7 +16,7 @@ from hypothesis import HealthCheck, settings
 from schemathesis.checks import not_a_server_error
 
 from app.api.deps import get_enqueuer
-from app.core.config import Settings, get_settings
+from app.core.config import Settings
 from app.crud.clients import create_api_client
 from app.main import create_app
 
@@ -39,7 +39,6 @@ def configured_app(settings: Settings) -> Iterator[None]:
     """``schemathesis.pytest.from_fixture`` would be neater but breaks on pytest 9 (``Function._nodeid``)."""
     sent: list[uuid.UUID] = []
     APP.state.settings = settings
-    APP.dependency_overrides[get_settings] = lambda: settings
     APP.dependency_overrides[get_enqueuer] = lambda: sent.append
     yield
     APP.dependency_overrides.clear()

@@ -64,3 +64,11 @@ def test_refusal_writes_a_report_and_no_animation(tmp_path: Path, examples_dir: 
     report = json.loads((tmp_path / "report.json").read_text())
     assert report["final_state"].startswith("failed")
     assert not (tmp_path / "animation.glb").exists()
+
+
+def test_requested_fps_is_used(tmp_path: Path, examples_dir: Path) -> None:
+    run_pipeline(PipelineRequest(asset=examples_dir / "oven", prompt="open the door", fps=24), roles=make_roles("offline"), out_dir=tmp_path)
+    plan = json.loads((tmp_path / "plan.json").read_text())
+    assert plan["meta"]["fps"] == 24
+    frames = [json.loads(line) for line in (tmp_path / "trajectory.jsonl").read_text().splitlines()]
+    assert frames[1]["time_s"] == pytest.approx(1 / 24)

@@ -98,9 +98,10 @@ def list_animations(
 
 
 @router.get("/{job_id}", response_model=JobPublic, responses=ERRORS)
-def get_animation(request: Request, job_id: uuid.UUID, client: ClientDep, session: SessionDep) -> JobPublic:
+async def get_animation(request: Request, job_id: uuid.UUID, client: ClientDep, session: SessionDep) -> JobPublic:
     """Status, stage, progress, timings, error and output links of one job."""
-    return job_public(request, _job_or_404(session, job_id, client))
+    job = await run_in_threadpool(_job_or_404, session, job_id, client)  # the one blocking step of a status poll
+    return job_public(request, job)
 
 
 @router.delete(

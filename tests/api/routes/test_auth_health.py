@@ -89,3 +89,14 @@ def test_openapi_docs_are_served(http) -> None:
     paths = http.get("/openapi.json").json()["paths"]
     assert "multipart/form-data" in paths["/v1/animations"]["post"]["requestBody"]["content"]
     assert {"/v1/assets", "/v1/animations/{job_id}/{name}", "/v1/batches/{batch_id}", "/metrics"} <= set(paths)
+
+
+def test_key_cache_forgets_a_disabled_key_within_its_ttl(app, settings, http, alice, db) -> None:
+    import time
+
+    settings.auth_cache_s = 0.3
+    assert http.get("/v1/animations", headers=alice.headers).status_code == 200
+    set_client_disabled(db, client=db.get(ApiClient, alice.client.id), disabled=True)
+    assert http.get("/v1/animations", headers=alice.headers).status_code == 200  # still remembered
+    time.sleep(0.35)
+    assert http.get("/v1/animations", headers=alice.headers).status_code == 401
