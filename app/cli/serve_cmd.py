@@ -25,6 +25,8 @@ from typing import TYPE_CHECKING
 from app.cli.output import err, out
 
 if TYPE_CHECKING:
+    import uvicorn
+
     from app.core.config import Settings
 
 logger = logging.getLogger(__name__)
@@ -43,6 +45,11 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     parser.add_argument("--host", default="127.0.0.1", help="interface to listen on (default 127.0.0.1)")
     parser.add_argument("--port", type=int, default=8000, help="TCP port (default 8000)")
     parser.add_argument("--workers", type=int, default=1, help="job worker processes (Celery concurrency, default 1)")
+    parser.add_argument(
+        "--api-processes", type=int, default=1,
+        help="API (uvicorn) processes, default 1; 2 keeps status polls fast under heavy load. Without "
+             "REDIS_URL each process keeps its own rate-limit counters",
+    )
     parser.set_defaults(handler=_serve)
 
 
@@ -165,13 +172,30 @@ def _run_api(args: argparse.Namespace, received: list[int]) -> int:
 
     if received:
         return 0
-    server = uvicorn.Server(uvicorn.Config("app.main:create_app", factory=True, host=args.host, port=args.port, log_config=None))
+    config = uvicorn.Config("app.main:create_app", factory=True, host=args.host, port=args.port, log_config=None,
+                            workers=max(1, args.api_processes))
+    server = uvicorn.Server(config)
     try:
+        if config.workers > 1:
+            return _run_api_processes(config)
         server.run()
     except SystemExit as exc:  # uvicorn exits when it cannot bind
         err(f"API server stopped: exit {exc.code}")
         return 1
     return 0 if server.started or received else 1
+
+
+def _run_api_processes(config: uvicorn.Config) -> int:
+    """uvicorn's supervisor: one listening socket, ``config.workers`` server processes (restarted if one
+    dies); SIGINT/SIGTERM stop them all, then control returns here to stop the job worker."""
+    from uvicorn.supervisors import Multiprocess
+
+    sock = config.bind_socket()
+    try:
+        Multiprocess(config, sockets=[sock]).run()
+    finally:
+        sock.close()
+    return 0
 
 
 def _api_key(settings: Settings) -> str:

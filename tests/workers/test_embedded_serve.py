@@ -27,9 +27,9 @@ def _embedded_env(data_dir: Path) -> dict[str, str]:
     return env
 
 
-def _serve(data_dir: Path, port: int) -> subprocess.Popen[str]:
+def _serve(data_dir: Path, port: int, *extra: str) -> subprocess.Popen[str]:
     return subprocess.Popen(
-        [sys.executable, "-m", "app.cli.main", "serve", "--host", "127.0.0.1", "--port", str(port), "--workers", "1"],
+        [sys.executable, "-m", "app.cli.main", "serve", "--host", "127.0.0.1", "--port", str(port), "--workers", "1", *extra],
         cwd=stack.REPO, env=_embedded_env(data_dir), stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
         start_new_session=True,
     )
@@ -83,6 +83,50 @@ def test_serve_submit_wait_download_and_stop(tmp_path: Path) -> None:
         code = server.wait(SERVE_TIMEOUT_S)
     assert code == 0
     assert not any(Path(f"/proc/{pid}").exists() for pid in worker_pids), "the worker outlived artimo serve"
+
+
+def _descendants(pid: int) -> set[int]:
+    found, todo = set(), [pid]
+    while todo:
+        for child in _children(todo.pop()):
+            if child not in found:
+                found.add(child)
+                todo.append(child)
+    return found
+
+
+def _cmdline(pid: int) -> str:
+    try:
+        return Path(f"/proc/{pid}/cmdline").read_bytes().replace(b"\0", b" ").decode()
+    except OSError:
+        return ""
+
+
+def test_two_api_processes_serve_jobs_and_all_stop(tmp_path: Path) -> None:
+    data_dir, port = tmp_path / "data", stack.free_port()
+    server = _serve(data_dir, port, "--api-processes", "2")
+    url = f"http://127.0.0.1:{port}"
+    try:
+        assert server.stdout is not None
+        match = KEY_LINE.search(server.stdout.readline() + server.stdout.readline())
+        assert match
+        stack.wait_until(lambda: _ready(url), SERVE_TIMEOUT_S, 0.1, "artimo serve /readyz")
+        def api_processes() -> set[int]:
+            found = {pid for pid in _children(server.pid) if "spawn_main" in _cmdline(pid)}
+            return found if len(found) >= 2 else set()
+
+        assert len(stack.wait_until(api_processes, SERVE_TIMEOUT_S, 0.1, "two API processes")) == 2
+        everything = _descendants(server.pid)
+        with ArtimoClient(url, match.group(1)) as client:
+            jobs = [client.submit(PEDAL_BIN, PEDAL_PROMPT)["id"] for _ in range(3)]
+            assert [client.wait(job, timeout=SERVE_TIMEOUT_S, poll=0.1)["status"] for job in jobs] == ["succeeded"] * 3
+            assert len({httpx.get(f"{url}/healthz").status_code for _ in range(20)}) == 1
+    finally:
+        server.terminate()
+        code = server.wait(SERVE_TIMEOUT_S)
+    assert code == 0
+    stack.wait_until(lambda: not any(Path(f"/proc/{pid}").exists() for pid in everything),
+                     SERVE_TIMEOUT_S, 0.1, "every child of artimo serve to stop")
 
 
 def test_second_start_does_not_print_a_new_key(tmp_path: Path) -> None:
