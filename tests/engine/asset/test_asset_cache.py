@@ -10,8 +10,8 @@ import numpy as np
 
 from app.engine.asset.cache import cache_key, load_asset_cached
 from app.engine.asset.loader import load_asset
-from app.engine.export.glb import glb_bytes
 from app.engine.execute.executor import execute
+from app.engine.export.glb import glb_bytes
 from app.engine.plan.schema import Plan
 
 

@@ -101,7 +101,7 @@ def test_critic_diagnosis_is_repaired_by_the_actor(tmp_path: Path, examples_dir:
                  "issues": [{"code": "MOTION_TOO_SMALL", "expected": "open fully (-1.4)", "observed": "-0.7", "segment_index": 2, "phase_type": "effect_motion", "joint": "lid_hinge", "link": "lid"}],
                  "param_fix_hints": [{"type": "adjust_joint_target", "joint": "lid_hinge", "segment_index": 2, "phase_type": "effect_motion", "direction": "increase", "strength": "extra_large", "why": "half open"}]}
     replies["critic"] = [{"match": "joint lid_hinge", "reply": json.dumps(too_small)}, ok]
-    result, _ = _run(examples_dir, tmp_path, replies)
+    _, _ = _run(examples_dir, tmp_path, replies)
     report = json.loads((tmp_path / "report.json").read_text())
     assert len(report["critic_rounds"]) == 2 and report["critic_rounds"][0]["patches"]
     assert report["final_state"].startswith("accepted (best round 1)")
