@@ -32,7 +32,8 @@ def free_port() -> int:
         return int(probe.getsockname()[1])
 
 
-def _children(pid: int) -> list[int]:
+def child_pids(pid: int) -> list[int]:
+    """Direct children of a process (from /proc; empty when it is gone)."""
     found: list[int] = []
     for task in Path(f"/proc/{pid}/task").glob("*"):
         try:
@@ -131,7 +132,7 @@ class Stack:
         """RSS of the API: its process plus, with several processes, uvicorn's worker processes (MiB)."""
         if self.api is None:
             return 0.0
-        return process_rss_mb(self.api.pid) + sum(process_rss_mb(c) for c in _children(self.api.pid))
+        return process_rss_mb(self.api.pid) + sum(process_rss_mb(c) for c in child_pids(self.api.pid))
 
     def start_workers(self, count: int) -> None:
         """``count`` worker processes (prefork, concurrency 1 each); returns when all logged ``ready``."""
@@ -159,7 +160,7 @@ class Stack:
 
     def worker_rss(self) -> dict[str, float]:
         """RSS per worker (main process + its pool processes), MiB."""
-        return {name: process_rss_mb(p.pid) + sum(process_rss_mb(c) for c in _children(p.pid)) for name, p in self.workers.items()}
+        return {name: process_rss_mb(p.pid) + sum(process_rss_mb(c) for c in child_pids(p.pid)) for name, p in self.workers.items()}
 
     def upload_asset(self, client: httpx.Client, folder: Path) -> str:
         data = zip_folder(folder)

@@ -6,7 +6,6 @@ runs the worker's task function in another thread, so ``--wait --out`` sees a fi
 
 from __future__ import annotations
 
-import socket
 import threading
 import time
 import uuid
@@ -20,17 +19,12 @@ from app.api.deps import get_enqueuer
 from app.cli.main import main
 from app.core.config import Settings
 from app.main import create_app
+from benchmark.service_stack import free_port
 from tests.support.upload_assets import hinge_urdf
 
 tasks = pytest.importorskip("workers.tasks", reason="the worker package is built by the workers helper")
 KEY = "submit-test-key"
 START_TIMEOUT_S = 20
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
 
 
 @pytest.fixture
@@ -43,7 +37,7 @@ def server(tmp_path: Path) -> Iterator[str]:
         threading.Thread(target=tasks.execute_job, args=(str(job_id),), kwargs={"settings": settings, "worker": "t"}).start()
 
     app.dependency_overrides[get_enqueuer] = lambda: run_inline
-    port = _free_port()
+    port = free_port()
     uv = uvicorn.Server(uvicorn.Config(app, host="127.0.0.1", port=port, log_config=None, lifespan="on"))
     thread = threading.Thread(target=uv.run, daemon=True)
     thread.start()

@@ -12,6 +12,7 @@ from pathlib import Path
 import httpx
 
 from app.client import ArtimoClient
+from benchmark.service_stack import child_pids
 from tests.support.gltf_validator import assert_valid
 from tests.workers import stack
 from tests.workers.jobs import PEDAL_BIN, PEDAL_PROMPT
@@ -36,13 +37,7 @@ def _serve(data_dir: Path, port: int, *extra: str) -> subprocess.Popen[str]:
 
 
 def _children(pid: int) -> set[int]:
-    found = set()
-    for task in Path(f"/proc/{pid}/task").glob("*"):
-        try:
-            found |= {int(c) for c in (task / "children").read_text().split()}
-        except OSError:
-            continue
-    return found
+    return set(child_pids(pid))
 
 
 def test_serve_submit_wait_download_and_stop(tmp_path: Path) -> None:
