@@ -214,6 +214,11 @@ def _horizontal(vector: FloatArray) -> FloatArray:
 def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray]) -> FloatArray:
     """One part's vote for the object's front (zero when it says nothing)."""
     if geometry.category in CONTROL_CATEGORIES:
+        # a knob on a tilted control panel: its axis, taken pointing up and out of the panel,
+        # leans toward the user (a washer's back panel); vertical or level axes say nothing
+        if geometry.type in ("revolute", "continuous") and 0.2 < abs(float(geometry.axis_world @ UP)) < 0.7:
+            outward = geometry.axis_world if geometry.axis_world @ UP > 0 else -geometry.axis_world
+            return 1.0 * _horizontal(outward)
         return np.zeros(3)
     if geometry.open_value is not None and geometry.closed_value is not None:
         if geometry.type == "prismatic":

@@ -69,10 +69,10 @@ def _position(part: Part, geometry: ObjectGeometry) -> np.ndarray:
     return geometry.local(part.geometry.home_centroid)
 
 
-def _extreme(candidates: list[Part], geometry: ObjectGeometry, axis: int, largest: bool) -> list[Part]:
+def _extreme(candidates: list[Part], geometry: ObjectGeometry, axis: int, largest: bool, strict: bool = False) -> list[Part]:
     values = np.array([_position(p, geometry)[axis] for p in candidates])
     best = values.max() if largest else values.min()
-    tolerance = max(QUALIFIER_TOLERANCE * float(np.ptp(values)), MIN_QUALIFIER_TOLERANCE_M)
+    tolerance = MIN_QUALIFIER_TOLERANCE_M if strict else max(QUALIFIER_TOLERANCE * float(np.ptp(values)), MIN_QUALIFIER_TOLERANCE_M)
     return [p for p, v in zip(candidates, values, strict=True) if abs(v - best) <= tolerance]
 
 
@@ -85,6 +85,9 @@ def _apply_spatial(candidates: list[Part], words: tuple[str, ...], geometry: Obj
         if word in rules:
             axis, largest = rules[word]
             candidates = _extreme(candidates, geometry, axis, largest)
+        elif word.endswith("most") and word[:-4] in rules:  # "leftmost": the single extreme one
+            axis, largest = rules[word[:-4]]
+            candidates = _extreme(candidates, geometry, axis, largest, strict=True)
         elif word == "middle":
             candidates = [_ordered(candidates, geometry)[len(candidates) // 2]]
         elif word in ("inner", "outer"):
@@ -115,7 +118,8 @@ def _pick_line(candidates: list[Part], geometry: ObjectGeometry, index: int, axi
     return lines[index - 1] if index > 0 and index <= len(lines) else lines[-1]
 
 
-NAME_SIDES = {"front": {"front"}, "back": {"back", "rear"}, "left": {"left"}, "right": {"right"}, "top": {"top", "upper"}, "bottom": {"bottom", "lower"}}
+NAME_SIDES = {"front": {"front"}, "back": {"back", "rear"}, "left": {"left"}, "right": {"right"}, "top": {"top", "upper"}, "bottom": {"bottom", "lower"},
+              "leftmost": {"left"}, "rightmost": {"right"}, "topmost": {"top", "upper"}, "bottommost": {"bottom", "lower"}}
 
 
 def _named_spatial(candidates: list[Part], words: tuple[str, ...], asset: ArticulatedAsset) -> list[Part]:
@@ -149,7 +153,8 @@ def _by_category(parts: list[Part], category: str) -> list[Part]:
     if exact:
         return exact
     for related in RELATED.get(category, ()):
-        found = [p for p in parts if p.category == related]
+        # a knob turns: a sliding lever is not what "the knob" means
+        found = [p for p in parts if p.category == related and not (category == "knob" and p.geometry.type == "prismatic")]
         if found:
             return found
     return []
@@ -180,10 +185,15 @@ def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGe
         candidates = _pick_line(candidates, geometry, mention.row, axis=2)
     if mention.column is not None and len(candidates) > 1:
         candidates = _pick_line(candidates, geometry, mention.column, axis=1)
+    if mention.size == "large" and len(candidates) > 1:
+        # "the large dial on the right": size is intrinsic, left/right depends on the inferred front
+        candidates = [max(candidates, key=lambda p: p.geometry.size)]
     candidates = _named_spatial(candidates, mention.spatial, asset) or _apply_spatial(candidates, mention.spatial, geometry)
     if mention.size is not None and len(candidates) > 1:
         pick = max if mention.size == "large" else min
         candidates = [pick(candidates, key=lambda p: p.geometry.size)]
+    if mention.ordinal is not None and mention.ordinal > len(candidates) and mention.row is None and mention.column is None:
+        return []  # "the second drawer" of a one-drawer nightstand names nothing
     if mention.ordinal is not None and len(candidates) > 1:
         ordered = _ordered(candidates, geometry)
         index = mention.ordinal - 1 if mention.ordinal > 0 else len(ordered) - 1

@@ -96,6 +96,12 @@ def normalize(prompt: str) -> str:
     for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
         text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", _and_a_fraction(digits), text)
     text = _keypad(text)
+    # "take your foot off (the pedal)", "lift your finger": the user lets go of what was pressed
+    text = re.sub(
+        r"\b(?:take|takes|taking|lift|lifts|lifting|remove|removes|removing|move|pull|raise)\s+(?:your|my|the|his|her|their|one's)\s+"
+        r"(?:foot|feet|hand|hands|finger|fingers|thumb|toe)\b(?:\s+(?:off|away|up|back))?(?:\s+(?:of|from)\s+(?:it|them|the\s+[\w-]+))?",
+        "release it", text)
+    text = re.sub(r"\blet\s+go\b(?!\s+of)", "release it", text)  # "..., then let go"
     # "..., without using the pedal": a part the user says not to use is not an instrument
     text = re.sub(r",?\s*\b(?:without|but not|and not|never)\s+(?:using|pressing|touching|stepping on|moving|opening)?\s*(?:the|its|a|any)\s+[\w-]+", " manually", text)
     text = re.sub(r",?\s*the one (?:with|that|which|having)\b[^,;.]*", "", text)
@@ -286,6 +292,9 @@ def parse_clause(text: str) -> Clause:
     for start, end, category, phrase in found:
         window = plain[boundary:start] if start >= boundary else plain[max(0, start - 25):start]
         spatial, ordinal, collective = _qualifiers(window)
+        trailing = re.match(r"\s+(?:on|at)\s+(?:the\s+)?(left|right|top|bottom|front|back|rear)\b(?:[\s-]+hand)?(?:\s+side)?", plain[end:])
+        if trailing and SPATIAL[trailing.group(1)] not in spatial:
+            spatial = (*spatial, SPATIAL[trailing.group(1)])  # "the door on the left"
         plural = collective or (phrase.endswith("s") and not phrase.endswith(("ss", "us")))
         earlier_target = bool(mentions) or any(w in OBJECT_WORDS_SET for w in re.findall(r"[a-z]+", plain[verb_end:start]))
         instrument = earlier_target and bool(_INSTRUMENT_BEFORE.search(plain[max(boundary, verb_end):start]) or _DESCRIPTIVE_AFTER.match(plain[end:]))
@@ -378,6 +387,17 @@ def _split_and(segment: str) -> list[str]:
     return merged
 
 
+_ONE = re.compile(r"\b(" + "|".join(sorted(set(SPATIAL) | set(ORDINALS), key=len, reverse=True)) + r")((?:[\s-]+hand)?\s+)ones?\b")
+
+
+def _resolve_one(piece: str, actions: list[Action]) -> str:
+    """ "open the right door, then the left one": "one" names the previous clause's part."""
+    heads = [m.head for action in reversed(actions) for m in action.clause.mentions if m.category != "object"]
+    if not heads or not _ONE.search(piece):
+        return piece
+    return _ONE.sub(lambda m: m.group(1) + m.group(2) + heads[0], piece)
+
+
 def parse_prompt(prompt: str) -> ParsedPrompt:
     """Structured reading of a whole prompt, actions in execution order."""
     text = normalize(prompt)
@@ -396,7 +416,7 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
                 for piece_index, piece in enumerate(_split_and(_FILLER.sub("", part.strip(" ,")))):
                     if _NEGATED.match(piece.strip(" ,")):
                         continue  # "without using the pedal", "don't touch the door"
-                    action = _means_end(piece.strip(" ,"))
+                    action = _means_end(_resolve_one(piece.strip(" ,"), actions))
                     parallel = index > 0 and piece_index == 0
                     clause = action.clause
                     parts = [m for m in clause.mentions if m.category != "object"]

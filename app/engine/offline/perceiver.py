@@ -58,6 +58,7 @@ class _Builder:
         self.clause_text = ""
         self.implicit_effects_at: dict[str, int] = {}
         self.state: dict[str, float] = {}
+        self.unlatched: list[Part] = []
 
     # --- grounding -----------------------------------------------------------------
     def refuse(self, why: str) -> GroundingError:
@@ -134,7 +135,13 @@ class _Builder:
                 if mention.instrument and mention.category != "object":
                     parts.extend(p for p in self.ground(mention, clause.kind) if p not in parts)
         if clause.kind == "unlatch" or (clause.kind == "release" and re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text)):
+            hinged = [p for p in parts if p.category in HINGED]
             parts = [p for p in parts if p.category not in HINGED]  # "unlatch the door" does not move the door itself
+            if hinged:
+                self.unlatched = hinged  # "unlatch the door, then open it": "it" is the door
+                if not parts and required:  # ... but its latch does
+                    parts = [q for h in hinged for q in self.parts
+                             if q.category in UNLATCH_CATEGORIES and q.joint != h.joint and q.link in self.asset.descendants(h.link)][:1]
         if not parts:
             if not required:
                 return []
@@ -215,6 +222,12 @@ class _Builder:
         for goal in effects:
             if goal.category not in HINGED:
                 continue
+            door = self.obj.joints[goal.joint]
+            now = self.state.get(goal.joint, door.rest)
+            if door.closed_value is not None and abs(now - door.closed_value) > REACHED_TOLERANCE:
+                continue  # already ajar: nothing holds it shut
+            if any(p.joint in self.mentioned and p.category in UNLATCH_CATEGORIES and p.link in self.asset.descendants(goal.link) for p in self.parts):
+                continue  # its latch was already worked ("unlock it with the handle, then open the door")
             for part in self.parts:
                 below = part.link in self.asset.descendants(goal.link) and part.joint != goal.joint
                 if below and part.category in UNLATCH_CATEGORIES and part.joint not in self.mentioned:
@@ -246,6 +259,8 @@ class _Builder:
             means = None
         if means is None:
             means = self.instrument_means(clause)
+        if means is not None and clause.kind == "release" and not re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text):
+            clause = replace(clause, kind="open", verb="open")  # "release the door by pressing the button": it pops open
         kind = effective_kind(clause.kind, clause.particle)
         controls = self.goals(means, "control", means.quantity) if means else []
         effects = self.goals(clause, "effect" if controls else None, quantity, required=not controls)
@@ -280,6 +295,9 @@ class _Builder:
         primitive = (means.verb if means else clause.verb) or clause.kind or "move"
         moved = effects or controls
         self.last_parts = [p for p in self.parts if any(g.joint == p.joint for g in moved)]
+        if self.unlatched and not effects:
+            self.last_parts = list(self.unlatched)
+        self.unlatched = []
         self.last_controls = [p for p in self.parts if any(g.joint == p.joint for g in controls)]
         self.state.update({g.joint: g.value for g in moved if g.value is not None})
         for control in controls:  # a control that springs back ends at rest

@@ -99,6 +99,9 @@ def _turn_angle(text: str) -> float | None:
     for phrase, turns in _SPECIAL:
         if phrase in text:
             return 2 * math.pi * turns
+    counted = re.search(r"\b(twice|thrice)\b", text)
+    if counted:
+        return 2 * math.pi * (2 if counted.group(1) == "twice" else 3)
     if re.search(r"\bunscrew|\bloosen", text):
         return 2 * math.pi
     return None
@@ -164,7 +167,7 @@ def parse_quantity(clause: str) -> Quantity:
         orientation = "flat"
     return Quantity(
         orientation=orientation,
-        fraction=None if angle is not None else _amount(text),
+        fraction=None if angle is not None else _amount(clause) if _amount(clause) is not None else _amount(text),
         angle_rad=angle,
         distance_m=distance,
         omega_radps=_omega(text),

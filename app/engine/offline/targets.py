@@ -66,8 +66,11 @@ def _pressed(geometry: JointGeometry, category: str | None, particle: str | None
 def rotation_sign(geometry: JointGeometry, sense: str | None, obj: ObjectGeometry) -> float:
     """+1 or -1: the joint direction that turns the part clockwise (default) or counter-clockwise
     as seen by a viewer facing the face the part sits on."""
-    if abs(float(geometry.axis_world @ obj.up)) > VERTICAL_AXIS:
+    lean = float(geometry.axis_world @ obj.up)
+    if abs(lean) > VERTICAL_AXIS:
         facing = obj.up  # turntables, caps, faucet handles: seen from above
+    elif geometry.category in ("knob", "handle", "latch") and 0.2 < abs(lean) <= VERTICAL_AXIS:
+        facing = geometry.axis_world if lean > 0 else -geometry.axis_world  # a knob on a tilted panel faces up and out
     elif np.linalg.norm(geometry.face_normal) > 0 and abs(float(geometry.face_normal @ obj.up)) < VERTICAL_AXIS:
         facing = geometry.face_normal
     else:
@@ -160,9 +163,16 @@ def goal_value(
     if kind in ("open", "pull_out") and opened is not None and category not in PUSH_CATEGORIES:
         return _toward(geometry, closed, opened, quantity, now)
     if kind in ("close", "push_in") and category not in PUSH_CATEGORIES and (opened is not None or kind == "close"):
+        # "close the door halfway / 45 degrees": an amount is measured from where the part is now
+        partial = (quantity.fraction is not None and quantity.fraction < 1.0) or quantity.angle_rad is not None or quantity.distance_m is not None
+        if partial and abs(now - closed) > LIMIT_EPS:
+            return _toward(geometry, now, closed, quantity, now)
         return closed
-    if kind == "raise" and geometry.up_value is not None:
+    if kind == "raise" and geometry.up_value is not None and not (opened is not None and abs(geometry.up_value - now) <= LIMIT_EPS):
         return _toward(geometry, geometry.rest, geometry.up_value, quantity, now)
+    if kind == "raise" and opened is not None and category not in PUSH_CATEGORIES:
+        # a lid that flips all the way back ends lower than it starts: "lift the lid" still opens it
+        return _toward(geometry, closed, opened, quantity, now)
     if kind == "lower" and geometry.down_value is not None:
         return _toward(geometry, geometry.rest, geometry.down_value, quantity, now)
     if kind == "release":

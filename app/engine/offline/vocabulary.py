@@ -90,11 +90,11 @@ VERBS: dict[str, str] = {
     "stamp": "press", "lay": "lower", "take": "pull_out", "remove": "pull_out", "run": "spin", "start": "spin", "type": "press", "enter": "press", "punch": "press", "fall": "lower", "spring": "release", "snap": "release",
     "bounce": "release", "return": "release", "swivel": "turn", "pivot": "turn", "screw": "turn",
     "unscrew": "turn", "loosen": "turn", "tighten": "turn", "reopen": "open", "raise_up": "raise",
-    "unlatch": "unlatch", "unlock": "unlatch", "unhook": "unlatch", "unbolt": "unlatch",
+    "tip": "lower", "tow": "move", "haul": "move", "unlatch": "unlatch", "unlock": "unlatch", "unhook": "unlatch", "unbolt": "unlatch",
 }
 # verb forms -> lemma (regular -s/-ed/-ing endings are handled by ``lemma``)
 IRREGULAR: dict[str, str] = {
-    "shut": "shut", "shutting": "shut", "let": "let", "letting": "let", "swung": "swing", "spun": "spin",
+    "tipped": "tip", "tipping": "tip", "shut": "shut", "shutting": "shut", "let": "let", "letting": "let", "swung": "swing", "spun": "spin",
     "drew": "draw", "drawn": "draw", "put": "put", "putting": "put", "set": "set", "setting": "set",
     "drove": "drive", "driven": "drive", "lifted": "lift", "stepped": "step", "stepping": "step",
     "dropped": "drop", "dropping": "drop", "tapped": "tap", "tapping": "tap", "slid": "slide",
@@ -125,9 +125,9 @@ PARTICLES: dict[str, str] = {
 }
 
 SPATIAL: dict[str, str] = {
-    "top": "top", "upper": "top", "uppermost": "top", "topmost": "top", "higher": "top", "highest": "top",
-    "bottom": "bottom", "lower": "bottom", "lowest": "bottom", "bottommost": "bottom",
-    "left": "left", "leftmost": "left", "right": "right", "rightmost": "right",
+    "top": "top", "upper": "top", "uppermost": "topmost", "topmost": "topmost", "higher": "top", "highest": "topmost",
+    "bottom": "bottom", "lower": "bottom", "lowest": "bottommost", "bottommost": "bottommost",
+    "left": "left", "leftmost": "leftmost", "right": "right", "rightmost": "rightmost",
     "front": "front", "back": "back", "rear": "back", "middle": "middle", "center": "middle", "centre": "middle",
     "inner": "inner", "inside": "inner", "internal": "inner", "outer": "outer",
 }

@@ -51,6 +51,26 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- generalisation probes (all pass with /tmp/probe/offline_generalisation.patch) ---
+    R("storage_27044", "pull the nightstand drawer three quarters of the way out", joints={"joint_0": E(end=0.75 * 0.684)}),
+    R("refrigerator_11178", "swing the fridge door on the left halfway open", joints={"joint_0": E(end=PI / 2), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "open the right door first, then the left one", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("laptop_10697", "close the laptop halfway", joints={"joint_1": E(end=-1.954 / 2)}),
+    R("door_8877", "close the door 45 degrees", joints={"joint_1": E(end=-PI / 4)}),
+    R("bucket_100454", "tip the bucket handle over to the +X side", joints={"joint_0": E(end="upper")}),
+    R("trash_can_102181", "press the pedal to raise the lid", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("trash_can_102181", "step on the pedal to lift the lid, then take your foot off", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),
+    R("examples/microwave", "release the door by pushing the button", joints={"release_button_slide": E(peak="upper"), "door_hinge": E(end="upper")}),
+    R("examples/cabinet", "unlatch the door and open it", joints={"latch_knob_turn": E(peak="lower"), "door_hinge": E(end="lower")}),
+    R("examples/cabinet", "turn the knob to unlatch the door, then open it", joints={"door_hinge": E(end="lower")}),
+    R("safe_101593", "unlock the safe by turning the handle, then open the door", joints={"joint_1": E(moves=True), "joint_2": E(still=True), "joint_0": E(end="upper")}),
+    R("safe_102387", "open the safe door fully", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # door is ajar at rest
+    R("washing_machine_103508", "turn the rightmost knob 45 degrees clockwise", joints={"joint_1": E(end=PI / 4), "joint_2": E(still=True)}),
+    R("washing_machine_103508", "Shut the washer lid first, then rotate the leftmost small knob 90 degrees counterclockwise", joints={"joint_3": E(end=-PI / 2), "joint_2": E(still=True)}),
+    R("microwave_7119", "make the glass tray rotate twice", joints={"joint_1": E(abs_end=4 * PI)}),
+    R("trash_can_102155", "tow the bin 2 m forward by the handle", base=(-2.0, 0.0, 0.0), joints={"joint_0": E(moves=True)}),
+    R("toaster_103483", "turn the toaster knob", refuse=True),
+    R("storage_27044", "open the second drawer", refuse=True),
     # --- pedal bin (PartNet): pedal -> lid, the pedal holds the lid open ---
     R("trash_can_102181", "press the pedal to open the lid", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
     R("trash_can_102181", "Step on the foot pedal", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
