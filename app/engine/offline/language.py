@@ -79,6 +79,8 @@ class Action:
     clause: Clause
     means: Clause | None = None
     parallel: bool = False
+    conjoined: bool = False
+    """Joined to the previous action by "and" / a comma ("pick up the bucket and raise it 50 cm")."""
 
 
 @dataclass(frozen=True)
@@ -424,5 +426,5 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
                         # "open the left door, then the right door": the verb carries over
                         previous = actions[-1].clause
                         clause = replace(clause, verb=previous.verb, kind=previous.kind, particle=previous.particle)
-                    actions.append(Action(clause=clause, means=action.means, parallel=parallel))
+                    actions.append(Action(clause=clause, means=action.means, parallel=parallel, conjoined=piece_index > 0))
     return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

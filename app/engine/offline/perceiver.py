@@ -17,12 +17,14 @@ import logging
 import re
 from dataclasses import replace
 
+import numpy as np
+
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.offline.base_motion import base_goal
 from app.engine.offline.geometry import ObjectGeometry, analyse
 from app.engine.offline.grounding import Part, ground_mention, movable_parts, openable_parts
-from app.engine.offline.intent import Intent, JointGoal, Step
+from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Step
 from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
 from app.engine.offline.quantities import Quantity
 from app.engine.offline.targets import effective_kind, goal_value, spin_omega, target_expression
@@ -38,6 +40,13 @@ REACHED_TOLERANCE = 1e-6
 PRONOUNS = frozenset({"it", "them", "one"})
 EVERYTHING = re.compile(r"\b(?:everything|all (?!the way)\w+|all$|every (?:door|drawer|lid|part))")
 MANUAL = re.compile(r"\b(?:by hand|manually|with (?:my|your|one|a) hand|without (?:using |pressing |touching )?the)\b")
+SWITCHED = re.compile(
+    r"\b(?:turn|switch|flip|toggle|twist|put|shut)(?:s|ed|ing)?\s+(on|off)\b"
+    r"|\b(?:turn|switch|flip|toggle|twist|put|shut)(?:s|ed|ing)?\s+(?:[a-z'-]+\s+){1,3}?(on|off)\s*(?:$|[,.;]|\b(?:and|then|again|fully|completely|now)\b)"
+)
+""""turn on the tap", "switch the light off": the object's control to its on / off state."""
+SCREW_AXIS_MIN_UP = 0.7
+"""|axis . up| above this: a lid turning about a vertical axis is a screw cap."""
 OBJECT_VERBS = frozenset({"roll", "drag", "carry", "pick", "transport", "drive", "move", "lift", "shove", "wheel", "tow"})
 
 
@@ -59,6 +68,7 @@ class _Builder:
         self.implicit_effects_at: dict[str, int] = {}
         self.state: dict[str, float] = {}
         self.unlatched: list[Part] = []
+        self.last_base_quantified = True
 
     # --- grounding -----------------------------------------------------------------
     def refuse(self, why: str) -> GroundingError:
@@ -76,6 +86,14 @@ class _Builder:
             openable = openable_parts(self.parts)
             if kind in ("open", "close") and openable:
                 return openable if mention.plural or EVERYTHING.search(self.clause_text) else openable[:1]
+            if kind in ("open", "close"):
+                caps = [p for p in self.parts if self._is_screw_cap(p)]
+                if caps:  # "open the bottle": its cap unscrews
+                    return caps if mention.plural or EVERYTHING.search(self.clause_text) else caps[:1]
+            if self._switched(self.clause_text) is not None:
+                controls = [p for p in self.parts if p.category in CONTROL_CATEGORIES]
+                if len(controls) == 1:  # "turn on the tap": the object's only control
+                    return controls
             return []
         if mention.size is None and mention.head.startswith("dial") and "handle" in self.words:
             mention = replace(mention, size="small")  # a dial named beside a handle is the smaller of the two
@@ -91,8 +109,32 @@ class _Builder:
         return found
 
     # --- goals ---------------------------------------------------------------------
+    @staticmethod
+    def _switched(text: str) -> str | None:
+        """``on`` / ``off`` when the clause switches something on or off."""
+        match = SWITCHED.search(text)
+        return None if match is None else (match.group(1) or match.group(2))
+
+    def _is_screw_cap(self, part: Part) -> bool:
+        """A lid with no open side that turns about the vertical: opening it means unscrewing it."""
+        geometry = part.geometry
+        return (part.category == "lid" and geometry.open_value is None and geometry.type in ("revolute", "continuous")
+                and abs(float(geometry.axis_world @ self.obj.up)) > SCREW_AXIS_MIN_UP)
+
     def goal(self, part: Part, clause: Clause, role: str, quantity: Quantity) -> JointGoal:
         kind = clause.kind or "operate"
+        effective = effective_kind(kind, clause.particle)
+        if effective in ("open", "close") and quantity.sense is None and self._is_screw_cap(part):
+            # a screw cap opens by unscrewing (counter-clockwise from above) and closes by screwing it on
+            kind, quantity = "turn", replace(quantity, sense="ccw" if effective == "open" else "cw")
+        switched = self._switched(clause.text) if part.category in CONTROL_CATEGORIES else None
+        if switched == "off":
+            # "turn off the tap": the control goes back to its rest (off) state
+            now = self.state.get(part.joint, part.geometry.rest)
+            if abs(now - part.geometry.rest) < REACHED_TOLERANCE:
+                self.notes.append(f"{part.joint} is already off (at rest)")
+            return JointGoal(part.joint, part.link, part.category, role, value=part.geometry.rest,  # type: ignore[arg-type]
+                             expr=target_expression(part.geometry, part.geometry.rest), returns="stays")
         value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, self.state.get(part.joint))
         returns = CONTROL_RETURN.get(part.category or "", "stays") if role == "control" else "stays"
         if returns == "self_return" and (quantity.orientation is not None or (part.category == "handle" and not self._on_hinged(part))):
@@ -249,6 +291,10 @@ class _Builder:
             return
         if self.is_base(clause) and action.means is None:
             motion = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
+            quantified = quantity.distance_m is not None or (quantity.speed_mps is not None and quantity.duration_s is not None)
+            if self.elaborates(action, clause, motion, quantified):
+                return
+            self.last_base_quantified = quantified
             self.steps.append(Step(primitive=clause.verb or "move", base=motion, parallel=action.parallel, speed_factor=quantity.speed_factor, duration_s=quantity.duration_s))
             return
         means = action.means
@@ -309,6 +355,21 @@ class _Builder:
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def elaborates(self, action: Action, clause: Clause, motion: BaseGoal, quantified: bool) -> bool:
+        """ "Pick up the bucket and raise it 50 cm": a conjoined motion of the same object ("it") the
+        same way only gives the distance of the previous, unquantified motion; it replaces it."""
+        previous = self.steps[-1] if self.steps else None
+        targets = [m for m in clause.mentions if not m.instrument]
+        if (not action.conjoined or previous is None or previous.base is None or self.last_base_quantified or not quantified
+                or not targets or targets[0].head not in PRONOUNS):
+            return False
+        if float(np.asarray(previous.base.axis) @ np.asarray(motion.axis)) < 1.0 - 1e-6:
+            return False
+        self.steps[-1] = replace(previous, base=replace(motion, coast=motion.coast or previous.base.coast))
+        self.last_base_quantified = True
+        self.notes.append(f"read '{clause.text}' as the distance of the previous motion")
+        return True
 
     def instrument_means(self, clause: Clause) -> Clause | None:
         """ "Open the microwave with its release button": a control named as the tool is the means."""

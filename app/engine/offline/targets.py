@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.base_motion import wheel_rates
+from app.engine.offline.base_motion import HORIZONTAL_AXIS_MAX_UP, wheel_rates
 from app.engine.offline.geometry import JointGeometry, ObjectGeometry
 from app.engine.offline.grounding import Part
 from app.engine.offline.orientation import directional_sign, orientation_value
@@ -65,8 +65,13 @@ def _pressed(geometry: JointGeometry, category: str | None, particle: str | None
 
 def rotation_sign(geometry: JointGeometry, sense: str | None, obj: ObjectGeometry) -> float:
     """+1 or -1: the joint direction that turns the part clockwise (default) or counter-clockwise
-    as seen by a viewer facing the face the part sits on."""
+    as seen by a viewer facing the face the part sits on. A wheel turned without a sense turns the
+    way it rolls when the object moves forward, so wheels on opposite sides (opposite axes) agree."""
     lean = float(geometry.axis_world @ obj.up)
+    if sense is None and geometry.category == "wheel" and abs(lean) <= HORIZONTAL_AXIS_MAX_UP:
+        rolling = float(obj.front @ np.cross(geometry.axis_world, obj.up))
+        if abs(rolling) > 1e-6:
+            return 1.0 if rolling > 0 else -1.0
     if abs(lean) > VERTICAL_AXIS:
         facing = obj.up  # turntables, caps, faucet handles: seen from above
     elif geometry.category in ("knob", "handle", "latch") and 0.2 < abs(lean) <= VERTICAL_AXIS:
