@@ -117,6 +117,10 @@ class ArtimoClient:
         response = self._request("POST", "/v1/assets", files=[("asset", _asset_part(Path(asset)))])
         return dict(response.json())
 
+    def asset_summary(self, ref: str) -> JobDict:
+        """An uploaded asset's joints (type, links, axis, limits), link labels and sizes."""
+        return dict(self._request("GET", f"/v1/assets/{ref}/summary").json())
+
     def submit(self, asset: Path | str, prompt: str, **options: Any) -> JobDict:
         """Submit a job; ``asset`` is a folder, a .zip, or an uploaded asset's id/sha256.
 

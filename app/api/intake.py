@@ -18,12 +18,14 @@ from pathlib import Path, PurePosixPath
 from fastapi.concurrency import run_in_threadpool
 from sqlalchemy.orm import Session
 
+from app.api.asset_summary import store_summary
 from app.api.errors import NotFound, Unprocessable
 from app.api.uploads import UploadedFile
 from app.core.storage import Storage, sha256_file
 from app.crud.assets import get_asset_for_client, get_or_create_asset
 from app.db.models import ApiClient, Asset
 from app.engine.asset.loader import load_asset
+from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import AssetError, EngineError
 
 logger = logging.getLogger(__name__)
@@ -94,10 +96,10 @@ def _display_zip_name(filename: str) -> str:
     return f"{name or PACKED_NAME[:-4]}.zip"
 
 
-def _validate(zip_path: Path) -> None:
+def _validate(zip_path: Path) -> ArticulatedAsset:
     """Load the asset like a worker would; every problem becomes a 422 naming file/element."""
     try:
-        load_asset(zip_path)
+        return load_asset(zip_path)
     except EngineError:
         raise
     except Exception as exc:  # route boundary: an unexpected loader failure is still the asset's fault
@@ -136,7 +138,8 @@ async def store_upload(
         return existing, False
     key = f"assets/{digest}.zip"
     if not storage.exists(key):
-        await run_in_threadpool(_validate, named)
+        loaded = await run_in_threadpool(_validate, named)
+        await run_in_threadpool(store_summary, storage, digest, loaded, PurePosixPath(display).stem)
         await run_in_threadpool(storage.put_file, key, named)
     return await run_in_threadpool(partial(
         get_or_create_asset, session, client=client, sha256=digest, filename=display,

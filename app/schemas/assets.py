@@ -6,6 +6,7 @@ import uuid
 
 from pydantic import BaseModel
 
+from app.engine.asset.summary import JointSummary, ScaleContext
 from app.schemas.common import UtcDatetime
 
 
@@ -19,3 +20,17 @@ class AssetPublic(BaseModel):
     created: bool = False
     """True when this request stored the asset; False when identical content was already there."""
     url: str
+    summary_url: str
+    """Its joints, link labels and sizes."""
+
+
+class AssetSummary(BaseModel):
+    """What the asset can do: ``GET /v1/assets/{ref}/summary``."""
+
+    joints: list[JointSummary]
+    """Every joint, as the paper's joint summary (type, parent/child link, axis, limits, origin, mimic)."""
+    scale: ScaleContext
+    """Object and link sizes in metres."""
+    links: list[str]
+    labels: dict[str, str]
+    """Link name -> part label (``semantics.txt`` or URDF visual names), where known."""

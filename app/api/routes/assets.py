@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 from fastapi import APIRouter, Path, Request, Response, status
+from fastapi.concurrency import run_in_threadpool
 
+from app.api.asset_summary import read_summary
 from app.api.deps import ClientDep, SessionDep, SettingsDep, StorageDep
 from app.api.errors import error_responses
 from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder
 from app.api.intake import asset_by_ref, store_upload
 from app.api.presenters import asset_public
-from app.schemas.assets import AssetPublic
+from app.schemas.assets import AssetPublic, AssetSummary
 
 router = APIRouter(prefix="/v1/assets", tags=["assets"])
 
@@ -42,3 +44,13 @@ def get_asset(
 ) -> AssetPublic:
     """An asset this client uploaded."""
     return asset_public(request, asset_by_ref(session, client=client, ref=ref))
+
+
+@router.get("/{ref}/summary", response_model=AssetSummary, responses=error_responses(401, 404, 429))
+async def get_asset_summary(
+    client: ClientDep, session: SessionDep, storage: StorageDep,
+    ref: str = Path(min_length=1, max_length=100, description="asset id or sha256"),
+) -> AssetSummary:
+    """Joints (type, links, axis, limits), link labels and sizes: what a prompt can name and move."""
+    asset = await run_in_threadpool(asset_by_ref, session, client=client, ref=ref)
+    return await run_in_threadpool(read_summary, storage, asset)

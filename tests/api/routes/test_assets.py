@@ -22,8 +22,8 @@ def test_zip_upload_is_stored_once_and_reused(http, alice, settings) -> None:
     again = _upload(http, alice.headers, assets.cabinet_zip())
     assert again.status_code == 200
     assert again.json()["id"] == body["id"] and again.json()["created"] is False
-    stored = list((settings.storage_dir / "assets").iterdir())
-    assert [p.name for p in stored] == [f"{body['sha256']}.zip"]
+    stored = sorted(p.name for p in (settings.storage_dir / "assets").iterdir())
+    assert stored == [f"{body['sha256']}.summary.json", f"{body['sha256']}.zip"]
 
 
 def test_multi_file_upload_is_packed_deterministically(http, alice) -> None:
@@ -43,6 +43,27 @@ def test_asset_is_found_by_id_and_sha256_but_not_by_other_clients(http, alice, b
     assert http.get(f"/v1/assets/{body['id']}", headers=bob.headers).status_code == 404
     assert http.get(f"/v1/assets/{body['sha256']}", headers=bob.headers).status_code == 404
     assert http.get("/v1/assets/not-a-ref", headers=alice.headers).status_code == 404
+
+
+def test_summary_lists_joints_limits_and_sizes(http, alice, bob, settings) -> None:
+    body = _upload(http, alice.headers, assets.hinge_zip("-summary")).json()
+    summary = http.get(body["summary_url"], headers=alice.headers)
+    assert summary.status_code == 200, summary.text
+    data = summary.json()
+    (hinge,) = data["joints"]
+    assert hinge["joint_name"] == "lid_hinge" and hinge["type"] == "revolute"
+    assert (hinge["parent"], hinge["child"]) == ("base", "lid") and hinge["axis"] == [1.0, 0.0, 0.0]
+    assert (hinge["limit"]["lower"], hinge["limit"]["upper"]) == (0.0, 1.5)
+    assert data["links"] == ["base", "lid"]
+    assert data["scale"]["object_bbox_extents_m"] == pytest.approx([1.0, 1.0, 0.6], abs=1e-6)
+    assert http.get(f"/v1/assets/{body['sha256']}/summary", headers=bob.headers).status_code == 404
+    assert http.get("/v1/assets/not-a-ref/summary", headers=alice.headers).status_code == 404
+
+    # an asset stored before summaries existed gets its summary on first request, then keeps it
+    kept = settings.storage_dir / "assets" / f"{body['sha256']}.summary.json"
+    kept.unlink()
+    again = http.get(f"/v1/assets/{body['id']}/summary", headers=alice.headers)
+    assert again.status_code == 200 and again.json() == data and kept.is_file()
 
 
 def test_same_content_from_another_client_is_granted_not_duplicated(http, alice, bob) -> None:
