@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import re
 import signal
+import sqlite3
 import subprocess
 import sys
 from pathlib import Path
@@ -63,6 +64,8 @@ def test_serve_submit_wait_download_and_stop(tmp_path: Path) -> None:
         assert submitted.returncode == 0, submitted.stderr
         assert_valid([out / "animation.glb"])
         assert (data_dir / "artimo.db").is_file() and (data_dir / "broker.db").is_file()
+        with sqlite3.connect(data_dir / "broker.db") as broker:  # a delivered message leaves no row behind
+            assert broker.execute("SELECT count(*) FROM kombu_message").fetchone() == (0,)
         with ArtimoClient(url, match.group(1)) as client:
             assert client.list_jobs()["data"][0]["status"] == "succeeded"
         assert httpx.get(f"{url}/v1/animations", headers={"Authorization": "Bearer wrong"}).status_code == 401
