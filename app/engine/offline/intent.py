@@ -57,6 +57,8 @@ class Step:
     speed_factor: float = 1.0
     duration_s: float | None = None
     coupling: tuple[str, ...] = field(default_factory=tuple)
+    pause_before_s: float = 0.0
+    """Seconds the scene holds still before this step starts ("..., wait, then ...")."""
 
     @property
     def goals(self) -> tuple[JointGoal, ...]:

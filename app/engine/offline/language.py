@@ -98,6 +98,13 @@ def normalize(prompt: str) -> str:
     for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
         text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", _and_a_fraction(digits), text)
     text = _keypad(text)
+    # "..., wait (2 seconds), then ...": a pause of its own between the steps around it
+    text = _WAIT.sub(_pause, text)
+    # "back to where it started": a return, not a verb of its own
+    text = re.sub(r"\b(?:back\s+)?to (?:where (?:it|they|you|we) (?:started|began|was|were)|(?:its|their|the) (?:starting|original|initial) (?:point|position|place|spot))\b",
+                  "back", text)
+    # "the chest of drawers", "a bank of drawers": the drawers name the whole object
+    text = re.sub(r"\b(?:chest|cabinet|set|bank|unit|tower|stack)s? of drawers\b", "dresser", text)
     # "take your foot off (the pedal)", "lift your finger": the user lets go of what was pressed
     text = re.sub(
         r"\b(?:take|takes|taking|lift|lifts|lifting|remove|removes|removing|move|pull|raise)\s+(?:your|my|the|his|her|their|one's)\s+"
@@ -113,6 +120,20 @@ def normalize(prompt: str) -> str:
         r"(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)s?\b",
         _give, text)
     return re.sub(r"\s+", " ", text).strip()
+
+
+_WAIT = re.compile(
+    r",?\s*\b(?:and\s+)?(?:then\s+)?(?:wait|pause)(?:\s+for)?(?:\s+(?:about|roughly|around))?"
+    r"(?:\s+(\d+(?:\.\d+)?|an?|one|two|three|four|five|ten)\s*(?:s|secs?|seconds?)\b)?(?:\s+(?:for\s+)?an?\s+(?:moment|bit|while|beat))?\s*,?"
+)
+
+
+def _pause(match: re.Match[str]) -> str:
+    """ "wait 2 seconds" -> a sentence of its own: "pause for 2 seconds"."""
+    amount = match.group(1)
+    if amount is None:
+        return ". pause. "
+    return f". pause for {'1' if amount in ('a', 'an') else amount} seconds. "
 
 
 _HALF = {"one": "1", "two": "2", "three": "3", "four": "4", "five": "5"}
@@ -353,13 +374,35 @@ def _means_end(text: str) -> Action:
     effect = re.match(r"^(.*?)\s*,?\s+(?:so that|so|which makes|which|and|until|causing|making)\s+(?:the\s+|its\s+)?(.+)$", text)
     if effect and _verb(effect.group(1))[0]:
         goal = _effect_clause(effect.group(2))
+        if goal is not None and goal.kind == "close" and _verb(effect.group(1))[1] == "release":
+            # "release it so the lid shuts": letting go is the action; what it held falls back on its own
+            return Action(clause=parse_clause(effect.group(1)))
         if goal is not None:
             return Action(clause=goal, means=parse_clause(effect.group(1)))
     return Action(clause=parse_clause(text))
 
 
+_STATE = r"(?:while|whilst|as long as)\s+((?:the|its|their)\s+[\w\s'-]+?)\s+(?:is|are|stays|remains)\s+(?:still\s+)?(?:fully\s+)?(open|opened|closed|shut)"
+
+
+def _precondition(segment: str) -> list[str] | None:
+    """ "B while the door is open" / "while the door is open, B": a state to reach first, not a
+    parallel action ("open the door", then B); a state the object starts in adds nothing."""
+    match = re.match(r"^(.+?),?\s+" + _STATE + r"\s*$", segment) or re.match(r"^" + _STATE + r"\s*,\s*(.+)$", segment)
+    if match is None:
+        return None
+    if match.re.pattern.startswith("^(.+?)"):
+        action, subject, state = match.group(1), match.group(2), match.group(3)
+    else:
+        subject, state, action = match.group(1), match.group(2), match.group(3)
+    return [f"open {subject}", action] if state.startswith("open") else [action]
+
+
 def _ordered(segment: str) -> list[str]:
     """Reorder "after A-ing, B" / "B after A-ing" / "before B, A" into execution order."""
+    state = _precondition(segment)
+    if state is not None:
+        return state
     for pattern, order in (
         (r"^after\s+(.*?),\s*(.+)$", (1, 2)),
         (r"^once\s+(.*?),\s*(.+)$", (1, 2)),
@@ -400,6 +443,11 @@ def _resolve_one(piece: str, actions: list[Action]) -> str:
     return _ONE.sub(lambda m: m.group(1) + m.group(2) + heads[0], piece)
 
 
+def _measured(quantity: Quantity) -> bool:
+    """A clause that is only an amount ("then 0.3 m back", "then 90 degrees more")."""
+    return quantity.distance_m is not None or quantity.angle_rad is not None or quantity.fraction is not None
+
+
 def parse_prompt(prompt: str) -> ParsedPrompt:
     """Structured reading of a whole prompt, actions in execution order."""
     text = normalize(prompt)
@@ -426,5 +474,10 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
                         # "open the left door, then the right door": the verb carries over
                         previous = actions[-1].clause
                         clause = replace(clause, verb=previous.verb, kind=previous.kind, particle=previous.particle)
+                    elif clause.kind is None and action.means is None and not parts and actions and _measured(clause.quantity):
+                        # "push the car 0.3 m forward and then 0.3 m back": the verb and its object carry over
+                        previous = actions[-1].clause
+                        clause = replace(clause, verb=previous.verb, kind=previous.kind, particle=None,
+                                         mentions=clause.mentions or previous.mentions, unknown_object=None)
                     actions.append(Action(clause=clause, means=action.means, parallel=parallel, conjoined=piece_index > 0))
     return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

@@ -22,10 +22,11 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.offline.base_motion import base_goal
-from app.engine.offline.geometry import ObjectGeometry, analyse
+from app.engine.offline.geometry import JointGeometry, ObjectGeometry, analyse
 from app.engine.offline.grounding import Part, ground_mention, movable_parts, openable_parts
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Step
 from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
+from app.engine.offline.orientation import orientation_value
 from app.engine.offline.quantities import Quantity
 from app.engine.offline.targets import effective_kind, goal_value, spin_omega, target_expression
 from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, OBJECT_WORDS, UNLATCH_CATEGORIES
@@ -47,6 +48,10 @@ SWITCHED = re.compile(
 """"turn on the tap", "switch the light off": the object's control to its on / off state."""
 SCREW_AXIS_MIN_UP = 0.7
 """|axis . up| above this: a lid turning about a vertical axis is a screw cap."""
+DEFAULT_PAUSE_S = 1.0
+"""A "wait" without a length."""
+DISPLACING_VERBS = frozenset({"push", "hit", "punch", "kick", "shove", "nudge"})
+"""Press-type verbs that also move a whole object that is free to move."""
 OBJECT_VERBS = frozenset({"roll", "drag", "carry", "pick", "transport", "drive", "move", "lift", "shove", "wheel", "tow"})
 
 
@@ -69,6 +74,7 @@ class _Builder:
         self.state: dict[str, float] = {}
         self.unlatched: list[Part] = []
         self.last_base_quantified = True
+        self.pauses: dict[int, float] = {}
 
     # --- grounding -----------------------------------------------------------------
     def refuse(self, why: str) -> GroundingError:
@@ -213,6 +219,9 @@ class _Builder:
         directional = quantity.direction in ("forward", "backward", "left", "right") and clause.particle not in ("in", "out", "open", "shut")
         if pronoun and not (quantity.axis is not None or clause.verb in OBJECT_VERBS or directional):
             return False
+        if clause.kind == "press" and clause.verb not in DISPLACING_VERBS and not (
+                quantity.axis is not None or quantity.distance_m is not None or quantity.direction is not None):
+            return False  # "squeeze the bottle", "tap the box": pressing in place does not carry the object away
         return clause.kind in BASE_KINDS or (clause.kind in ("open", "close") and not openable_parts(self.parts) and clause.particle in ("up", "down"))
 
     # --- causal knowledge ----------------------------------------------------------
@@ -283,6 +292,10 @@ class _Builder:
         clause = action.clause
         self.clause_text = clause.text
         quantity = replace(clause.quantity, speed_factor=clause.quantity.speed_factor if clause.quantity.speed_factor != 1.0 else self.parsed.quantity.speed_factor)
+        if clause.kind is None and action.means is None and re.match(r"pause\b", clause.text):
+            # "..., wait (2 seconds), then ...": the next step starts that much later
+            self.pauses[len(self.steps)] = self.pauses.get(len(self.steps), 0.0) + (quantity.duration_s or DEFAULT_PAUSE_S)
+            return
         if clause.kind is None and action.means is None:
             self.notes.append(f"ignored '{clause.text}' (no action found)")
             named = [p for m in clause.mentions if m.category != "object" for p in ground_mention(m, self.asset, self.obj, self.parts, self.words)]
@@ -313,10 +326,13 @@ class _Builder:
         if clause.kind == "release":
             effects = self.release(self.hold_until_released(effects))
         if not controls and self.refine_implicit(effects):
+            self.hold_for(clause, quantity)
             return
         implied: list[JointGoal] = []
+        control_amount, effect_amount = _has_amount(means.quantity) if means else False, _has_amount(quantity)
         if controls and not effects:
             effects = implied = self.implicit_effects(controls)
+            effect_amount = False
         if not controls:
             direct_controls = [g for g in effects if g.role == "control"]
             effects = [g for g in effects if g.role != "control"]
@@ -326,10 +342,12 @@ class _Builder:
             controls = direct_controls + implicit
             if direct_controls and not effects:
                 effects = implied = self.implicit_effects(direct_controls)
+                control_amount, effect_amount = effect_amount, False
         if not controls and not effects:
             raise self.refuse(f"nothing in '{clause.text}' names a part to move")
         controls, effects = self.drop_reached(controls), self.drop_reached(effects)
         if not controls and not effects:
+            self.hold_for(clause, quantity)
             return
         for prerequisite in self.prerequisites(effects):
             self.steps.append(prerequisite)
@@ -337,6 +355,7 @@ class _Builder:
             controls = self.unlatch_controls(effects, kind)
             effects = [replace(g, role="effect") for g in effects] if controls else effects
         controls = self.sustain(controls, effects)
+        controls, effects = self.couple_amounts(controls, effects, control_amount, effect_amount)
         coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
         primitive = (means.verb if means else clause.verb) or clause.kind or "move"
         moved = effects or controls
@@ -355,6 +374,11 @@ class _Builder:
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def hold_for(self, clause: Clause, quantity: Quantity) -> None:
+        """"hold the lid open for two seconds": what it names is already there; the next step waits that long."""
+        if clause.verb in ("hold", "keep", "leave") and quantity.duration_s:
+            self.pauses[len(self.steps)] = self.pauses.get(len(self.steps), 0.0) + quantity.duration_s
 
     def elaborates(self, action: Action, clause: Clause, motion: BaseGoal, quantified: bool) -> bool:
         """ "Pick up the bucket and raise it 50 cm": a conjoined motion of the same object ("it") the
@@ -448,6 +472,52 @@ class _Builder:
             out.append(control)
         return out
 
+    def couple_amounts(self, controls: list[JointGoal], effects: list[JointGoal], control_amount: bool,
+                       effect_amount: bool) -> tuple[list[JointGoal], list[JointGoal]]:
+        """A pedal and the lid it lifts move in proportion: the fraction of the pedal's travel is the
+        fraction of the lid's opening (up to upright, or its open limit when that comes first). When
+        only one side states an amount, the other follows it; with none (or both) nothing changes."""
+        if control_amount == effect_amount:
+            return controls, effects
+        pedals = [c for c in controls if c.category == "pedal" and c.value is not None]
+        lids = [e for e in effects if e.category in HINGED and e.value is not None]
+        if len(pedals) != 1 or not lids:
+            return controls, effects
+        pedal = pedals[0]
+        pedal_part = next(p for p in self.parts if p.joint == pedal.joint)
+        full = goal_value("press", None, pedal_part, Quantity(), self.obj, self.asset)
+        rest = pedal_part.geometry.rest
+        if full is None or abs(full - rest) < REACHED_TOLERANCE:
+            return controls, effects
+        if control_amount:
+            fraction = (pedal.value - rest) / (full - rest)  # type: ignore[operator]
+            coupled = []
+            for effect in effects:
+                if effect in lids:
+                    geometry = next(p for p in self.parts if p.joint == effect.joint).geometry
+                    closed, span = self._lid_span(geometry)
+                    value = closed + fraction * span
+                    effect = replace(effect, value=value, expr=target_expression(geometry, value))
+                coupled.append(effect)
+            self.notes.append(f"{lids[0].joint} opens the fraction {fraction:.3g} its pedal is pressed")
+            return controls, coupled
+        geometry = next(p for p in self.parts if p.joint == lids[0].joint).geometry
+        closed, span = self._lid_span(geometry)
+        fraction = min(max((lids[0].value - closed) / span, 0.0), 1.0) if abs(span) > REACHED_TOLERANCE else 1.0  # type: ignore[operator]
+        value = rest + fraction * (full - rest)
+        self.notes.append(f"{pedal.joint} is pressed the fraction {fraction:.3g} its lid opens")
+        pressed = replace(pedal, value=value, expr=target_expression(pedal_part.geometry, value))
+        return [pressed if c is pedal else c for c in controls], effects
+
+    def _lid_span(self, geometry: JointGeometry) -> tuple[float, float]:
+        """(closed value, signed opening a fully pressed pedal gives): to upright, or the open limit if nearer."""
+        closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
+        opened = geometry.open_value if geometry.open_value is not None else closed
+        upright = orientation_value(self.asset, geometry, "vertical", opening=True)
+        if upright is not None and abs(upright - closed) > REACHED_TOLERANCE and abs(upright - closed) < abs(opened - closed):
+            return closed, upright - closed
+        return closed, opened - closed
+
     def release(self, goals: list[JointGoal]) -> list[JointGoal]:
         """Releasing a sustaining control also lets what it holds fall back (a pedal's lid)."""
         extra = []
@@ -459,6 +529,11 @@ class _Builder:
                     extra.append(self.goal(part, closing, "effect", Quantity()))
                     del self.sustained[effect_joint]
         return [replace(g, role="control") for g in goals] + extra
+
+
+def _has_amount(quantity: Quantity) -> bool:
+    """The clause says how far (a fraction, an angle, a distance or an end orientation)."""
+    return any(v is not None for v in (quantity.fraction, quantity.angle_rad, quantity.distance_m, quantity.orientation))
 
 
 def _merge_unlatch(steps: list[Step], asset: ArticulatedAsset) -> list[Step]:
@@ -495,4 +570,5 @@ def read_intent(prompt: str, asset: ArticulatedAsset) -> Intent:
         builder.add(action)
     if not builder.steps:
         raise builder.refuse(f"could not find an action in '{prompt}'")
-    return Intent(prompt=prompt, steps=tuple(_merge_unlatch(builder.steps, asset)), notes=tuple(builder.notes))
+    steps = [replace(step, pause_before_s=builder.pauses[index]) if index in builder.pauses else step for index, step in enumerate(builder.steps)]
+    return Intent(prompt=prompt, steps=tuple(_merge_unlatch(steps, asset)), notes=tuple(builder.notes))

@@ -195,6 +195,10 @@ def goal_value(
 def spin_omega(part: Part, quantity: Quantity, obj: ObjectGeometry) -> tuple[float, float]:
     """(omega rad/s, duration s) of a spin request."""
     sign = rotation_sign(part.geometry, quantity.sense, obj)
+    if quantity.sense is None and part.category == "wheel" and quantity.direction in ("forward", "backward"):
+        rates = wheel_rates([part], obj.front if quantity.direction == "forward" else -obj.front, obj)  # the way it rolls
+        if rates and abs(rates[0][1]) > 0:
+            sign = 1.0 if rates[0][1] > 0 else -1.0
     if quantity.omega_radps is not None:
         omega = quantity.omega_radps
         duration = quantity.duration_s or (abs(quantity.angle_rad / omega) if quantity.angle_rad else DEFAULT_SPIN_S)

@@ -245,6 +245,24 @@ ROWS: list[Row] = [
     R("bucket_100454", "xyzzy plugh", refuse=True),
     R("stapler_103099", "spin the propeller", refuse=True),
     R("laptop_10101", "open the flux capacitor", refuse=True),
+    # --- blind probe 2: coupled amounts, release clauses, object names, carried amounts, preconditions ---
+    R("trash_can_102181", "Push the pedal a quarter of the way down so the lid cracks open.",
+      joints={"joint_0": E(end=0.25 * 0.57177), "joint_1": E(end=0.25 * PI / 2)}, order=(("joint_0", "joint_1"),)),
+    R("examples/pedal_bin", "Press the pedal a third of the way down.", joints={"pedal_pivot": E(end=0.35 / 3), "lid_hinge": E(end=-1.4 / 3)}),
+    R("trash_can_102181", "Open the bin lid with the foot pedal to 45 degrees and keep it there.",
+      joints={"joint_0": E(end=0.285885), "joint_1": E(end=PI / 4)}, order=(("joint_0", "joint_1"),)),
+    R("examples/pedal_bin", "Stomp on the pedal so the lid opens, then release it so the lid shuts.",
+      joints={"pedal_pivot": E(peak="upper"), "lid_hinge": E(peak="lower")}),
+    R("storage_19179", "Slide the chest of drawers 0.5 m along +X.", base=(0.5, 0.0, 0.0), joints={"joint_0": E(still=True), "joint_1": E(still=True)}),
+    R("storage_19179", "push the bank of drawers 20 cm along -Y", base=(0.0, -0.2, 0.0), joints={"joint_0": E(still=True), "joint_1": E(still=True)}),
+    R("examples/toy_car", "Push the car 0.3 m forward and then 0.3 m back to where it started.", base=(0.0, 0.0, 0.0)),
+    R("examples/toy_car", "Spin the rear right wheel a half turn backward by hand.",
+      joints={"wheel_rear_right_axle": E(end=PI), "wheel_rear_left_axle": E(still=True)}),
+    R("examples/toy_car", "spin the front left wheel a half turn forward", joints={"wheel_front_left_axle": E(end=PI)}),
+    R("bottle_cap_3558", "Squeeze the bottle.", refuse=True),
+    R("examples/microwave", "Spin the turntable a half turn counterclockwise while the door is open.",
+      joints={"door_hinge": E(end="upper"), "turntable_spin": E(end=PI)}, order=(("door_hinge", "turntable_spin"),)),
+    R("microwave_7304", "Open the microwave door 90 degrees, wait, then shut it.", joints={"joint_1": E(peak=PI / 2)}),
 ]
 
 
@@ -308,3 +326,30 @@ def test_table_is_large_and_varied() -> None:
     assert len(ROWS) >= 80
     assert sum(r.refuse for r in ROWS) >= 6
     assert len({r.asset for r in ROWS}) >= 25
+
+
+def _duration(asset_name: str, prompt: str) -> float:
+    return float(animate(asset_name, prompt).trajectory.duration_s)
+
+
+@pytest.mark.parametrize(("prompt", "extra"), [
+    ("Open the microwave door 90 degrees, wait, then shut it.", 0.5),
+    ("open the microwave door 90 degrees, wait two seconds, then shut it", 2.0),
+])
+def test_wait_holds_between_steps(prompt: str, extra: float) -> None:
+    """ "..., wait (N seconds), then ...": the scene holds still between the two steps."""
+    plain = _duration("microwave_7304", "Open the microwave door 90 degrees, then shut it.")
+    assert _duration("microwave_7304", prompt) >= plain + extra - 1e-6
+
+
+def test_hold_for_a_time_waits() -> None:
+    plain = _duration("trash_can_102181", "Step on the pedal, then let go.")
+    held = _duration("trash_can_102181", "Step on the pedal, hold the lid open for two seconds, then let go.")
+    assert held >= plain + 2.0 - 1e-6
+
+
+def test_carried_amount_returns_to_start() -> None:
+    """ "0.3 m forward and then 0.3 m back": the base goes out and comes back."""
+    trajectory = animate("examples/toy_car", "Push the car 0.3 m forward and then 0.3 m back to where it started.").trajectory
+    assert float(trajectory.base_translation[:, 0].max()) == pytest.approx(0.3, abs=0.01)
+    assert float(trajectory.base_translation[-1, 0]) == pytest.approx(0.0, abs=0.01)
