@@ -1,6 +1,6 @@
 """Load benchmark of the REST service on loopback: status-poll latency, job throughput, worker memory.
 
-``python -m benchmark.load_service [--clients 200] [--jobs 60] [--api-processes 1] [--database-url URL --redis-url URL]``
+``python -m benchmark.load_service [--clients 200] [--jobs 60] [--api-processes 2] [--database-url URL --redis-url URL]``
 
 Starts its own stack in a temporary data dir (migrations, uvicorn, Celery
 workers as subprocesses; embedded SQLite database and broker unless Postgres/Redis URLs
@@ -238,7 +238,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--polls", type=int, default=20, help="polls per client (default 20)")
     parser.add_argument("--interval", type=float, default=1.0, help="seconds between one client's polls (default 1.0)")
     parser.add_argument("--jobs", type=int, default=60, help="jobs per throughput run (default 60)")
-    parser.add_argument("--api-processes", type=int, default=1, help="uvicorn processes (default 1)")
+    parser.add_argument("--api-processes", type=int, default=2, help="uvicorn processes (default 2, as docker-compose and `artimo serve --api-processes 2` run the API)")
     parser.add_argument("--workers", default="1,2", help="worker process counts to measure (default 1,2)")
     parser.add_argument("--database-url", default=None, help="Postgres on loopback (default: embedded SQLite)")
     parser.add_argument("--redis-url", default=None, help="Redis on loopback (default: SQLite broker)")
