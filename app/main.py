@@ -36,6 +36,7 @@ def embedded(settings: Settings) -> bool:
 async def lifespan(app: FastAPI) -> AsyncIterator[None]:
     settings: Settings = app.state.settings or get_settings()
     configure_logging(settings)
+    settings.data_dir.mkdir(parents=True, exist_ok=True)  # embedded database, SQLite broker, default storage
     if embedded(settings):
         await run_in_threadpool(upgrade, settings.sqlalchemy_url)
         logger.info("embedded database ready at %s", settings.sqlalchemy_url)

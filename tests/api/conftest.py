@@ -37,6 +37,7 @@ def pg_url() -> Iterator[str]:
 def settings(pg_url: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Settings:
     """Settings of one test: the session's Postgres, storage in ``tmp_path``, no env key."""
     monkeypatch.delenv("ARTIMO_API_KEY", raising=False)
+    (tmp_path / "data").mkdir(exist_ok=True)  # as the service makes it at start-up: the SQLite broker lives there
     return Settings(
         auth_cache_s=0.0,
         _env_file=None,  # type: ignore[call-arg]

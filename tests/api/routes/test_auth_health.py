@@ -66,6 +66,13 @@ def test_readyz_is_503_when_the_broker_is_down(settings) -> None:
     assert response.status_code == 503 and response.json()["checks"]["broker"] == "unreachable"
 
 
+def test_readyz_is_503_when_the_sqlite_broker_cannot_be_opened(settings) -> None:
+    (settings.data_dir / "broker.db").mkdir(parents=True)  # a folder where the broker's database file should be
+    with TestClient(create_app(settings)) as http:
+        response = http.get("/readyz")
+    assert response.status_code == 503 and response.json()["checks"]["broker"] == "unreachable"
+
+
 def test_readyz_is_503_when_the_database_is_down(settings) -> None:
     broken = settings.model_copy(update={"database_url": "postgresql+psycopg://postgres@127.0.0.1:1/none"})
     with TestClient(create_app(broken)) as http:
