@@ -24,6 +24,10 @@ import httpx
 logger = logging.getLogger(__name__)
 
 DEFAULT_TIMEOUT_S = 60.0
+DEFAULT_RETRY_WAIT_S = 120.0
+"""Longest total wait per request for a busy server (429 / 503 with ``Retry-After``)."""
+MAX_RETRIES = 20
+RETRY_STATUSES = frozenset({429, 503})
 DEFAULT_POLL_S = 1.0
 TERMINAL_STATUSES = frozenset({"succeeded", "failed", "cancelled"})
 ZIP_EPOCH = (1980, 1, 1, 0, 0, 0)
@@ -73,6 +77,16 @@ def _message(response: httpx.Response) -> tuple[str, Any]:
     return str(detail or body), body
 
 
+def _retry_after(response: httpx.Response) -> float | None:
+    """Seconds the server asks us to wait before sending the same request again, if it does."""
+    if response.status_code not in RETRY_STATUSES:
+        return None
+    try:
+        return max(0.0, float(response.headers.get("Retry-After", "")))
+    except ValueError:
+        return None  # absent, or an HTTP date: not a busy signal we act on
+
+
 class ArtimoClient:
     """Client of one ArtiMo server.
 
@@ -84,12 +98,16 @@ class ArtimoClient:
         API key (sent as ``Authorization: Bearer``).
     timeout_s
         Per-request timeout, seconds.
+    retry_wait_s
+        A busy server (429 rate limit, 503 at capacity) says when to come back (``Retry-After``);
+        the request is sent again then, for up to this many seconds in all (0: never).
     transport
         Optional httpx transport (tests pass one that calls the app in-process).
     """
 
     def __init__(self, server: str, key: str, *, timeout_s: float = DEFAULT_TIMEOUT_S,
-                 transport: httpx.BaseTransport | None = None) -> None:
+                 retry_wait_s: float = DEFAULT_RETRY_WAIT_S, transport: httpx.BaseTransport | None = None) -> None:
+        self.retry_wait_s = retry_wait_s
         self._http = httpx.Client(base_url=server.rstrip("/"), headers={"Authorization": f"Bearer {key}"},
                                   timeout=timeout_s, transport=transport, follow_redirects=True)
 
@@ -103,10 +121,20 @@ class ArtimoClient:
         self.close()
 
     def _request(self, method: str, url: str, **kwargs: Any) -> httpx.Response:
-        try:
-            response = self._http.request(method, url, **kwargs)
-        except httpx.HTTPError as exc:
-            raise ClientError(0, f"cannot reach the server: {exc}") from exc
+        waited = 0.0
+        for _ in range(MAX_RETRIES + 1):
+            try:
+                response = self._http.request(method, url, **kwargs)
+            except httpx.HTTPError as exc:
+                raise ClientError(0, f"cannot reach the server: {exc}") from exc
+            delay = _retry_after(response)
+            if delay is None or waited >= self.retry_wait_s:
+                break
+            delay = min(delay, self.retry_wait_s - waited)
+            logger.info("server busy (%d %s); sending %s %s again in %.1f s",
+                        response.status_code, response.reason_phrase, method, url, delay)
+            time.sleep(delay)
+            waited += delay
         if response.status_code >= 400:
             message, body = _message(response)
             raise ClientError(response.status_code, message, body)
