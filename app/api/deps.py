@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import hmac
+import logging
 import threading
 import time
 from collections.abc import AsyncIterator
@@ -24,7 +25,10 @@ from app.crud.clients import client_by_key, ensure_client_for_key, hash_key
 from app.db.models import ApiClient
 from app.db.session import session_factory
 
+logger = logging.getLogger(__name__)
+
 MAX_KEY_CHARS = 256
+
 
 async def app_settings(request: Request) -> Settings:
     """The app's settings (``create_app(settings)``), else the cached environment settings.
@@ -135,7 +139,25 @@ def _lookup(session: Session, settings: Settings, key: str) -> ApiClient | None:
     return None
 
 
+async def _count(limiter: RateLimiter, key: str, limit: int) -> int | None:
+    if isinstance(limiter, MemoryRateLimiter):  # no I/O: no thread hop
+        return limiter.hit(key, limit)
+    return await run_in_threadpool(limiter.hit, key, limit)
+
+
+async def _refuse(request: Request, settings: Settings, limiter: RateLimiter) -> Unauthorized | RateLimited:
+    """401 for a missing or wrong key; 429 once one address keeps sending them (key guessing, floods)."""
+    address = request.client.host if request.client else "unknown"
+    limit = settings.auth_failures_per_minute
+    retry_after = await _count(limiter, f"unauthenticated:{address}", limit)
+    if retry_after is not None:
+        logger.warning("too many unauthenticated requests from %s", address)
+        return RateLimited(limit, retry_after)
+    return Unauthorized()
+
+
 async def get_client(
+    request: Request,
     session: SessionDep,
     settings: SettingsDep,
     limiter: Annotated[RateLimiter, Depends(get_rate_limiter)],
@@ -148,17 +170,17 @@ async def get_client(
     Unauthorized
         No key, or a key that is unknown or disabled.
     RateLimited
-        Too many requests of this key in the current minute.
+        Too many requests of this key in the current minute, or too many without a valid key
+        from this address.
     """
     if credentials is None or not credentials.credentials or len(credentials.credentials) > MAX_KEY_CHARS:
-        raise Unauthorized()
+        raise await _refuse(request, settings, limiter)
     key = credentials.credentials
     client = _KEYS.get(settings.sqlalchemy_url, key, settings.auth_cache_s) or await run_in_threadpool(_authenticate, session, settings, key)
     if client is None:
-        raise Unauthorized()
+        raise await _refuse(request, settings, limiter)
     limit = client.rate_limit_per_minute or settings.rate_limit_per_minute
-    in_memory = isinstance(limiter, MemoryRateLimiter)
-    retry_after = limiter.hit(str(client.id), limit) if in_memory else await run_in_threadpool(limiter.hit, str(client.id), limit)
+    retry_after = await _count(limiter, str(client.id), limit)
     if retry_after is not None:
         raise RateLimited(limit, retry_after)
     return client

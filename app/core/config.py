@@ -36,6 +36,8 @@ class Settings(BaseSettings):
     max_upload_files: int = Field(default=2000, gt=0)
     rate_limit_per_minute: int = Field(default=120, gt=0)
     auth_cache_s: float = Field(default=2.0, ge=0)
+    auth_failures_per_minute: int = Field(default=60, gt=0)
+    """Requests with a missing or wrong key one client address may make per minute before 429s."""
     """How long an authenticated key is remembered in-process (a disabled key stops working within this)."""
     """Requests per API key per minute (health routes are exempt)."""
     job_soft_time_limit_s: int = Field(default=900, gt=0)

@@ -22,6 +22,15 @@ def test_missing_or_bad_key_is_401(http, headers) -> None:
         assert response.headers["www-authenticate"] == "Bearer"
 
 
+def test_an_address_sending_wrong_keys_gets_429_but_valid_keys_still_work(settings, alice) -> None:
+    with TestClient(create_app(settings.model_copy(update={"auth_failures_per_minute": 3}))) as http:
+        codes = [http.get("/v1/animations", headers={"Authorization": f"Bearer guess-{n}"}).status_code for n in range(4)]
+        assert codes == [401, 401, 401, 429]
+        refused = http.get("/v1/animations")
+        assert refused.status_code == 429 and 1 <= int(refused.headers["retry-after"]) <= 60
+        assert http.get("/v1/animations", headers=alice.headers).status_code == 200
+
+
 def test_disabled_key_is_401(http, alice, db) -> None:
     assert http.get("/v1/animations", headers=alice.headers).status_code == 200
     set_client_disabled(db, client=db.get(ApiClient, alice.client.id), disabled=True)
