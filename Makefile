@@ -18,7 +18,7 @@ export PYOPENGL_PLATFORM ?= egl
 help:
 	@echo "make demo   - set up everything, animate an example with the CLI, then submit it to the embedded service (artimo serve) and download the GLB"
 	@echo "make test   - set up everything, run the whole test suite"
-	@echo "make lint   - ruff + import contracts"
+	@echo "make lint   - ruff + mypy + import contracts"
 
 setup: system-deps venv validator
 
@@ -52,6 +52,7 @@ test: setup services
 
 lint: venv
 	$(VENV)/bin/ruff check app workers benchmark tests
+	$(VENV)/bin/mypy
 	$(VENV)/bin/lint-imports
 
 clean:

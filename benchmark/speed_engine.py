@@ -88,7 +88,8 @@ def main() -> int:
     loading = []
     for _ in range(max(1, args.repeats // 3)):
         began = time.perf_counter()
-        count = sum(1 for folder in sorted(args.assets.iterdir()) if (folder / "mobility.urdf").is_file() and load_asset(folder))
+        loaded = [load_asset(folder) for folder in sorted(args.assets.iterdir()) if (folder / "mobility.urdf").is_file()]
+        count = len(loaded)
         loading.append(time.perf_counter() - began)
     sys.stdout.write(f"{'load all ' + str(count) + ' shared assets':<48} median {statistics.median(loading):8.2f} s\n")
     return 0

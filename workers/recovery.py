@@ -66,7 +66,7 @@ def requeue_orphans(settings: Settings) -> int:
     return sent
 
 
-class RecoveryStep(bootsteps.StartStopStep):  # type: ignore[misc]
+class RecoveryStep(bootsteps.StartStopStep):
     """Consumer bootstep: runs :func:`requeue_orphans` on every (re)connection to the broker."""
 
     requires: ClassVar[set[str]] = {"celery.worker.consumer.tasks:Tasks"}

@@ -28,7 +28,7 @@ POLL_INTERVAL_S = 0.1
 """Seconds between polls of the broker table when it is empty (one indexed SELECT each)."""
 
 
-class Channel(SQLAlchemyChannel):  # type: ignore[misc]
+class Channel(SQLAlchemyChannel):
     def __init__(self, connection: Any, **kwargs: Any) -> None:
         super().__init__(connection, **kwargs)
         self._purge_delivered()
@@ -46,7 +46,7 @@ class Channel(SQLAlchemyChannel):  # type: ignore[misc]
         except OperationalError:
             self.session.rollback()
 
-    def _get(self, queue: str) -> Any:
+    def _get(self, queue: str, timeout: Any = None) -> Any:  # noqa: ARG002 (kombu passes it; the poll interval governs waiting)
         """The oldest visible message of ``queue``, deleted as it is taken."""
         owner = self._get_or_create(queue)
         message = self.message_cls
@@ -72,6 +72,6 @@ class Channel(SQLAlchemyChannel):  # type: ignore[misc]
             self.session.commit()
 
 
-class Transport(SQLAlchemyTransport):  # type: ignore[misc]
+class Transport(SQLAlchemyTransport):
     Channel = Channel
     polling_interval = POLL_INTERVAL_S

@@ -11,7 +11,7 @@ import hashlib
 import os
 import shutil
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Protocol
@@ -61,7 +61,7 @@ class LocalStorage:
     def local_path(self, key: str) -> Path:
         return self.root / _check_key(key)
 
-    def _commit(self, key: str, write: callable) -> StoredObject:  # type: ignore[valid-type]
+    def _commit(self, key: str, write: Callable[[], Iterator[bytes]]) -> StoredObject:
         target = self.local_path(key)
         target.parent.mkdir(parents=True, exist_ok=True)
         handle, temporary = tempfile.mkstemp(prefix=".tmp-", dir=target.parent)
