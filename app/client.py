@@ -153,7 +153,7 @@ class ArtimoClient:
         """Submit a job; ``asset`` is a folder, a .zip, or an uploaded asset's id/sha256.
 
         ``options``: ``provider``, ``perceiver_model``, ``planner_model``, ``critic_model``,
-        ``fps``, ``max_critic_rounds``. Returns ``{id, url, status}``.
+        ``fps``, ``max_critic_rounds``, ``preview``. Returns ``{id, url, status}``.
         """
         data = {"prompt": prompt, **{k: str(v) for k, v in options.items() if v is not None}}
         path = Path(asset)

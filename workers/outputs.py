@@ -19,6 +19,7 @@ CONTENT_TYPES = {
     ".json": "application/json",
     ".jsonl": "application/jsonl",
     ".png": "image/png",
+    ".gif": "image/gif",
     ".jpg": "image/jpeg",
     ".txt": "text/plain",
 }

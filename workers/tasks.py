@@ -119,6 +119,8 @@ def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObse
     from app.engine.pipeline import PipelineRequest, run_pipeline
 
     config = settings.engine_config()
+    if claim.options.get("preview"):
+        config = config.model_copy(update={"preview": True})
     rounds = claim.options.get("max_critic_rounds")
     try:
         fps = claim.options.get("fps")

@@ -24,6 +24,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     parser.add_argument("--fps", type=int, choices=(24, 30), default=None, help="output frame rate (default: the planner's, 30)")
     parser.add_argument("--render", action="store_true", help="also render reference/overlay images into OUT/images")
     parser.add_argument("--no-collisions", action="store_true", help="skip the critic's collision checks")
+    parser.add_argument("--preview", action="store_true", help="also render OUT/preview.gif of the final animation (needs EGL)")
     parser.set_defaults(handler=_animate)
 
 
@@ -57,7 +58,8 @@ def _animate(args: argparse.Namespace) -> int:
     from app.engine.providers.registry import make_roles
 
     began = time.perf_counter()
-    config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions, asset_cache_dir=cache_dir(args))
+    config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions, preview=args.preview,
+                          asset_cache_dir=cache_dir(args))
     roles = make_roles(args.provider, _provider_config(args), config)
     result = run_pipeline(
         PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps),

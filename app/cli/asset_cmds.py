@@ -30,6 +30,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     run.add_argument("asset", type=Path)
     run.add_argument("--plan", type=Path, required=True)
     run.add_argument("--out", type=Path, required=True, help="output folder")
+    run.add_argument("--preview", action="store_true", help="also render OUT/preview.gif (needs EGL)")
     run.set_defaults(handler=_run)
 
 
@@ -91,7 +92,7 @@ def _run(args: argparse.Namespace) -> int:
 
     began = time.perf_counter()
     asset, plan = _load(args)
-    report = run_plan(asset, plan, args.out)
+    report = run_plan(asset, plan, args.out, preview=args.preview)
     for warning in report.warnings + report.events:
         out(f"note: {warning}")
     for kind, name in report.outputs.items():

@@ -20,6 +20,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     parser.add_argument("--provider", default=None)
     parser.add_argument("--fps", type=int, choices=(24, 30), default=None)
     parser.add_argument("--critic-rounds", type=int, default=None, help="0..3")
+    parser.add_argument("--preview", action="store_true", help="also render preview.gif (downloaded with --out)")
     parser.add_argument("--wait", action="store_true", help="wait until the job has finished")
     parser.add_argument("--timeout", type=float, default=900.0, help="seconds to wait (with --wait)")
     parser.add_argument("--out", type=Path, default=None, help="download the outputs here (implies --wait)")
@@ -35,7 +36,8 @@ def _submit(args: argparse.Namespace) -> int:
         return 2
     try:
         with ArtimoClient(args.server, key) as client:
-            job = client.submit(args.asset, args.prompt, provider=args.provider, fps=args.fps, max_critic_rounds=args.critic_rounds)
+            job = client.submit(args.asset, args.prompt, provider=args.provider, fps=args.fps, max_critic_rounds=args.critic_rounds,
+                                preview=args.preview or None)
             err(f"job {job['id']} {job['status']}: {job['url']}")
             if not (args.wait or args.out):
                 out(job["id"])

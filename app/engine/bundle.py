@@ -8,7 +8,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.glb import export_glb
 from app.engine.export.jsonl import write_trajectory_jsonl
-from app.engine.files import atomic_write_text
+from app.engine.files import atomic_write_bytes, atomic_write_text
 from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from app.engine.report import RunReport
@@ -18,6 +18,7 @@ CAUSAL_FILE = "causal.json"
 TRAJECTORY_FILE = "trajectory.jsonl"
 GLB_FILE = "animation.glb"
 REPORT_FILE = "report.json"
+PREVIEW_FILE = "preview.gif"
 
 
 def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, causal: CausalDocument | None = None) -> dict[str, str]:
@@ -34,6 +35,14 @@ def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajecto
     export_glb(asset, trajectory, out_dir / GLB_FILE)
     written["glb"] = GLB_FILE
     return written
+
+
+def write_preview(out_dir: Path, asset: ArticulatedAsset, trajectory: Trajectory) -> str:
+    """Render ``preview.gif`` (needs EGL; raises RenderError without it); returns its file name."""
+    from app.engine.render.preview import render_preview_gif
+
+    atomic_write_bytes(out_dir / PREVIEW_FILE, render_preview_gif(asset, trajectory))
+    return PREVIEW_FILE
 
 
 def write_report(out_dir: Path, report: RunReport) -> Path:

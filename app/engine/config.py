@@ -22,6 +22,8 @@ class EngineConfig(BaseModel):
     render_images: bool = False
     """Render reference/overlay views and critic keyframes (needed by VLM roles, optional offline)."""
     image_size: tuple[int, int] = (800, 600)
+    preview: bool = False
+    """Also write ``preview.gif``: the final animation rendered from a fixed three-quarter view (EGL)."""
     prompts_dir: Path = PROMPTS_DIR
     request_timeout_s: float = Field(default=120.0, gt=0)
     max_concurrent_calls: int = Field(default=4, ge=1, le=32)

@@ -21,16 +21,16 @@ from app.engine.agents.roles import Context, Roles
 from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
-from app.engine.bundle import REPORT_FILE, write_animation, write_report
+from app.engine.bundle import REPORT_FILE, write_animation, write_preview, write_report
 from app.engine.config import EngineConfig
-from app.engine.errors import CancelledError, EngineError
+from app.engine.errors import CancelledError, EngineError, RenderError
 from app.engine.files import atomic_write_bytes
 from app.engine.report import AssetSummary, RunReport, StageClock
 
 logger = logging.getLogger(__name__)
 
 STAGES: tuple[tuple[str, int], ...] = (
-    ("load_asset", 5), ("preprocess", 15), ("perceive", 35), ("plan", 50), ("refine", 85), ("export", 97), ("report", 100),
+    ("load_asset", 5), ("preprocess", 15), ("perceive", 35), ("plan", 50), ("refine", 85), ("export", 96), ("preview", 99), ("report", 100),
 )
 
 
@@ -118,6 +118,12 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             report.events.extend(refined.trajectory.events)
         with run.stage("export"):
             outputs = write_animation(run.out_dir, asset, refined.plan, refined.trajectory, perception.causal)
+        if config.preview:
+            with run.stage("preview"):
+                try:
+                    outputs["preview"] = write_preview(run.out_dir, asset, refined.trajectory)
+                except RenderError as exc:  # the animation itself is complete: say why there is no preview
+                    report.warnings.append(f"no preview.gif: {exc}")
         with run.stage("report"):
             report.stages = run.clock.stages
             report.total_s = run.clock.total

@@ -7,7 +7,8 @@ from pathlib import Path
 
 from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.bundle import REPORT_FILE, write_animation, write_report
+from app.engine.bundle import REPORT_FILE, write_animation, write_preview, write_report
+from app.engine.errors import RenderError
 from app.engine.execute.executor import execute
 from app.engine.plan.checks import validate_plan
 from app.engine.plan.schema import Plan
@@ -17,10 +18,11 @@ logger = logging.getLogger(__name__)
 
 
 def run_plan(
-    asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path, *, cache_dir: Path | None = None
+    asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path, *,
+    cache_dir: Path | None = None, preview: bool = False,
 ) -> RunReport:
     """Validate and execute ``plan`` on ``asset`` and write plan.json, trajectory.jsonl,
-    animation.glb and report.json into ``out_dir``.
+    animation.glb and report.json into ``out_dir`` (and ``preview.gif`` with ``preview``).
 
     Raises
     ------
@@ -36,10 +38,17 @@ def run_plan(
         trajectory = execute(checked.document, model)
     with clock.stage("export"):
         outputs = write_animation(target, model, checked.document, trajectory)
+    warnings = list(checked.warnings)
+    if preview:
+        with clock.stage("preview"):
+            try:
+                outputs["preview"] = write_preview(target, model, trajectory)
+            except RenderError as exc:
+                warnings.append(f"no preview.gif: {exc}")
     report = RunReport(
         asset=AssetSummary.of(model),
         provider="plan",
-        warnings=list(checked.warnings),
+        warnings=warnings,
         events=[e for e in trajectory.events if e not in checked.warnings],
         stages=clock.stages,
         total_s=clock.total,

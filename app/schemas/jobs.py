@@ -25,6 +25,7 @@ class JobOptions(BaseModel):
     critic_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
     fps: Literal[24, 30] | None = None
     max_critic_rounds: int | None = Field(default=None, ge=0, le=3)
+    preview: bool | None = Field(default=None, description="also render preview.gif of the final animation")
 
     @field_validator("provider")
     @classmethod

@@ -6,7 +6,9 @@ import json
 from pathlib import Path
 
 import pytest
+from PIL import Image
 
+from app.engine.config import EngineConfig
 from app.engine.errors import CancelledError, GroundingError
 from app.engine.pipeline import STAGES, PipelineRequest, run_pipeline
 from app.engine.providers.registry import make_roles
@@ -30,12 +32,12 @@ def test_pipeline_writes_every_output(tmp_path: Path, examples_dir: Path) -> Non
                           roles=make_roles("offline"), out_dir=tmp_path, observer=recorder)
     for name in ("causal.json", "plan.json", "trajectory.jsonl", "animation.glb", "report.json"):
         assert (tmp_path / name).is_file(), name
-    assert recorder.stages == list(STAGES)
+    assert recorder.stages == [stage for stage in STAGES if stage[0] != "preview"]  # not asked for
     report = json.loads((tmp_path / "report.json").read_text())
     assert report["provider"] == "offline"
     assert report["final_state"].startswith("accepted")
     assert {c["role"] for c in report["role_calls"]} == {"perceiver", "planner", "critic"}
-    assert [s["stage"] for s in report["stages"]] == [name for name, _ in STAGES if name != "report"]  # its own write is not timed
+    assert [s["stage"] for s in report["stages"]] == [name for name, _ in STAGES if name not in ("report", "preview")]  # its own write is not timed
     assert report["outputs"]["glb"] == "animation.glb"
     assert result.report.asset.name == "pedal_bin"
     assert_valid([tmp_path / "animation.glb"])
@@ -72,3 +74,13 @@ def test_requested_fps_is_used(tmp_path: Path, examples_dir: Path) -> None:
     assert plan["meta"]["fps"] == 24
     frames = [json.loads(line) for line in (tmp_path / "trajectory.jsonl").read_text().splitlines()]
     assert frames[1]["time_s"] == pytest.approx(1 / 24)
+
+
+def test_preview_gif_is_written_when_asked(tmp_path: Path, examples_dir: Path) -> None:
+    recorder = Recorder()
+    result = run_pipeline(PipelineRequest(asset=examples_dir / "pedal_bin", prompt="press the pedal to open the bin"),
+                          roles=make_roles("offline"), config=EngineConfig(preview=True), out_dir=tmp_path, observer=recorder)
+    assert result.outputs["preview"] == "preview.gif" and recorder.stages == list(STAGES)
+    with Image.open(tmp_path / "preview.gif") as gif:
+        assert gif.format == "GIF" and gif.n_frames > 10
+    assert json.loads((tmp_path / "report.json").read_text())["outputs"]["preview"] == "preview.gif"

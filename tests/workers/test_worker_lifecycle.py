@@ -61,6 +61,16 @@ def test_submit_run_succeed_download(client: ArtimoClient, tmp_path: Path) -> No
     assert len(lines) > 10 and '"lid_hinge"' in lines[-1]
 
 
+def test_preview_option_adds_a_gif_artifact(client: ArtimoClient, tmp_path: Path) -> None:
+    accepted = client.submit(PEDAL_BIN, PEDAL_PROMPT, preview=True)
+    done = client.wait(accepted["id"], timeout=JOB_TIMEOUT_S, poll=POLL_S)
+    assert done["status"] == "succeeded" and done["options"]["preview"] is True and "preview" in done["timings"]
+    (gif,) = [a for a in done["artifacts"] if a["name"] == "preview.gif"]
+    assert gif["content_type"] == "image/gif" and gif["url"].endswith("/files/preview.gif")
+    (written,) = client.download(accepted["id"], tmp_path, names=["preview.gif"])
+    assert written.read_bytes()[:6] == b"GIF89a"
+
+
 def test_ungroundable_prompt_fails_with_engine_message(client: ArtimoClient) -> None:
     accepted = client.submit(PEDAL_BIN, "fly to the moon")
     done = client.wait(accepted["id"], timeout=JOB_TIMEOUT_S, poll=POLL_S)

@@ -26,7 +26,7 @@ logger = logging.getLogger(__name__)
 router = APIRouter(prefix="/v1/animations", tags=["animations"])
 
 MAX_OFFSET = 1_000_000_000
-JOB_FIELDS = ("prompt", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds")
+JOB_FIELDS = ("prompt", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds", "preview")
 _TEXT = {"type": "string"}
 SUBMIT_BODY = multipart_openapi(
     {
@@ -37,6 +37,7 @@ SUBMIT_BODY = multipart_openapi(
         "perceiver_model": _TEXT, "planner_model": _TEXT, "critic_model": _TEXT,
         "fps": {"type": "integer", "enum": [24, 30]},
         "max_critic_rounds": {"type": "integer", "minimum": 0, "maximum": 3},
+        "preview": {"type": "boolean", "description": "also render preview.gif (an animated GIF of the result)"},
     },
     ["prompt"],
 )
