@@ -31,7 +31,7 @@ def direction(verb: str | None, particle: str | None, quantity: Quantity, obj: O
     }
     if word in table:
         return np.asarray(table[word], dtype=np.float64)
-    if verb in ("lift", "raise", "pick", "elevate"):
+    if verb in ("lift", "raise", "pick", "elevate", "hoist"):
         return obj.up.copy()
     if verb in ("pull", "drag", "draw"):
         return obj.front.copy()

@@ -167,6 +167,10 @@ def openable_parts(parts: list[Part]) -> list[Part]:
     return sorted(found, key=lambda p: (OPENABLE.index(p.category) if p.category in OPENABLE else len(OPENABLE), -p.geometry.size, p.joint))
 
 
+SIZE_TOLERANCE = 0.15
+"""Relative size difference within which parts count as the same size ("both small knobs")."""
+
+
 def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGeometry, parts: list[Part], words: set[str] | None = None) -> list[Part]:
     """Joints a mention refers to (empty when nothing matches).
 
@@ -191,7 +195,9 @@ def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGe
     candidates = _named_spatial(candidates, mention.spatial, asset) or _apply_spatial(candidates, mention.spatial, geometry)
     if mention.size is not None and len(candidates) > 1:
         pick = max if mention.size == "large" else min
-        candidates = [pick(candidates, key=lambda p: p.geometry.size)]
+        chosen = pick(candidates, key=lambda p: p.geometry.size)
+        # "each small knob": every part of (about) the chosen size
+        candidates = [p for p in candidates if abs(p.geometry.size - chosen.geometry.size) <= SIZE_TOLERANCE * chosen.geometry.size] if mention.plural else [chosen]
     if mention.ordinal is not None and mention.ordinal > len(candidates) and mention.row is None and mention.column is None:
         return []  # "the second drawer" of a one-drawer nightstand names nothing
     if mention.ordinal is not None and len(candidates) > 1:

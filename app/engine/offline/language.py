@@ -111,6 +111,7 @@ def normalize(prompt: str) -> str:
         r"(?:foot|feet|hand|hands|finger|fingers|thumb|toe)\b(?:\s+(?:off|away|up|back))?(?:\s+(?:of|from)\s+(?:it|them|the\s+[\w-]+))?",
         "release it", text)
     text = re.sub(r"\blet\s+go\b(?!\s+of)", "release it", text)  # "..., then let go"
+    text = _LET_MOTION.sub(_let_motion, text)
     # "..., without using the pedal": a part the user says not to use is not an instrument
     text = re.sub(r",?\s*\b(?:without|but not|and not|never)\s+(?:using|pressing|touching|stepping on|moving|opening)?\s*(?:the|its|a|any)\s+[\w-]+", " manually", text)
     text = re.sub(r",?\s*the one (?:with|that|which|having)\b[^,;.]*", "", text)
@@ -255,13 +256,26 @@ def _verb(text: str) -> tuple[str | None, str | None, int, int]:
                 previous = word
                 continue
             kind = VERBS[base]
-            if base in ("fold", "flip", "tilt") and re.match(r"\s*(?:\w+\s+){0,3}?(?:back|backwards|backward|open|out|up)\b", text[match.end():]):
+            if base in ("fold", "flip", "tilt", "lean") and re.match(r"\s*(?:\w+\s+){0,3}?(?:back|backwards|backward|open|out|up)\b", text[match.end():]):
                 kind = "open"
             if base in ("spring", "snap", "pop", "bounce") and re.match(r"\s*back\b", text[match.end():]):
                 kind = "release"
             return base, kind, match.start(), match.end()
         previous = word
     return None, None, -1, -1
+
+
+_LET_MOTION = re.compile(
+    r"\blet\s+(it|them|(?:the|its|their)\s+(?:[\w'-]+\s+){0,3}?[\w'-]+)\s+(drop|fall|swing|lean|tip|down|come down|coast|glide)\b"
+)
+
+
+def _let_motion(match: re.Match[str]) -> str:
+    """ "let the door drop / swing open / down", "let the car coast": the motion verb that follows is the action."""
+    subject, verb = match.group(1), match.group(2)
+    if verb in ("coast", "glide") and subject in ("it", "them"):
+        return match.group(0)  # "push the car and let it coast": how the push ends, not a motion of its own
+    return f"{'lower' if verb in ('down', 'come down') else verb} {subject}"
 
 
 def _particle(text: str, verb_end: int) -> str | None:
@@ -295,7 +309,7 @@ def _object_mention(text: str, after: int, parts: list[tuple[int, int, str, str]
         direct = re.match(r"(?:'s)?\s+", text[end:])
         if direct is not None:
             nxt = end + direct.end()
-            modifier = re.match(r"[a-z-]+\s+", text[nxt:])
+            modifier = re.match(r"[a-z-]+(?:'s)?\s+", text[nxt:])
             if nxt in starts or (modifier is not None and nxt + modifier.end() in starts):
                 continue
         return Mention(category="object", head=word, position=after + match.start())

@@ -75,6 +75,7 @@ class _Builder:
         self.unlatched: list[Part] = []
         self.last_base_quantified = True
         self.pauses: dict[int, float] = {}
+        self.index = 0
 
     # --- grounding -----------------------------------------------------------------
     def refuse(self, why: str) -> GroundingError:
@@ -217,6 +218,8 @@ class _Builder:
         pronoun = targets[0].head in PRONOUNS and bool(self.last_parts)
         quantity = clause.quantity
         directional = quantity.direction in ("forward", "backward", "left", "right") and clause.particle not in ("in", "out", "open", "shut")
+        if pronoun and directional and self.steps and self.steps[-1].base is None and quantity.direction == "backward" and not re.search(r"\bbackwards?\b", clause.text):
+            directional = False  # "slide it back halfway" after moving a part: the part goes back, not the object
         if pronoun and not (quantity.axis is not None or clause.verb in OBJECT_VERBS or directional):
             return False
         if clause.kind == "press" and clause.verb not in DISPLACING_VERBS and not (
@@ -319,7 +322,12 @@ class _Builder:
         if means is None:
             means = self.instrument_means(clause)
         if means is not None and clause.kind == "release" and not re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text):
-            clause = replace(clause, kind="open", verb="open")  # "release the door by pressing the button": it pops open
+            if self._opens_next():
+                clause = replace(clause, kind="unlatch", verb="unlatch")  # "... to release it, then the door opens to 120 degrees"
+            else:
+                clause = replace(clause, kind="open", verb="open")  # "release the door by pressing the button": it pops open
+        if means is not None and means.quantity.sense is None and clause.quantity.sense is not None:
+            means = replace(means, quantity=replace(means.quantity, sense=clause.quantity.sense))  # "twist the cap to loosen it"
         kind = effective_kind(clause.kind, clause.particle)
         controls = self.goals(means, "control", means.quantity) if means else []
         effects = self.goals(clause, "effect" if controls else None, quantity, required=not controls)
@@ -374,6 +382,12 @@ class _Builder:
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def _opens_next(self) -> bool:
+        """The next action opens a part itself ("..., then the door opens to 120 degrees")."""
+        actions = self.parsed.actions
+        following = actions[self.index + 1] if self.index + 1 < len(actions) else None
+        return following is not None and effective_kind(following.clause.kind, following.clause.particle) == "open"
 
     def hold_for(self, clause: Clause, quantity: Quantity) -> None:
         """"hold the lid open for two seconds": what it names is already there; the next step waits that long."""
@@ -564,9 +578,10 @@ def read_intent(prompt: str, asset: ArticulatedAsset) -> Intent:
     """
     parsed = parse_prompt(prompt)
     builder = _Builder(asset, parsed)
-    if not builder.parts:
+    if not builder.parts and not any(builder.is_base(action.clause) and action.means is None for action in parsed.actions):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
-    for action in parsed.actions:
+    for index, action in enumerate(parsed.actions):
+        builder.index = index
         builder.add(action)
     if not builder.steps:
         raise builder.refuse(f"could not find an action in '{prompt}'")

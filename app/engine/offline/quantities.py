@@ -20,10 +20,13 @@ _DISTANCE = re.compile(_NUM + r"\s*(" + "|".join(sorted(_UNITS_M, key=len, rever
 _OMEGA = re.compile(_NUM + r"\s*(rad/s|rad\s*per\s*second|radps|rad/sec|rpm|revolutions per minute|deg/s|degrees per second)")
 _SPEED = re.compile(_NUM + r"\s*(m/s|meters per second|metres per second|cm/s)")
 _DURATION = re.compile(r"(?:for|over|during|in|within|taking)\s+(?:about\s+|roughly\s+)?" + _NUM + r"\s*(?:s|sec|secs|second|seconds)\b")
+_ABSOLUTE_BEFORE = re.compile(r"\bto\s+(?:about\s+|around\s+|roughly\s+|approximately\s+|exactly\s+|just\s+)?$")
+_ABSOLUTE_AFTER = re.compile(r"\s*(?:open\s+)?(?:from|off)\s+(?:the\s+)?(?:closed|shut)\b")
 _PERCENT = re.compile(_NUM + r"\s*(?:%|percent|per cent)")
 _AXIS = re.compile(r"([+-])\s*([xyz])\b|\b(?:positive|negative)\s+([xyz])\b|\b([xyz])\s*[- ]?axis\b")
 _SPECIAL = (
     ("quarter turn", 0.25), ("quarter-turn", 0.25), ("half turn", 0.5), ("half a turn", 0.5), ("half-turn", 0.5),
+    ("quarter twist", 0.25), ("quarter-twist", 0.25), ("half twist", 0.5), ("half-twist", 0.5), ("half a twist", 0.5),
     ("full turn", 1.0), ("full rotation", 1.0), ("full revolution", 1.0), ("complete turn", 1.0),
     ("one turn", 1.0), ("a turn", 1.0),
 )
@@ -51,11 +54,14 @@ class Quantity:
     direction: str | None = None
     orientation: str | None = None
     """``vertical`` (upright, straight up) or ``flat`` (horizontal, lies flat)."""
+    absolute: bool = False
+    """The angle is an opening measured from closed ("to 30 degrees", "45 degrees from closed"), not an increment."""
 
     def merged(self, other: Quantity) -> Quantity:
         """``self`` with unset fields taken from ``other``."""
         values = {k: getattr(self, k) if getattr(self, k) is not None else getattr(other, k) for k in self.__dataclass_fields__}
         values["speed_factor"] = self.speed_factor if self.speed_factor != 1.0 else other.speed_factor
+        values["absolute"] = self.absolute if self.angle_rad is not None else other.absolute
         return Quantity(**values)
 
 
@@ -86,10 +92,12 @@ def _amount(text: str) -> float | None:
     percent = _PERCENT.search(text)
     if percent:
         return min(1.0, float(percent.group(1)) / 100.0)
-    for phrase in sorted(AMOUNTS, key=len, reverse=True):
-        if re.search(r"(?<![\w-])" + re.escape(phrase) + r"(?![\w-])", text):
-            return AMOUNTS[phrase]
-    return None
+    found = []
+    for phrase in AMOUNTS:
+        match = re.search(r"(?<![\w-])" + re.escape(phrase) + r"(?![\w-])", text)
+        if match:
+            found.append((match.start(), -len(phrase), AMOUNTS[phrase]))
+    return min(found)[2] if found else None
 
 
 def _turn_angle(text: str) -> float | None:
@@ -121,12 +129,14 @@ def _omega(text: str) -> float | None:
 
 def parse_quantity(clause: str) -> Quantity:
     """Every quantity mentioned in one clause (lower case text)."""
-    text = words_to_numbers(clause)
+    text = re.sub(r"\bhalf an?\s+(metre|meter|foot|inch|centimetre|centimeter)\b", r"0.5 \1", words_to_numbers(clause))
     angle = None
+    absolute = False
     for pattern, convert in ((_ANGLE, math.radians), (_RADIANS, float)):
         match = pattern.search(text)
         if match:
             angle = convert(float(match.group(1)))
+            absolute = bool(_ABSOLUTE_BEFORE.search(text[: match.start()]) or _ABSOLUTE_AFTER.match(text[match.end():]))
             break
     turn = _turn_angle(text)
     if turn is not None and angle is None:
@@ -177,6 +187,7 @@ def parse_quantity(clause: str) -> Quantity:
         sense=sense,
         axis=_axis(text),
         direction=direction,
+        absolute=absolute,
     )
 
 

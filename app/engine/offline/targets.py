@@ -152,6 +152,13 @@ def goal_value(
         value = orientation_value(asset, geometry, quantity.orientation, opening=kind not in ("close", "push_in", "lower", "release"))
         if value is not None:
             return value
+    closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
+    opened = geometry.open_value
+    if quantity.absolute and quantity.angle_rad is not None and opened is not None and geometry.type == "revolute" and kind != "spin":
+        # "to 30 degrees", "45 degrees from closed": an opening measured from closed, whichever way the verb moves.
+        # A part resting nearer its closed limit than its open one is closed at rest (the range past it is overtravel).
+        shut = geometry.rest if abs(geometry.rest - closed) < abs(opened - geometry.rest) else closed
+        return _clamp(geometry, shut + (1.0 if opened >= closed else -1.0) * quantity.angle_rad)
     if kind in ("turn", "move", "open", "toggle", "operate", "press", "lower", "raise") and quantity.sense is None and not (category in PUSH_CATEGORIES and geometry.type == "prismatic"):
         value = _directional(part, quantity, obj)
         if value is not None and (kind != "open" or geometry.open_value is None):

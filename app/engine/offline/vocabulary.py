@@ -91,6 +91,7 @@ VERBS: dict[str, str] = {
     "bounce": "release", "return": "release", "swivel": "turn", "pivot": "turn", "screw": "turn",
     "unscrew": "turn", "loosen": "turn", "tighten": "turn", "reopen": "open", "raise_up": "raise",
     "tip": "lower", "tow": "move", "haul": "move", "unlatch": "unlatch", "unlock": "unlatch", "unhook": "unlatch", "unbolt": "unlatch",
+    "free": "unlatch", "lean": "raise", "hoist": "raise", "coast": "move",
 }
 # verb forms -> lemma (regular -s/-ed/-ing endings are handled by ``lemma``)
 IRREGULAR: dict[str, str] = {
@@ -115,6 +116,7 @@ IRREGULAR: dict[str, str] = {
     "took": "take", "taking": "take", "taken": "take", "removing": "remove", "removed": "remove", "ran": "run", "running": "run",
     "stamped": "stamp", "stamping": "stamp", "laid": "lay", "laying": "lay", "typed": "type", "typing": "type", "entered": "enter", "entering": "enter", "returns": "return", "returned": "return",
     "unscrewing": "unscrew", "unscrewed": "unscrew", "swivelling": "swivel", "swiveled": "swivel", "squeezing": "squeeze", "nudging": "nudge", "shifting": "shift",
+    "freeing": "free", "leant": "lean", "hoisting": "hoist", "coasting": "coast",
 }
 
 # directional particles after a verb change its meaning ("pull out", "push in", "press down")
@@ -150,7 +152,7 @@ AMOUNTS: dict[str, float] = {
     "partly": 0.3, "partially": 0.3, "a bit": 0.25, "a little": 0.2, "somewhat": 0.3, "ajar": 0.25,
     "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "a few": 0.25,
     "mostly": 0.75, "three quarters": 0.75, "three-quarters": 0.75, "a third": 1 / 3, "one third": 1 / 3,
-    "two thirds": 2 / 3, "a quarter of the way": 0.25,
+    "two thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
 }
 SPEEDS: dict[str, float] = {
     "slowly": 2.0, "slow": 2.0, "gently": 1.5, "carefully": 1.5, "gradually": 2.0, "leisurely": 2.0,
