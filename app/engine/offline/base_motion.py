@@ -15,6 +15,8 @@ DEFAULT_HORIZONTAL_FRACTION = 0.5
 """Distance of an unquantified push, as a fraction of the object's diagonal."""
 DEFAULT_LIFT_FRACTION = 0.2
 MIN_DEFAULT_DISTANCE_M = 0.1
+DEFAULT_SPEED_MPS = 0.4
+"""Speed of a timed motion with no distance or speed given: "push the cart forward for 2 seconds" moves it 0.8 m."""
 COAST = re.compile(r"\b(?:let (?:it|them)\s+(?:roll|coast|glide|slide)|coast(?:s|ing)?|glide(?:s)?|roll(?:s|ing)? to a stop|give (?:it|the \w+) a (?:push|shove|nudge)|comes? to a stop|slows? down)\b")
 MIN_WHEEL_RADIUS_M = 1e-4
 HORIZONTAL_AXIS_MAX_UP = 0.5
@@ -66,8 +68,8 @@ def base_goal(verb: str | None, particle: str | None, quantity: Quantity, text: 
     vertical = abs(float(axis @ obj.up)) > 0.9
     if quantity.distance_m is not None:
         distance = quantity.distance_m
-    elif quantity.speed_mps is not None and quantity.duration_s is not None:
-        distance = quantity.speed_mps * quantity.duration_s
+    elif quantity.duration_s is not None:
+        distance = (quantity.speed_mps or DEFAULT_SPEED_MPS) * quantity.duration_s
     else:
         fraction = DEFAULT_LIFT_FRACTION if vertical else DEFAULT_HORIZONTAL_FRACTION
         distance = max(MIN_DEFAULT_DISTANCE_M, round(fraction * obj.diag, 2))

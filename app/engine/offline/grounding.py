@@ -37,6 +37,7 @@ RELATED: dict[str, tuple[str, ...]] = {
     "switch": ("button", "lever"),
     "pedal": ("lever", "button"),
     "wheel": (),
+    "code": ("knob", "button"),
 }
 OPENABLE = ("door", "lid", "screen", "window", "drawer", "tray", "container")
 NON_NAME_WORDS = frozenset(SPATIAL) | frozenset(ORDINALS) | STOP_WORDS

@@ -98,6 +98,9 @@ def normalize(prompt: str) -> str:
     for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
         text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", _and_a_fraction(digits), text)
     text = _keypad(text)
+    text = re.sub(r"\bkey(?:s|ed|ing)?\s+in\b", "press", text)  # "key in the top button"
+    # "...; the door then opens": the sequence word leads its clause
+    text = re.sub(r"(^|[.;!?:]\s+)((?:the|its|their)\s+(?:[\w-]+\s+){0,2}?[\w-]+)\s+then\s+", r"\1then \2 ", text)
     # "..., wait (2 seconds), then ...": a pause of its own between the steps around it
     text = _WAIT.sub(_pause, text)
     # "back to where it started": a return, not a verb of its own
@@ -222,8 +225,8 @@ def _lines(text: str) -> tuple[int | None, int | None, str]:
     return row, column, _LINE.sub(" ", text)
 
 
-_LARGE = frozenset({"large", "larger", "largest", "big", "bigger", "biggest", "main", "wide", "spoked"})
-_SMALL = frozenset({"small", "smaller", "smallest", "little", "tiny", "mini", "narrow"})
+_LARGE = frozenset({"large", "larger", "largest", "big", "bigger", "biggest", "main", "wide", "wider", "widest", "spoked"})
+_SMALL = frozenset({"small", "smaller", "smallest", "little", "tiny", "mini", "narrow", "narrower", "narrowest"})
 
 
 def _size(window: str) -> str | None:
@@ -324,6 +327,8 @@ def parse_clause(text: str) -> Clause:
     found = _find_mentions(plain, exclude_verbs={position} if verb in ("switch", "dial", "step", "wheel", "lever") else None)
     # "the pedal bin", "the drawer unit": a part word naming the object it belongs to
     found = [f for f in found if not ((after := re.match(r"\s+([a-z]+)", plain[f[1]:])) and after.group(1) in OBJECT_WORDS_SET)]
+    # "the combination dial": a code word naming the part after it is only its modifier
+    found = [f for f in found if not (f[2] == "code" and any(re.fullmatch(r"\s+", plain[f[1]:g[0]]) for g in found))]
     mentions: list[Mention] = []
     boundary = verb_end
     for start, end, category, phrase in found:
@@ -457,6 +462,10 @@ def _resolve_one(piece: str, actions: list[Action]) -> str:
     return _ONE.sub(lambda m: m.group(1) + m.group(2) + heads[0], piece)
 
 
+_SUBJECTLESS = re.compile(r"(?:" + "|".join(sorted((re.escape(w) for w in _INTRANSITIVE if w.split()[0].endswith("s")), key=len, reverse=True)) + r")\b")
+"""A clause starting with a third-person intransitive verb ("opens 45 degrees") and no subject of its own."""
+
+
 def _measured(quantity: Quantity) -> bool:
     """A clause that is only an amount ("then 0.3 m back", "then 90 degrees more")."""
     return quantity.distance_m is not None or quantity.angle_rad is not None or quantity.fraction is not None
@@ -493,5 +502,8 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
                         previous = actions[-1].clause
                         clause = replace(clause, verb=previous.verb, kind=previous.kind, particle=None,
                                          mentions=clause.mentions or previous.mentions, unknown_object=None)
+                    elif piece_index > 0 and action.means is None and not clause.mentions and _SUBJECTLESS.match(piece.strip(" ,")):
+                        # "the door unlocks and opens 45 degrees": the second verb shares the subject
+                        clause = replace(clause, mentions=(Mention(category="object", head="it", position=len(clause.text)),))
                     actions.append(Action(clause=clause, means=action.means, parallel=parallel, conjoined=piece_index > 0))
     return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

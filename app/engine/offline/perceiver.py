@@ -307,7 +307,7 @@ class _Builder:
             return
         if self.is_base(clause) and action.means is None:
             motion = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
-            quantified = quantity.distance_m is not None or (quantity.speed_mps is not None and quantity.duration_s is not None)
+            quantified = quantity.distance_m is not None or quantity.duration_s is not None
             if self.elaborates(action, clause, motion, quantified):
                 return
             self.last_base_quantified = quantified
@@ -351,6 +351,10 @@ class _Builder:
             if direct_controls and not effects:
                 effects = implied = self.implicit_effects(direct_controls)
                 control_amount, effect_amount = effect_amount, False
+        if not controls and not effects and self._unlocked_by_previous_control(clause):
+            self.notes.append(f"read '{clause.text}' as the effect of the control operated before")
+            self.last_parts, self.unlatched = list(self.unlatched), []
+            return
         if not controls and not effects:
             raise self.refuse(f"nothing in '{clause.text}' names a part to move")
         controls, effects = self.drop_reached(controls), self.drop_reached(effects)
@@ -382,6 +386,13 @@ class _Builder:
             Step(primitive=primitive, controls=tuple(controls), effects=tuple(effects), parallel=action.parallel,
                  speed_factor=quantity.speed_factor, duration_s=quantity.duration_s, coupling=coupling)
         )
+
+    def _unlocked_by_previous_control(self, clause: Clause) -> bool:
+        """ "Press the button; the door then unlocks and opens": a latch-less door unlocking right
+        after a control was operated says what that control did, not a motion of its own."""
+        named = [m for m in clause.mentions if not m.instrument]
+        return (clause.kind == "unlatch" and bool(named) and all(m.category in HINGED for m in named)
+                and bool(self.steps) and bool(self.steps[-1].controls))
 
     def _opens_next(self) -> bool:
         """The next action opens a part itself ("..., then the door opens to 120 degrees")."""

@@ -156,9 +156,9 @@ def parse_quantity(clause: str) -> Quantity:
     elif re.search(r"\bfor a (?:second|moment)\b", text):
         duration = 1.0
     factor = 1.0
-    for word, speed in SPEEDS.items():
+    for word, word_factor in SPEEDS.items():
         if re.search(r"\b" + word + r"\b", text):
-            factor = speed
+            factor = word_factor
             break
     sense: str | None = "ccw" if re.search(r"\b(?:unscrew|loosen)", text) else "cw" if re.search(r"\b(?:screw|tighten)", text) else None
     for word, turning in sorted(ROTATION_SENSE.items(), key=lambda item: -len(item[0])):

@@ -9,7 +9,7 @@ from typing import Literal
 
 PartCategory = Literal[
     "door", "lid", "drawer", "knob", "handle", "button", "pedal", "screen", "wheel",
-    "window", "switch", "lever", "turntable", "tray", "latch", "body", "container",
+    "window", "switch", "lever", "turntable", "tray", "latch", "body", "container", "code",
 ]
 
 # canonical category -> words (single tokens or space-separated phrases) that name it.
@@ -23,14 +23,16 @@ CATEGORY_WORDS: dict[str, tuple[str, ...]] = {
     "handle": ("handle", "handles", "grip", "rotation handle", "door handle", "bail"),
     "lever": ("lever", "levers", "slider", "sliders", "carriage"),
     "latch": ("latch", "latches", "latch knob", "latch handle", "catch", "bolt", "lock"),
-    "button": ("button", "buttons", "key", "keys", "push button", "pushbutton", "release button"),
-    "pedal": ("pedal", "pedals", "foot pad", "footpad", "foot pedal", "foot_pad", "foot lever", "step"),
+    "button": ("button", "buttons", "key", "keys", "keypad", "key pad", "number pad", "push button", "pushbutton", "release button"),
+    "pedal": ("pedal", "pedals", "pad", "pads", "foot pad", "footpad", "foot pedal", "foot_pad", "foot lever", "step"),
     "screen": ("screen", "display", "monitor", "panel"),
     "wheel": ("wheel", "wheels", "caster", "casters", "castor", "tire", "tyre", "tires"),
     "window": ("window", "windows", "sash", "pane", "rotation window"),
     "switch": ("switch", "switches", "toggle", "rocker", "toggle button"),
     "container": ("container", "basket", "jug", "carafe", "water tank"),
     "body": ("body", "base", "frame", "chassis", "housing", "case", "casing", "stand"),
+    # what a code is entered on: a combination dial, else the keypad's buttons (grounding.RELATED)
+    "code": ("combination", "combination lock", "code", "passcode", "keycode"),
 }
 
 # semantics.txt labels (PartNet) and names that map onto a category
@@ -57,7 +59,7 @@ UNLATCH_CATEGORIES = frozenset({"handle", "latch", "knob"})
 
 # whole-object names: (asset keyword, words a user may call the object)
 OBJECT_WORDS: tuple[str, ...] = (
-    "object", "thing", "it", "whole", "entire", "unit", "item", "appliance", "furniture",
+    "object", "thing", "it", "them", "whole", "entire", "unit", "item", "appliance", "furniture",
     "bin", "trash", "trashcan", "can", "dustbin", "garbage", "car", "toy", "cart", "trolley", "vehicle",
     "suitcase", "luggage", "box", "bucket", "pail", "safe", "microwave", "oven", "stove", "fridge",
     "refrigerator", "cabinet", "cupboard", "dresser", "wardrobe", "storage", "toaster", "laptop",

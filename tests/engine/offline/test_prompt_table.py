@@ -288,6 +288,15 @@ ROWS: list[Row] = [
     R("washing_machine_103508", "Turn the big dial 90 degrees, then each small knob 45 degrees.",
       joints={"joint_1": E(abs_end=PI / 2), "joint_2": E(abs_end=PI / 4), "joint_3": E(abs_end=PI / 4)}, order=(("joint_1", "joint_2"),)),
     R("washing_machine_103508", "Turn both small knobs 45 degrees.", joints={"joint_1": E(still=True), "joint_2": E(abs_end=PI / 4), "joint_3": E(abs_end=PI / 4)}),
+    # --- speeds and durations of whole-object motion, pronouns, comparatives, codes, subjectless effects ---
+    R("examples/toy_car", "push the toy car forward for 2 seconds", base=(0.8, 0.0, 0.0)),  # no distance: default 0.4 m/s x 2 s
+    R("examples/toy_car", "push the toy car forward at 0.1 m/s for 3 seconds", base=(0.3, 0.0, 0.0)),
+    R("refrigerator_11178", "Open both fridge doors fully, then close them back to 30 degrees.", joints={"joint_0": E(end=PI / 6), "joint_1": E(end=PI / 6)}),
+    R("refrigerator_11178", "Swing the narrower fridge door open 100 degrees.", joints={"joint_0": E(end=math.radians(100)), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "Open the wider fridge door 90 degrees.", joints={"joint_1": E(end=PI / 2), "joint_0": E(still=True)}),
+    R("safe_102387", "Dial the combination, and the safe door opens 90 degrees.", joints={"joint_1": E(moves=True), "joint_0": E(end=PI / 2)}, order=(("joint_1", "joint_0"),)),
+    R("safe_101564", "Key in the top-middle button; the door then unlocks and opens 45 degrees.", joints={"joint_13": E(end=PI / 4)}, order=(("joint_1", "joint_13"),)),
+    R("trash_can_102181", "Step on the pad only a little so the lid opens about 30 degrees.", joints={"joint_0": E(end=0.2 * 0.5718), "joint_1": E(end=PI / 6)}),
 ]
 
 
@@ -378,3 +387,11 @@ def test_carried_amount_returns_to_start() -> None:
     trajectory = animate("examples/toy_car", "Push the car 0.3 m forward and then 0.3 m back to where it started.").trajectory
     assert float(trajectory.base_translation[:, 0].max()) == pytest.approx(0.3, abs=0.01)
     assert float(trajectory.base_translation[-1, 0]) == pytest.approx(0.0, abs=0.01)
+
+
+def test_slowly_takes_longer_than_quickly() -> None:
+    """A speed word scales the time of a whole-object motion; it is not a speed in m/s."""
+    slow = _duration("examples/toy_car", "push the toy car forward 40 cm slowly")
+    plain = _duration("examples/toy_car", "push the toy car forward 40 cm")
+    fast = _duration("examples/toy_car", "push the toy car forward 40 cm quickly")
+    assert slow > plain >= fast
