@@ -19,6 +19,7 @@ DEFAULT_SPEED_MPS = 0.4
 """Speed of a timed motion with no distance or speed given: "push the cart forward for 2 seconds" moves it 0.8 m."""
 COAST = re.compile(r"\b(?:let (?:it|them)\s+(?:roll|coast|glide|slide)|coast(?:s|ing)?|glide(?:s)?|roll(?:s|ing)? to a stop|give (?:it|the \w+) a (?:push|shove|nudge)|comes? to a stop|slows? down)\b")
 MIN_WHEEL_RADIUS_M = 1e-4
+LOWERING = frozenset({"lower", "drop", "lay"})
 HORIZONTAL_AXIS_MAX_UP = 0.5
 
 
@@ -26,6 +27,8 @@ def direction(verb: str | None, particle: str | None, quantity: Quantity, obj: O
     """Unit world direction of a whole-object motion."""
     if quantity.axis is not None:
         return np.asarray(quantity.axis, dtype=np.float64)
+    if verb in LOWERING and quantity.axis is None and quantity.direction in (None, "backward", "down"):
+        return -obj.up  # "lower it", "set it back down"
     word = quantity.direction or {"up": "up", "down": "down", "forward": "forward", "backward": "backward", "away": "away"}.get(particle or "")
     table = {
         "forward": obj.front, "backward": -obj.front, "left": -obj.right, "right": obj.right,

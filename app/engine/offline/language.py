@@ -106,6 +106,11 @@ def normalize(prompt: str) -> str:
     # "back to where it started": a return, not a verb of its own
     text = re.sub(r"\b(?:back\s+)?to (?:where (?:it|they|you|we) (?:started|began|was|were)|(?:its|their|the) (?:starting|original|initial) (?:point|position|place|spot))\b",
                   "back", text)
+    # "reopen it to its original angle", "set it back down": a return to where the part rested
+    text = re.sub(r"\bto (?:its|their|the) (?:original|initial|starting) (?:angle|height|opening|setting|state|level)\b", "back to rest", text)
+    text = re.sub(r"\b(?:set|put|place)s?\s+(it|them)\s+(?:back\s+)?down\b", r"lower \1 back down", text)
+    # "raise the lid, hold it there, then ...": staying put is a pause, not a motion
+    text = re.sub(r"\b(?:hold|keep|leave)s?\s+(?:it|them)\s+(?:there|in place|in position|steady|still)\b", ". pause. ", text)
     # "the chest of drawers", "a bank of drawers": the drawers name the whole object
     text = re.sub(r"\b(?:chest|cabinet|set|bank|unit|tower|stack)s? of drawers\b", "dresser", text)
     # "take your foot off (the pedal)", "lift your finger": the user lets go of what was pressed
@@ -259,7 +264,7 @@ def _verb(text: str) -> tuple[str | None, str | None, int, int]:
                 previous = word
                 continue
             kind = VERBS[base]
-            if base in ("fold", "flip", "tilt", "lean") and re.match(r"\s*(?:\w+\s+){0,3}?(?:back|backwards|backward|open|out|up)\b", text[match.end():]):
+            if base in ("fold", "flip", "tilt", "lean") and re.match(r"\s*(?:[\w']+\s+){0,5}?(?:back|backwards|backward|open|out|up)\b", text[match.end():]):
                 kind = "open"
             if base in ("spring", "snap", "pop", "bounce") and re.match(r"\s*back\b", text[match.end():]):
                 kind = "release"
@@ -295,7 +300,7 @@ def _particle(text: str, verb_end: int) -> str | None:
 
 
 _INSTRUMENT_BEFORE = re.compile(
-    r"\b(?:on|by|with|using|via|holding|gripping|from|below|above|under|beneath|over|beside|behind|near|next to|left of|right of|against)"
+    r"\b(?:on|by|with|using|via|holding|gripping|from|out of|off(?: of)?|away from|clear of|below|above|under|beneath|over|beside|behind|near|next to|left of|right of|against)"
     r"\s+(?:its|their|the|his|her|both)?\s*(?:[a-z-]+\s+)?$"
 )
 _DESCRIPTIVE_AFTER = re.compile(r"^\s*(?:and all|included|attached|on top)\b")
@@ -315,8 +320,14 @@ def _object_mention(text: str, after: int, parts: list[tuple[int, int, str, str]
             modifier = re.match(r"[a-z-]+(?:'s)?\s+", text[nxt:])
             if nxt in starts or (modifier is not None and nxt + modifier.end() in starts):
                 continue
+        if re.match(r"'s\s+(?!own\b)[a-z]", text[end:]):
+            return None  # "the laptop's battery": the object owns a part we do not know, it is not the target
         return Mention(category="object", head=word, position=after + match.start())
     return None
+
+
+_MANNER = frozenset({"fully", "completely", "all", "halfway", "slightly", "gently", "slowly", "quickly", "partly", "partially", "way"})
+"""Words after a verb that say how, never what ("rock the switch fully ...")."""
 
 
 def parse_clause(text: str) -> Clause:
@@ -357,8 +368,9 @@ def parse_clause(text: str) -> Clause:
     unknown = None
     if not mentions and verb:
         rest = re.sub(r"^\s*(?:the|a|an|its|this|that)\s+", "", plain[verb_end:]).strip()
+        rest = re.sub(r"^[a-z]+'s\s+", "", rest)  # "the laptop's battery": the battery is what is named
         noun = re.match(r"([a-z][a-z\- ]{1,40}?)(?:\s+(?:to|by|and|with|for|so|until|all|fully|halfway|slightly)\b|[,.]|$)", rest)
-        if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES:
+        if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES and noun.group(1).split()[0] not in _MANNER:
             unknown = noun.group(1).strip()
     scope = re.split(r"\b(?:with|while|without)\b", plain[verb_end:], maxsplit=1)[0] if verb else ""
     particle = _particle(plain[:verb_end] + scope, verb_end) if verb else None

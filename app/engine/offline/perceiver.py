@@ -52,6 +52,14 @@ DEFAULT_PAUSE_S = 1.0
 """A "wait" without a length."""
 DISPLACING_VERBS = frozenset({"push", "hit", "punch", "kick", "shove", "nudge"})
 """Press-type verbs that also move a whole object that is free to move."""
+RETURN = re.compile(r"\bback (?:down|to rest)\b")
+"""A motion back to where the part (or object) started."""
+TO_DISTANCE = re.compile(r"\bto (?:a height of |a point )?\d+(?:\.\d+)?\s*(?:mm|cm|m|millimet|centimet|met|inch|in)\w*\b")
+"""A distance that is an end position ("lower it to 10 cm"), not an increment."""
+HINGE_VERBS = frozenset({"fold", "swing", "tilt", "unfold"})
+"""Verbs of rotation about a hinge."""
+SLIDE_VERBS = frozenset({"slide"})
+"""Verbs of straight-line motion."""
 OBJECT_VERBS = frozenset({"roll", "drag", "carry", "pick", "transport", "drive", "move", "lift", "shove", "wheel", "tow"})
 
 
@@ -143,6 +151,13 @@ class _Builder:
             return JointGoal(part.joint, part.link, part.category, role, value=part.geometry.rest,  # type: ignore[arg-type]
                              expr=target_expression(part.geometry, part.geometry.rest), returns="stays")
         value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, self.state.get(part.joint))
+        if (value is not None and quantity.distance_m is not None and part.geometry.type == "prismatic" and TO_DISTANCE.search(clause.text)
+                and part.geometry.lower is not None and part.geometry.upper is not None):
+            # "lower it to 10 cm": a distance after "to" is where the part ends, measured from where it rests
+            far = part.geometry.upper if abs(part.geometry.upper - part.geometry.rest) >= abs(part.geometry.lower - part.geometry.rest) else part.geometry.lower
+            value = float(np.clip(part.geometry.rest + np.sign(far - part.geometry.rest) * quantity.distance_m, part.geometry.lower, part.geometry.upper))
+        if RETURN.search(clause.text) and not _has_amount(quantity) and part.joint in self.state:
+            value = part.geometry.rest  # "lower it back down", "reopen it back to rest": to where it started
         returns = CONTROL_RETURN.get(part.category or "", "stays") if role == "control" else "stays"
         if returns == "self_return" and (quantity.orientation is not None or (part.category == "handle" and not self._on_hinged(part))):
             returns = "stays"  # a requested end state, or a carry handle (a bucket's), is kept
@@ -161,6 +176,8 @@ class _Builder:
         possessed = bool(re.search(r"\b(?:" + "|".join(sorted(OBJECT_WORDS)) + r")(?:'s\b|\s+\w+\s+of\b)", clause.text)) or bool(
             re.search(r"\b(?:of|on) (?:the|this) (?:" + "|".join(sorted(OBJECT_WORDS)) + r")\b", clause.text))
         fits = kind in ("open", "close", "raise", "lower", "pull_out", "push_in") and part.geometry.open_value is not None
+        if kind in ("pull_out", "push_in") and part.geometry.type != "prismatic":
+            fits = False  # "eject the laptop's battery": pulling something out is not swinging a hinged part
         return possessed and fits
 
     def _on_hinged(self, part: Part) -> bool:
@@ -203,12 +220,25 @@ class _Builder:
                 raise self.refuse(f"cannot find '{clause.unknown_object}' on the asset")
         elif missing:
             self.notes.append(f"ignored '{', '.join(missing)}': no such movable part")
+        self.check_motion(clause, parts)
         out = []
         for part in parts:
             self.mentioned.add(part.joint)
             own_role = role or ("control" if part.category in CONTROL_CATEGORIES else "direct")
             out.append(self.goal(part, clause, own_role, quantity))
         return out
+
+    def check_motion(self, clause: Clause, parts: list[Part]) -> None:
+        """A verb that names a kind of motion the grounded part cannot make is not a guess to animate:
+        "fold down the tray" on a part that only slides, "slide the sash 20 cm" on a part that only swings."""
+        named = [p for p in parts if p.category not in CONTROL_CATEGORIES and p not in self.last_parts]
+        if not named:
+            return
+        if clause.verb in HINGE_VERBS and all(p.geometry.type == "prismatic" for p in named):
+            raise self.refuse(f"'{clause.verb}' swings a part about a hinge, but the {named[0].category or 'part'} found only slides")
+        sliding = clause.verb in SLIDE_VERBS or re.search(r"\bsideways\b", clause.text)
+        if sliding and clause.quantity.distance_m is not None and all(p.geometry.type != "prismatic" for p in named):
+            raise self.refuse(f"'{clause.text}' slides a part in a straight line, but the {named[0].category or 'part'} found only rotates")
 
     def is_base(self, clause: Clause) -> bool:
         """Whole-object motion: the first thing the verb acts on is the object itself."""
@@ -307,6 +337,9 @@ class _Builder:
             return
         if self.is_base(clause) and action.means is None:
             motion = base_goal(clause.verb, clause.particle, quantity, self.parsed.text, self.parts, self.obj)
+            previous = self.steps[-1].base if self.steps else None
+            if RETURN.search(clause.text) and quantity.distance_m is None and previous is not None:
+                motion = replace(motion, distance_m=previous.distance_m)  # "lift it 10 cm and set it back down": the same way back
             quantified = quantity.distance_m is not None or quantity.duration_s is not None
             if self.elaborates(action, clause, motion, quantified):
                 return
@@ -422,7 +455,11 @@ class _Builder:
 
     def instrument_means(self, clause: Clause) -> Clause | None:
         """ "Open the microwave with its release button": a control named as the tool is the means."""
-        tools = [m for m in clause.mentions if m.instrument and m.category in CONTROL_CATEGORIES]
+        tools = [m for m in clause.mentions if m.instrument and m.category in CONTROL_CATEGORIES
+                 and ground_mention(m, self.asset, self.obj, self.parts, self.words)]
+        for mention in clause.mentions:  # "open the door with the handle": a tool the asset lacks only describes how
+            if mention.instrument and mention.category in CONTROL_CATEGORIES and mention not in tools:
+                self.notes.append(f"ignored the {mention.head}: not a movable part of the asset")
         targets = [m for m in clause.mentions if not m.instrument]
         if not tools or not targets:
             return None

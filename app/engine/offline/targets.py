@@ -150,6 +150,8 @@ def goal_value(
     category = part.category
     if quantity.orientation is not None and asset is not None and kind != "spin":
         value = orientation_value(asset, geometry, quantity.orientation, opening=kind not in ("close", "push_in", "lower", "release"))
+        if value is not None and quantity.fraction is not None and quantity.fraction < 1.0:
+            return now + quantity.fraction * (value - now)  # "halfway to upright": a fraction of the way there
         if value is not None:
             return value
     closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
@@ -180,11 +182,16 @@ def goal_value(
         if partial and abs(now - closed) > LIMIT_EPS:
             return _toward(geometry, now, closed, quantity, now)
         return closed
-    if kind == "raise" and geometry.up_value is not None and not (opened is not None and abs(geometry.up_value - now) <= LIMIT_EPS):
+    against_opening = opened is not None and (geometry.up_value - geometry.rest) * (opened - closed) < 0 if geometry.up_value is not None else False
+    if kind == "raise" and geometry.up_value is not None and not (opened is not None and abs(geometry.up_value - now) <= LIMIT_EPS) and not (
+            against_opening and category not in PUSH_CATEGORIES):  # "raise the chest lid 50 degrees" opens it, even if its overtravel sits higher
         return _toward(geometry, geometry.rest, geometry.up_value, quantity, now)
     if kind == "raise" and opened is not None and category not in PUSH_CATEGORIES:
         # a lid that flips all the way back ends lower than it starts: "lift the lid" still opens it
         return _toward(geometry, closed, opened, quantity, now)
+    if kind == "lower" and geometry.up_value is not None and abs(now - geometry.rest) > LIMIT_EPS and (now - geometry.rest) * (geometry.up_value - geometry.rest) > 0:
+        # "raise the lid 30 cm, then lower it 20 cm": back toward where it rested, from where it is now
+        return _toward(geometry, now, geometry.rest, quantity, now)
     if kind == "lower" and geometry.down_value is not None:
         return _toward(geometry, geometry.rest, geometry.down_value, quantity, now)
     if kind == "release":

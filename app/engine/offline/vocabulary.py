@@ -29,7 +29,7 @@ CATEGORY_WORDS: dict[str, tuple[str, ...]] = {
     "wheel": ("wheel", "wheels", "caster", "casters", "castor", "tire", "tyre", "tires"),
     "window": ("window", "windows", "sash", "pane", "rotation window"),
     "switch": ("switch", "switches", "toggle", "rocker", "toggle button"),
-    "container": ("container", "basket", "jug", "carafe", "water tank"),
+    "container": ("container", "basket", "jug", "carafe", "water tank", "jar", "jars"),
     "body": ("body", "base", "frame", "chassis", "housing", "case", "casing", "stand"),
     # what a code is entered on: a combination dial, else the keypad's buttons (grounding.RELATED)
     "code": ("combination", "combination lock", "code", "passcode", "keycode"),
@@ -84,7 +84,7 @@ VERBS: dict[str, str] = {
     "spin": "spin", "revolve": "spin", "roll": "move", "drive": "move",
     "lift": "raise", "raise": "raise", "flip": "toggle", "pick": "raise", "elevate": "raise", "tilt": "raise",
     "lower": "lower", "drop": "lower", "put": "lower",
-    "toggle": "toggle", "switch": "toggle", "flick": "toggle",
+    "toggle": "toggle", "switch": "toggle", "flick": "toggle", "rock": "toggle",
     "move": "move", "drag": "move", "shove": "move", "carry": "move", "transport": "move",
     "translate": "move", "shift": "move", "nudge": "move", "wheel": "move",
     "operate": "operate", "use": "operate", "activate": "operate", "engage": "operate", "trigger": "operate",

@@ -297,6 +297,27 @@ ROWS: list[Row] = [
     R("safe_102387", "Dial the combination, and the safe door opens 90 degrees.", joints={"joint_1": E(moves=True), "joint_0": E(end=PI / 2)}, order=(("joint_1", "joint_0"),)),
     R("safe_101564", "Key in the top-middle button; the door then unlocks and opens 45 degrees.", joints={"joint_13": E(end=PI / 4)}, order=(("joint_1", "joint_13"),)),
     R("trash_can_102181", "Step on the pad only a little so the lid opens about 30 degrees.", joints={"joint_0": E(end=0.2 * 0.5718), "joint_1": E(end=PI / 6)}),
+    # --- a named part that is not there, or cannot move as asked, is refused ---
+    R("storage_20453", "Fold down the desk's keyboard tray.", refuse=True),
+    R("laptop_10101", "Eject the laptop's battery.", refuse=True),
+    R("window_103135", "Slide the window sash sideways 20 cm.", refuse=True),
+    # --- descriptions and references are not the target ---
+    R("refrigerator_11178", "Open the fridge door with the handle a third of the way.", joints={"joint_1": E(end=PI / 3), "joint_0": E(still=True)}),
+    R("coffee_machine_103030", "Lift the blender jar 3 cm out of its base.", joints={"joint_1": E(end=0.03), "joint_2": E(still=True)}),
+    R("coffee_machine_103030", "Once the lid is lifted 20 cm off the jar, lift the jar 4 cm.", joints={"joint_2": E(end=0.2), "joint_1": E(end=0.04)},
+      order=(("joint_2", "joint_1"),)),
+    R("switch_100952", "Rock the wall switch fully to its other position.", joints={"joint_0": E(end="upper")}),
+    # --- returns and lowering ---
+    R("toilet_102622", "Lift the lid all the way up, then lower it back down.", joints={"joint_0": E(peak="upper")}),
+    R("laptop_10101", "Close the laptop, then reopen it to its original angle.", joints={"joint_1": E(peak="lower")}),
+    R("kitchen_pot_100038", "Raise the lid 30 cm, hold it there, then lower it to 10 cm.", joints={"joint_0": E(end=0.1)}),
+    R("kitchen_pot_100038", "Raise the lid 30 cm, then lower it 20 cm.", joints={"joint_0": E(end=0.1)}),
+    R("examples/pedal_bin", "Lift the pedal bin 10 cm and set it back down.", base=(0.0, 0.0, 0.0)),
+    R("examples/pedal_bin", "Lift the pedal bin 10 cm, then lower it 10 cm.", base=(0.0, 0.0, 0.0)),
+    # --- which way a verb moves the part ---
+    R("box_100671", "Raise the chest lid 50 degrees.", joints={"joint_0": E(end=math.radians(50))}),
+    R("stapler_103099", "Fold the stapler's top arm fully back.", joints={"joint_0": E(end="upper")}),
+    R("bucket_102352", "Raise the bucket handle halfway to upright.", joints={"joint_0": E(end=4.71867216569187 / 4)}),
 ]
 
 
@@ -380,6 +401,13 @@ def test_hold_for_a_time_waits() -> None:
     plain = _duration("trash_can_102181", "Step on the pedal, then let go.")
     held = _duration("trash_can_102181", "Step on the pedal, hold the lid open for two seconds, then let go.")
     assert held >= plain + 2.0 - 1e-6
+
+
+def test_set_back_down_returns_to_start() -> None:
+    """ "lift it 10 cm and set it back down": the base goes up, then comes back down."""
+    trajectory = animate("examples/pedal_bin", "Lift the pedal bin 10 cm and set it back down.").trajectory
+    assert float(trajectory.base_translation[:, 2].max()) == pytest.approx(0.1, abs=0.01)
+    assert float(abs(trajectory.base_translation[-1]).max()) == pytest.approx(0.0, abs=0.01)
 
 
 def test_carried_amount_returns_to_start() -> None:
