@@ -149,13 +149,29 @@ def _salient(candidates: list[Part], geometry: ObjectGeometry) -> Part:
     return max(candidates, key=lambda p: (round(p.geometry.size, 3), _position(p, geometry)[2], -_position(p, geometry)[1]))
 
 
-def _by_category(parts: list[Part], category: str) -> list[Part]:
+LID_MAX_VERTICAL_AXIS = 0.7
+"""|cos| between a hinge axis and up above which the hinge is a side hinge (a door's), never a lid's."""
+
+
+def _fits(part: Part, category: str, up: np.ndarray | None) -> bool:
+    """Whether a part of a related category can be what the named kind of part means."""
+    if category == "knob" and part.geometry.type == "prismatic":
+        return False  # a knob turns: a sliding lever is not what "the knob" means
+    if category == "lid" and up is not None and part.geometry.type != "prismatic":
+        # a lid swings up about a horizontal hinge: a side-hinged door is not "the lid"
+        axis = np.asarray(part.geometry.axis_world, dtype=float)
+        norm = float(np.linalg.norm(axis))
+        if norm > 0 and abs(float(axis @ up)) / norm > LID_MAX_VERTICAL_AXIS:
+            return False
+    return True
+
+
+def _by_category(parts: list[Part], category: str, up: np.ndarray | None = None) -> list[Part]:
     exact = [p for p in parts if p.category == category]
     if exact:
         return exact
     for related in RELATED.get(category, ()):
-        # a knob turns: a sliding lever is not what "the knob" means
-        found = [p for p in parts if p.category == related and not (category == "knob" and p.geometry.type == "prismatic")]
+        found = [p for p in parts if p.category == related and _fits(p, category, up)]
         if found:
             return found
     return []
@@ -177,7 +193,7 @@ def ground_mention(mention: Mention, asset: ArticulatedAsset, geometry: ObjectGe
 
     ``words`` are extra prompt words that may pick a part by name ("release" button).
     """
-    candidates = _by_category(parts, mention.category)
+    candidates = _by_category(parts, mention.category, np.asarray(geometry.up, dtype=float))
     if mention.owner is not None and candidates:
         owners = ground_mention(mention.owner, asset, geometry, parts)
         owned = [p for p in candidates if any(p.link in asset.descendants(o.link) and p.joint != o.joint for o in owners)]

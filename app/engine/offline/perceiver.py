@@ -79,6 +79,8 @@ class _Builder:
         self.head_of: dict[str, str] = {}
         self.clause_text = ""
         self.implicit_effects_at: dict[str, int] = {}
+        self.implicit_from: dict[str, float | None] = {}
+        """Where each implied effect started: a later clause stating that effect measures its amount from there."""
         self.state: dict[str, float] = {}
         self.unlatched: list[Part] = []
         self.last_base_quantified = True
@@ -150,7 +152,11 @@ class _Builder:
                 self.notes.append(f"{part.joint} is already off (at rest)")
             return JointGoal(part.joint, part.link, part.category, role, value=part.geometry.rest,  # type: ignore[arg-type]
                              expr=target_expression(part.geometry, part.geometry.rest), returns="stays")
-        value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, self.state.get(part.joint))
+        current = self.state.get(part.joint)
+        if self.implicit_effects_at.get(part.joint) == len(self.steps) - 1:
+            # "depress the pedal halfway; the lid lifts about 40 degrees": the stated effect replaces the implied one
+            current = self.implicit_from.get(part.joint)
+        value = goal_value(kind, clause.particle, part, quantity, self.obj, self.asset, current)
         if (value is not None and quantity.distance_m is not None and part.geometry.type == "prismatic" and TO_DISTANCE.search(clause.text)
                 and part.geometry.lower is not None and part.geometry.upper is not None):
             # "lower it to 10 cm": a distance after "to" is where the part ends, measured from where it rests
@@ -196,10 +202,12 @@ class _Builder:
             if not found and mention.category != "object":
                 missing.append(mention.head)
             parts.extend(p for p in found if p not in parts)
-        if not parts and required:  # "unlatch the cupboard with the knob": the tool is what moves
+        if not parts and required and not missing:  # "unlatch the cupboard with the knob": the tool is what moves
             for mention in clause.mentions:
                 if mention.instrument and mention.category != "object":
                     parts.extend(p for p in self.ground(mention, clause.kind) if p not in parts)
+        if clause.kind == "unlatch" and clause.particle == "open" and any(p.category in HINGED for p in parts):
+            clause = replace(clause, kind="open")  # "unlock the door, which swings open 60 degrees": the door opens too
         if clause.kind == "unlatch" or (clause.kind == "release" and re.search(r"\b(?:latch|lock|catch|bolts?)\b", clause.text)):
             hinged = [p for p in parts if p.category in HINGED]
             parts = [p for p in parts if p.category not in HINGED]  # "unlatch the door" does not move the door itself
@@ -402,6 +410,9 @@ class _Builder:
         controls = self.sustain(controls, effects)
         controls, effects = self.couple_amounts(controls, effects, control_amount, effect_amount)
         coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
+        if controls and effects and not implied and not effect_amount and kind not in ("open", "close", "raise", "lower", "pull_out", "push_in"):
+            # "push the key so the door unlocks and swings open 30 degrees": the effect's end was not stated, a later amount refines it
+            implied = list(effects)
         primitive = (means.verb if means else clause.verb) or clause.kind or "move"
         moved = effects or controls
         self.last_parts = [p for p in self.parts if any(g.joint == p.joint for g in moved)]
@@ -409,6 +420,7 @@ class _Builder:
             self.last_parts = list(self.unlatched)
         self.unlatched = []
         self.last_controls = [p for p in self.parts if any(g.joint == p.joint for g in controls)]
+        self.implicit_from.update({g.joint: self.state.get(g.joint) for g in implied})
         self.state.update({g.joint: g.value for g in moved if g.value is not None})
         for control in controls:  # a control that springs back ends at rest
             if control.returns == "self_return" and not control.sustains:

@@ -12,6 +12,7 @@ from app.engine.offline.geometry import JointGeometry, ObjectGeometry
 from app.engine.offline.grounding import Part
 from app.engine.offline.orientation import directional_sign, orientation_value
 from app.engine.offline.quantities import Quantity
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES
 
 DEFAULT_TURN_RAD = math.pi / 2
 """A knob turned without an amount turns a quarter turn."""
@@ -161,9 +162,14 @@ def goal_value(
         # A part resting nearer its closed limit than its open one is closed at rest (the range past it is overtravel).
         shut = geometry.rest if abs(geometry.rest - closed) < abs(opened - geometry.rest) else closed
         return _clamp(geometry, shut + (1.0 if opened >= closed else -1.0) * quantity.angle_rad)
+    if (kind in ("press", "move", "push_in") and quantity.direction == "backward" and quantity.axis is None and opened is not None
+            and category not in PUSH_CATEGORIES and category not in CONTROL_CATEGORIES and abs(now - closed) > LIMIT_EPS):
+        # "pull the drawer out 30 cm, then push it back 10 cm": back toward closed, by the amount, from where it is now
+        return _toward(geometry, now, closed, quantity, now)
     if kind in ("turn", "move", "open", "toggle", "operate", "press", "lower", "raise") and quantity.sense is None and not (category in PUSH_CATEGORIES and geometry.type == "prismatic"):
         value = _directional(part, quantity, obj)
-        if value is not None and (kind != "open" or geometry.open_value is None):
+        # a world side ("onto the rim on the +X side") picks the way even when the part has an open side
+        if value is not None and (kind != "open" or geometry.open_value is None or quantity.axis is not None):
             return value
     kind = effective_kind(kind, particle) or "operate"
     if kind in ("operate", "unlatch"):

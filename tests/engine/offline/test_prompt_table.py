@@ -234,6 +234,19 @@ ROWS: list[Row] = [
     R("examples/toy_car", "spin all four wheels", joints={"wheel_front_left_axle": E(sign=1), "wheel_rear_left_axle": E(sign=1),
                                                           "wheel_front_right_axle": E(sign=-1), "wheel_rear_right_axle": E(sign=-1)}),
     R("examples/toy_car", "turn all the wheels a quarter turn", joints={"wheel_front_left_axle": E(end=PI / 2), "wheel_rear_right_axle": E(end=-PI / 2)}),
+    # --- probe 5: unknown part kinds, effect-clause amounts, relative "push it back", world sides ---
+    R("examples/cabinet", "Lift the cabinet's top lid.", refuse=True),  # a side-hinged door is not a lid
+    R("refrigerator_11178", "Open the ice dispenser flap.", refuse=True),
+    R("kitchen_pot_100038", "Rotate the knob on the pot lid.", refuse=True),  # no knob: the lid is not moved instead
+    R("examples/pedal_bin", "Depress the pedal halfway; the lid lifts about 40 degrees.",
+      joints={"pedal_pivot": E(end=0.175), "lid_hinge": E(end=-math.radians(40))}, order=(("pedal_pivot", "lid_hinge"),)),
+    R("safe_101593", "Turn the spoked handle a quarter turn clockwise to unlock the door, which swings open 60 degrees.",
+      joints={"joint_1": E(end=-PI / 2), "joint_0": E(end=math.radians(60))}, order=(("joint_1", "joint_0"),)),
+    R("safe_101564", "Push the bottom-middle key so the safe door unlocks and swings open 30 degrees.",
+      joints={"joint_10": E(moves=True), "joint_13": E(end=math.radians(30))}),
+    R("storage_19179", "Pull the top drawer out 30 cm, then push it back 10 cm.", joints={"joint_1": E(end=0.20)}),
+    R("bucket_100454", "Swing the bucket handle down onto the rim on the +X side.", joints={"joint_0": E(end="upper")}),
+    R("bucket_100454", "Swing the bucket handle down onto the rim on the -X side.", joints={"joint_0": E(end="lower")}),
     # --- refusals ---
     R("microwave_7119", "open the flux capacitor", refuse=True),
     R("storage_19179", "open the door", refuse=True),
