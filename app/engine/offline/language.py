@@ -98,7 +98,12 @@ def normalize(prompt: str) -> str:
     for fraction, digits in (("a half", "5"), ("a quarter", "25"), ("three quarters", "75")):
         text = re.sub(r"(\d+|one|two|three|four|five) and " + fraction + r"\b", _and_a_fraction(digits), text)
     text = _keypad(text)
-    text = re.sub(r"\bkey(?:s|ed|ing)?\s+in\b", "press", text)  # "key in the top button"
+    # "open both doors 90 degrees, left one first": one after the other, the named one first
+    text = _BOTH_FIRST.sub(_both_first, text)
+    # "press the key to pop the door (fully) open": the effect is the opening
+    text = re.sub(r"\bto\s+(?:pop|spring|snap|swing)\s+((?:the|its)\s+[\w-]+(?:\s+[\w-]+)?)\s+((?:fully|wide|all the way)\s+)?open\b", r"to open \1 \2", text)
+    # "key in the top button" (a verb; "the middle key in the bottom row" names a key)
+    text = re.sub(r"(^|[,.;:!?]\s*|\b(?:then|and|first|please|now|to)\s+)key(?:s|ed|ing)?\s+in\b", r"\1press", text)
     # "...; the door then opens": the sequence word leads its clause
     text = re.sub(r"(^|[.;!?:]\s+)((?:the|its|their)\s+(?:[\w-]+\s+){0,2}?[\w-]+)\s+then\s+", r"\1then \2 ", text)
     # "..., wait (2 seconds), then ...": a pause of its own between the steps around it
@@ -129,6 +134,19 @@ def normalize(prompt: str) -> str:
         r"(push|shove|nudge|spin|turn|twist|pull|tug|press|kick)s?\b",
         _give, text)
     return re.sub(r"\s+", " ", text).strip()
+
+
+_OPPOSITE = {"left": "right", "right": "left", "top": "bottom", "bottom": "top", "upper": "lower", "lower": "upper", "front": "back", "back": "front"}
+_BOTH_FIRST = re.compile(
+    r"\b([a-z]+)\s+(?:both|the two|the 2)\s+((?:[\w-]+\s+)?)([\w-]+?)s\b([^,.;]*?),?\s+(?:the\s+)?(left|right|top|bottom|upper|lower|front|back)(?:[\s-]+hand)?\s+one\s+first\b"
+)
+
+
+def _both_first(match: re.Match[str]) -> str:
+    """ "open both doors 90 degrees, left one first" -> "open the left door 90 degrees, then open the right door 90 degrees"."""
+    verb, modifier, noun, rest, side = match.groups()
+    rest = rest.rstrip()
+    return f"{verb} the {side} {modifier}{noun}{rest}, then {verb} the {_OPPOSITE[side]} {modifier}{noun}{rest}"
 
 
 _WAIT = re.compile(
@@ -320,11 +338,14 @@ def _object_mention(text: str, after: int, parts: list[tuple[int, int, str, str]
             modifier = re.match(r"[a-z-]+(?:'s)?\s+", text[nxt:])
             if nxt in starts or (modifier is not None and nxt + modifier.end() in starts):
                 continue
-        if re.match(r"'s\s+(?!own\b)[a-z]", text[end:]):
+        if re.match(r"(?:\s+[a-z-]+)?'s\s+(?!own\b)[a-z]", text[end:]):
             return None  # "the laptop's battery": the object owns a part we do not know, it is not the target
         return Mention(category="object", head=word, position=after + match.start())
     return None
 
+
+_CONTROLS = frozenset({"button"})
+"""Categories of parts whose name a part word may modify ("the door release button", "the lid button")."""
 
 _MANNER = frozenset({"fully", "completely", "all", "halfway", "slightly", "gently", "slowly", "quickly", "partly", "partially", "way"})
 """Words after a verb that say how, never what ("rock the switch fully ...")."""
@@ -340,6 +361,8 @@ def parse_clause(text: str) -> Clause:
     found = [f for f in found if not ((after := re.match(r"\s+([a-z]+)", plain[f[1]:])) and after.group(1) in OBJECT_WORDS_SET)]
     # "the combination dial": a code word naming the part after it is only its modifier
     found = [f for f in found if not (f[2] == "code" and any(re.fullmatch(r"\s+", plain[f[1]:g[0]]) for g in found))]
+    # "the door release button": a part word directly before a control's name only says what the control is for
+    found = [f for f in found if not any(g[2] in _CONTROLS and f[2] != g[2] and re.fullmatch(r"\s+", plain[f[1]:g[0]]) for g in found)]
     mentions: list[Mention] = []
     boundary = verb_end
     for start, end, category, phrase in found:
@@ -368,7 +391,7 @@ def parse_clause(text: str) -> Clause:
     unknown = None
     if not mentions and verb:
         rest = re.sub(r"^\s*(?:the|a|an|its|this|that)\s+", "", plain[verb_end:]).strip()
-        rest = re.sub(r"^[a-z]+'s\s+", "", rest)  # "the laptop's battery": the battery is what is named
+        rest = re.sub(r"^(?:[a-z-]+\s+)?[a-z]+'s\s+", "", rest)  # "the laptop's battery": the battery is what is named
         noun = re.match(r"([a-z][a-z\- ]{1,40}?)(?:\s+(?:to|by|and|with|for|so|until|all|fully|halfway|slightly)\b|[,.]|$)", rest)
         if noun and noun.group(1).strip() and noun.group(1).split()[0] not in PARTICLES and noun.group(1).split()[0] not in _MANNER:
             unknown = noun.group(1).strip()
@@ -489,7 +512,11 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
     actions: list[Action] = []
     for segment in (s for s in _SEQ_SPLIT.split(text) if s and s.strip(" ,")):
         segment = _FILLER.sub("", segment.strip(" ,"))
-        for ordered in _ordered(segment):
+        steps = _ordered(segment)
+        if len(steps) == 2 and not actions and re.match(r"^releasing\s+(?:the|its)\b", steps[0]) and steps[1] in segment[: segment.find(steps[0])]:
+            # "open the door after releasing the latch": nothing was pressed before, so releasing the latch means working it
+            steps[0] = re.sub(r"^releasing\b", "operating", steps[0])
+        for ordered in steps:
             # "while the door is moving" describes an ongoing motion, not a new one
             split = [p for p in _PARALLEL.split(ordered) if p.strip(" ,")]
             parallel_parts = [p for p in split if len(split) == 1 or not _PROGRESSIVE.match(p.strip(" ,"))]
@@ -517,5 +544,13 @@ def parse_prompt(prompt: str) -> ParsedPrompt:
                     elif piece_index > 0 and action.means is None and not clause.mentions and _SUBJECTLESS.match(piece.strip(" ,")):
                         # "the door unlocks and opens 45 degrees": the second verb shares the subject
                         clause = replace(clause, mentions=(Mention(category="object", head="it", position=len(clause.text)),))
+                    previous_action = actions[-1] if actions else None
+                    if (previous_action is not None and piece_index > 0 and action.means is None and previous_action.means is not None
+                            and previous_action.clause.kind == "release" and not _measured(previous_action.clause.quantity)
+                            and _measured(clause.quantity) and [m.head for m in clause.mentions] == ["it"]
+                            and any(m.category != "object" for m in previous_action.clause.mentions)):
+                        # "press the button to release the door, and lower it 40 degrees": the amount is the released part's
+                        actions[-1] = replace(previous_action, clause=replace(clause, mentions=previous_action.clause.mentions))
+                        continue
                     actions.append(Action(clause=clause, means=action.means, parallel=parallel, conjoined=piece_index > 0))
     return ParsedPrompt(text=text, actions=tuple(actions), quantity=parse_quantity(text))

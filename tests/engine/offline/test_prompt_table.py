@@ -331,6 +331,19 @@ ROWS: list[Row] = [
     R("box_100671", "Raise the chest lid 50 degrees.", joints={"joint_0": E(end=math.radians(50))}),
     R("stapler_103099", "Fold the stapler's top arm fully back.", joints={"joint_0": E(end="upper")}),
     R("bucket_102352", "Raise the bucket handle halfway to upright.", joints={"joint_0": E(end=4.71867216569187 / 4)}),
+    # --- probe6 fixes ---
+    R("microwave_7304", "Press the microwave's door release button.", refuse=True),
+    R("examples/toy_car", "Raise the toy car's spoiler.", refuse=True),
+    R("safe_101564", "Press the middle key in the bottom row to pop the door fully open.",
+      joints={"joint_10": E(peak="upper"), "joint_13": E(end="upper"), "joint_9": E(still=True), "joint_11": E(still=True)}, order=(("joint_10", "joint_13"),)),
+    R("examples/microwave", "Press the door release button to open the door 80 degrees.",
+      joints={"release_button_slide": E(peak="upper"), "door_hinge": E(end=math.radians(80))}, order=(("release_button_slide", "door_hinge"),)),
+    R("dishwasher_12553", "Press the button to release the door, and lower it 40 degrees.",
+      joints={"joint_1": E(peak="upper"), "joint_0": E(end=math.radians(40))}, order=(("joint_1", "joint_0"),)),
+    R("examples/cabinet", "Open the cupboard door 90 degrees after releasing the latch knob.",
+      joints={"latch_knob_turn": E(peak="lower"), "door_hinge": E(end=-PI / 2)}, order=(("latch_knob_turn", "door_hinge"),)),
+    R("refrigerator_11178", "Open both fridge doors 90 degrees, left one first.",
+      joints={"joint_0": E(end=PI / 2), "joint_1": E(end=PI / 2)}, order=(("joint_0", "joint_1"),)),
 ]
 
 
