@@ -19,6 +19,16 @@ def _connection(database: Path, transport: str = SQLITE_TRANSPORT) -> Connection
     return Connection(f"sqlite:///{database}", transport=transport, transport_options={"connect_args": {"timeout": 5}})
 
 
+def _take(queue, count: int) -> list[int]:  # type: ignore[no-untyped-def]
+    """Receive and acknowledge ``count`` messages; their job numbers in order."""
+    received = []
+    for _ in range(count):
+        message = queue.get(timeout=5)
+        received.append(message.payload["job"])
+        message.ack()
+    return received
+
+
 def test_delivered_messages_leave_no_rows(tmp_path: Path) -> None:
     database = tmp_path / "broker.db"
     with _connection(database) as connection:
@@ -26,13 +36,8 @@ def test_delivered_messages_leave_no_rows(tmp_path: Path) -> None:
         for number in range(5):
             queue.put({"job": number})
         assert [visible for visible, _ in _rows(database)] == [1] * 5
-        received = []
-        for _ in range(5):
-            message = queue.get(timeout=5)
-            received.append(message.payload["job"])
-            message.ack()
+        assert _take(queue, 5) == [0, 1, 2, 3, 4]
         queue.close()
-    assert received == [0, 1, 2, 3, 4]
     assert _rows(database) == []
 
 
@@ -48,13 +53,8 @@ def test_rows_left_by_the_stock_transport_are_removed(tmp_path: Path) -> None:
     with _connection(database) as connection:
         queue = connection.SimpleQueue("jobs")  # opening a channel sweeps the delivered row
         assert [visible for visible, _ in _rows(database)] == [1, 1]
-        received = []
-        for _ in range(2):
-            message = queue.get(timeout=5)
-            received.append(message.payload["job"])
-            message.ack()
+        assert _take(queue, 2) == [1, 2]
         queue.close()
-    assert received == [1, 2]
     assert _rows(database) == []
 
 
