@@ -175,9 +175,14 @@ def parse_quantity(clause: str) -> Quantity:
         orientation = "vertical"
     elif re.search(r"\b(?:flat|horizontal|horizontally|level)\b", text):
         orientation = "flat"
+    fraction = None
+    if angle is None:
+        fraction = _amount(clause)
+        if fraction is None:
+            fraction = _amount(text)
     return Quantity(
         orientation=orientation,
-        fraction=None if angle is not None else _amount(clause) if _amount(clause) is not None else _amount(text),
+        fraction=fraction,
         angle_rad=angle,
         distance_m=distance,
         omega_radps=_omega(text),
