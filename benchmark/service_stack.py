@@ -7,6 +7,7 @@ service only over HTTP and command lines (it imports neither ``workers`` nor the
 
 from __future__ import annotations
 
+import contextlib
 import io
 import os
 import signal
@@ -99,14 +100,10 @@ class Stack:
         """SIGTERM to the main process (warm shutdown), then SIGKILL to whatever is left in its group."""
         if process.poll() is None:
             process.send_signal(signal.SIGTERM)
-            try:
+            with contextlib.suppress(subprocess.TimeoutExpired):  # still running: the group kill below ends it
                 process.wait(STOP_TIMEOUT_S)
-            except subprocess.TimeoutExpired:
-                pass
-        try:
+        with contextlib.suppress(ProcessLookupError):  # the group is already gone
             os.killpg(process.pid, signal.SIGKILL)
-        except ProcessLookupError:
-            pass
         process.wait(STOP_TIMEOUT_S)
 
     def start_api(self, processes: int = 1) -> str:
@@ -120,11 +117,9 @@ class Stack:
         while time.monotonic() < deadline:
             if self.api.poll() is not None:
                 raise RuntimeError(f"API exited; see {self.log_dir / 'api.log'}")
-            try:
+            with contextlib.suppress(httpx.HTTPError):  # not listening yet
                 if httpx.get(f"{url}/readyz", timeout=2).status_code == 200:
                     return url
-            except httpx.HTTPError:
-                pass
             time.sleep(0.1)
         raise RuntimeError(f"API not ready after {START_TIMEOUT_S:.0f} s")
 

@@ -22,21 +22,20 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.offline.base_motion import base_goal
-from app.engine.offline.geometry import JointGeometry, ObjectGeometry, analyse
+from app.engine.offline.coupling import couple_amounts
+from app.engine.offline.geometry import ObjectGeometry, analyse
 from app.engine.offline.grounding import Part, ground_mention, movable_parts, openable_parts
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Step
 from app.engine.offline.language import Action, Clause, Mention, ParsedPrompt, parse_prompt
-from app.engine.offline.orientation import orientation_value
 from app.engine.offline.quantities import Quantity
 from app.engine.offline.targets import effective_kind, goal_value, spin_omega, target_expression
-from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, OBJECT_WORDS, UNLATCH_CATEGORIES
+from app.engine.offline.vocabulary import CONTROL_CATEGORIES, CONTROL_RETURN, HINGED, OBJECT_WORDS, UNLATCH_CATEGORIES
 
 logger = logging.getLogger(__name__)
 
 BASE_KINDS = frozenset({"move", "press", "pull_out", "raise", "lower", "push_in", "spin"})
 RELEASE_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock"})
 RELEASE_BUTTON_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice", "oven"})
-HINGED = ("door", "lid", "screen", "window")
 REACHED_TOLERANCE = 1e-6
 PRONOUNS = frozenset({"it", "them", "one"})
 EVERYTHING = re.compile(r"\b(?:everything|all (?!the way)\w+|all$|every (?:door|drawer|lid|part))")
@@ -408,7 +407,9 @@ class _Builder:
             controls = self.unlatch_controls(effects, kind)
             effects = [replace(g, role="effect") for g in effects] if controls else effects
         controls = self.sustain(controls, effects)
-        controls, effects = self.couple_amounts(controls, effects, control_amount, effect_amount)
+        controls, effects, coupled = couple_amounts(controls, effects, control_amount, effect_amount, self.parts, self.obj, self.asset)
+        if coupled:
+            self.notes.append(coupled)
         coupling = tuple(f"{c.category or c.link} ({c.joint}) drives {e.category or e.link} ({e.joint})" for c in controls for e in effects)
         if controls and effects and not implied and not effect_amount and kind not in ("open", "close", "raise", "lower", "pull_out", "push_in"):
             # "push the key so the door unlocks and swings open 30 degrees": the effect's end was not stated, a later amount refines it
@@ -545,52 +546,6 @@ class _Builder:
                     self.sustained[effect.joint] = control
             out.append(control)
         return out
-
-    def couple_amounts(self, controls: list[JointGoal], effects: list[JointGoal], control_amount: bool,
-                       effect_amount: bool) -> tuple[list[JointGoal], list[JointGoal]]:
-        """A pedal and the lid it lifts move in proportion: the fraction of the pedal's travel is the
-        fraction of the lid's opening (up to upright, or its open limit when that comes first). When
-        only one side states an amount, the other follows it; with none (or both) nothing changes."""
-        if control_amount == effect_amount:
-            return controls, effects
-        pedals = [c for c in controls if c.category == "pedal" and c.value is not None]
-        lids = [e for e in effects if e.category in HINGED and e.value is not None]
-        if len(pedals) != 1 or not lids:
-            return controls, effects
-        pedal = pedals[0]
-        pedal_part = next(p for p in self.parts if p.joint == pedal.joint)
-        full = goal_value("press", None, pedal_part, Quantity(), self.obj, self.asset)
-        rest = pedal_part.geometry.rest
-        if full is None or abs(full - rest) < REACHED_TOLERANCE:
-            return controls, effects
-        if control_amount:
-            fraction = (pedal.value - rest) / (full - rest)  # type: ignore[operator]
-            coupled = []
-            for effect in effects:
-                if effect in lids:
-                    geometry = next(p for p in self.parts if p.joint == effect.joint).geometry
-                    closed, span = self._lid_span(geometry)
-                    value = closed + fraction * span
-                    effect = replace(effect, value=value, expr=target_expression(geometry, value))
-                coupled.append(effect)
-            self.notes.append(f"{lids[0].joint} opens the fraction {fraction:.3g} its pedal is pressed")
-            return controls, coupled
-        geometry = next(p for p in self.parts if p.joint == lids[0].joint).geometry
-        closed, span = self._lid_span(geometry)
-        fraction = min(max((lids[0].value - closed) / span, 0.0), 1.0) if abs(span) > REACHED_TOLERANCE else 1.0  # type: ignore[operator]
-        value = rest + fraction * (full - rest)
-        self.notes.append(f"{pedal.joint} is pressed the fraction {fraction:.3g} its lid opens")
-        pressed = replace(pedal, value=value, expr=target_expression(pedal_part.geometry, value))
-        return [pressed if c is pedal else c for c in controls], effects
-
-    def _lid_span(self, geometry: JointGeometry) -> tuple[float, float]:
-        """(closed value, signed opening a fully pressed pedal gives): to upright, or the open limit if nearer."""
-        closed = geometry.closed_value if geometry.closed_value is not None else geometry.rest
-        opened = geometry.open_value if geometry.open_value is not None else closed
-        upright = orientation_value(self.asset, geometry, "vertical", opening=True)
-        if upright is not None and abs(upright - closed) > REACHED_TOLERANCE and abs(upright - closed) < abs(opened - closed):
-            return closed, upright - closed
-        return closed, opened - closed
 
     def release(self, goals: list[JointGoal]) -> list[JointGoal]:
         """Releasing a sustaining control also lets what it holds fall back (a pedal's lid)."""

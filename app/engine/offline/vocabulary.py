@@ -56,6 +56,8 @@ CONTROL_RETURN: dict[str, str] = {
 }
 # controls on a door/lid that must be operated before it opens
 UNLATCH_CATEGORIES = frozenset({"handle", "latch", "knob"})
+HINGED = ("door", "lid", "screen", "window")
+"""Parts that swing open on a hinge (a latch may hold them; a pedal may lift them)."""
 
 # whole-object names: (asset keyword, words a user may call the object)
 OBJECT_WORDS: tuple[str, ...] = (
