@@ -5,11 +5,11 @@ from __future__ import annotations
 from pathlib import Path
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.glb import export_glb
 from app.engine.export.jsonl import write_trajectory_jsonl
 from app.engine.files import atomic_write_bytes, atomic_write_text
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from app.engine.report import RunReport
 

@@ -103,6 +103,7 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             perception = await roles.perceiver.perceive(context)
             report.role_calls.extend(perception.calls)
             report.warnings.extend(perception.intent.notes)
+            report.understanding = list(perception.understanding)
         with run.stage("plan"):
             planned = await roles.planner.plan(context, perception)
             report.role_calls.extend(planned.calls)
