@@ -3,14 +3,12 @@
 from __future__ import annotations
 
 import importlib
-import importlib.util
 from types import ModuleType
 
 from app.engine.errors import ExportError
 
 EXTRAS: dict[str, tuple[str, str]] = {
     "pxr": ("usd", "usd-core"),
-    "mujoco": ("mjcf", "mujoco"),
 }
 """import name -> (extra of the ``artimo`` package, PyPI package)."""
 
@@ -33,7 +31,3 @@ def require(module: str) -> ModuleType:
             f"pip install 'artimo[{extra}]' (or pip install {package})"
         ) from exc
 
-
-def available(module: str) -> bool:
-    """Whether ``module``'s package can be imported (without importing it)."""
-    return importlib.util.find_spec(module.split(".", 1)[0]) is not None

@@ -21,8 +21,9 @@ from app.engine.plan.schema import Plan
 
 ExportName = Literal["usd", "mjcf", "ros", "csv", "npz"]
 EXPORT_NAMES: tuple[ExportName, ...] = get_args(ExportName)
-REQUIRES: dict[str, str] = {"usd": "pxr.Usd", "mjcf": "mujoco"}
-"""Exports that need an optional package (named with its extra by ``optional.require``)."""
+REQUIRES: dict[str, str] = {"usd": "pxr.Usd"}
+"""Exports that need an optional package to be written (named with its extra by ``optional.require``).
+``scene.xml`` is plain XML: the ``mjcf`` extra (mujoco) is for opening and simulating it."""
 
 
 def parse_exports(value: str | Iterable[str] | None) -> tuple[ExportName, ...]:

@@ -40,17 +40,31 @@ def add_geometry(stage: Any, asset: ArticulatedAsset, top: Any, paths: dict[str,
 
 
 class _Materials:
+    """One USD material per distinct look (colour, metallic, roughness, sides, texture bytes), one PNG per distinct image."""
+
     def __init__(self, stage: Any, scope: Any, texture_dir: Path | None) -> None:
         self.stage, self.scope, self.texture_dir = stage, scope, texture_dir
-        self.known: dict[Material, Any] = {}
+        self.known: dict[tuple[object, ...], Any] = {}
+        self.images: dict[bytes, str] = {}
         self.files: list[str] = []
 
     def material(self, material: Material) -> Any:
-        found = self.known.get(material)
+        key = (material.base_color, material.metallic, material.roughness, material.double_sided, material.image_png)
+        found = self.known.get(key)
         if found is None:
             found = self._define(material, self.scope.AppendChild(f"material_{len(self.known)}"))
-            self.known[material] = found
+            self.known[key] = found
         return found
+
+    def _image_file(self, image: bytes) -> str:
+        """The texture's file relative to the stage (written once per distinct image)."""
+        relative = self.images.get(image)
+        if relative is None and self.texture_dir is not None:
+            relative = f"{TEXTURE_DIR}/texture_{len(self.images)}.png"
+            atomic_write_bytes(self.texture_dir / relative, image, sync=False)
+            self.images[image] = relative
+            self.files.append(relative)
+        return relative or ""
 
     def _define(self, material: Material, path: Any) -> Any:
         usd_shade, sdf, gf = require("pxr.UsdShade"), require("pxr.Sdf"), require("pxr.Gf")
@@ -64,10 +78,7 @@ class _Materials:
         shader.CreateInput("roughness", sdf.ValueTypeNames.Float).Set(float(material.roughness))
         shader.CreateInput("opacity", sdf.ValueTypeNames.Float).Set(float(alpha))
         if material.image_png is not None and self.texture_dir is not None:
-            relative = f"{TEXTURE_DIR}/{path.name}.png"
-            atomic_write_bytes(self.texture_dir / relative, material.image_png)
-            self.files.append(relative)
-            diffuse.ConnectToSource(self._texture(path, f"./{relative}").ConnectableAPI(), "rgb")
+            diffuse.ConnectToSource(self._texture(path, f"./{self._image_file(material.image_png)}").ConnectableAPI(), "rgb")
         result.CreateSurfaceOutput().ConnectToSource(shader.ConnectableAPI(), "surface")
         return result
 
