@@ -64,3 +64,13 @@ def test_parse_exports_orders_and_dedupes() -> None:
     assert parse_exports(" npz,USD,usd ,") == ("usd", "npz")
     assert parse_exports(["ros", "csv"]) == ("ros", "csv")
     assert parse_exports(None) == () and parse_exports("") == ()
+
+
+def test_engine_config_checks_export_names() -> None:
+    from pydantic import ValidationError
+
+    from app.engine.config import EngineConfig
+
+    assert EngineConfig(exports="npz,usd").exports == ("usd", "npz")
+    with pytest.raises(ValidationError, match="exports"):
+        EngineConfig(exports=["usd", "fbx"])

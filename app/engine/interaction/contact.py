@@ -74,7 +74,7 @@ def _triangles(asset: ArticulatedAsset, links: tuple[str, ...], poses: dict[str,
         for part in asset.links[name].parts:
             vertices = part.vertices @ relative[:3, :3].T + relative[:3, 3]
             chunks.append(vertices[part.faces])
-            grips.append(np.full(len(part.faces), bool(GRIP.search(part.visual) or GRIP.search(part.material.name))))
+            grips.append(np.full(len(part.faces), bool(GRIP.search(part.visual))))
     if not chunks:
         return np.zeros((0, 3, 3)), np.zeros(0, dtype=bool)
     return np.concatenate(chunks), np.concatenate(grips)
@@ -84,6 +84,29 @@ def _limit(asset: ArticulatedAsset, poses: dict[str, Transform]) -> float:
     everything, _ = _triangles(asset, asset.link_order, poses, np.eye(4))
     points = everything.reshape(-1, 3)
     return float(np.linalg.norm(points.max(axis=0) - points.min(axis=0))) if points.size else 1.0
+
+
+@dataclass(frozen=True)
+class _Scene:
+    """The link's world placement and the geometry that stays put while it moves."""
+
+    rotation: FloatArray
+    translation: FloatArray
+    others: FloatArray
+    limit: float
+
+    def most_exposed(self, directions: list[FloatArray], vertices: FloatArray) -> int:
+        """Index of the link's side (directions in the link frame) with the most free space in front (first on ties)."""
+        world = vertices @ self.rotation.T + self.translation
+        return more_exposed([self.rotation @ d for d in directions], world, self.others, self.limit)
+
+
+def _others(asset: ArticulatedAsset, joint: str, poses: dict[str, Transform]) -> FloatArray:
+    """World triangles of every link the joint does not move."""
+    moved = set(asset.moving_links(joint))
+    still = tuple(n for n in asset.link_order if n not in moved)
+    triangles, _ = _triangles(asset, still, poses, np.eye(4))
+    return triangles
 
 
 def choose_contact(asset: ArticulatedAsset, phase: ActuatedPhase, poses: dict[str, Transform], *, sign: float = 1.0,
@@ -123,29 +146,6 @@ def choose_contact(asset: ArticulatedAsset, phase: ActuatedPhase, poses: dict[st
     if np.linalg.norm(offset) < CENTRED_RATIO * reach:
         return _centred(phase, triangles, sign * axis, anchor, scene)
     return _swing(phase, triangles, grips, axis * sign, anchor, unit(np.cross(sign * axis, offset)), scene)
-
-
-@dataclass(frozen=True)
-class _Scene:
-    """The link's world placement and the geometry that stays put while it moves."""
-
-    rotation: FloatArray
-    translation: FloatArray
-    others: FloatArray
-    limit: float
-
-    def most_exposed(self, directions: list[FloatArray], vertices: FloatArray) -> int:
-        """Index of the link's side (directions in the link frame) with the most free space in front (first on ties)."""
-        world = vertices @ self.rotation.T + self.translation
-        return more_exposed([self.rotation @ d for d in directions], world, self.others, self.limit)
-
-
-def _others(asset: ArticulatedAsset, joint: str, poses: dict[str, Transform]) -> FloatArray:
-    """World triangles of every link the joint does not move."""
-    moved = set(asset.moving_links(joint))
-    still = tuple(n for n in asset.link_order if n not in moved)
-    triangles, _ = _triangles(asset, still, poses, np.eye(4))
-    return triangles
 
 
 def _side(phase: ActuatedPhase, motion: FloatArray, vertices: FloatArray, scene: _Scene) -> FloatArray:
