@@ -82,14 +82,29 @@ def _record(track: ExportTrack, phase: ActuatedPhase, contact: Contact, first: i
     )
 
 
+def _mismatch(asset: ArticulatedAsset, phase: ActuatedPhase) -> str:
+    """Why the phase names no usable link/joint pair ("" when it does)."""
+    if phase.link not in asset.links:
+        return f"{phase.link}: unknown link"
+    if phase.joint is None:
+        return ""
+    joint = asset.joints.get(phase.joint)
+    if joint is None or not joint.movable:
+        return f"{phase.link}: unknown or fixed joint {phase.joint!r}"
+    if phase.link not in asset.moving_links(phase.joint):
+        return f"{phase.link}: joint {phase.joint} does not move it"
+    return ""
+
+
 def interaction_targets(asset: ArticulatedAsset, trajectory: Trajectory, phases: Sequence[ActuatedPhase],
                         track: ExportTrack | None = None) -> InteractionDocument:
     """One :class:`Interaction` per actuated phase (phases that cannot have one are listed in ``notes``)."""
     track = track or build_track(asset, trajectory)
     interactions, notes = [], []
     for phase in phases:
-        if phase.link not in asset.links or (phase.joint is not None and not (phase.joint in asset.joints and asset.joints[phase.joint].movable)):
-            notes.append(f"{phase.link}: unknown link or joint {phase.joint!r}")
+        problem = _mismatch(asset, phase)
+        if problem:
+            notes.append(problem)
             continue
         first, final = phase_frames(trajectory, phase.t0, phase.t1)
         try:

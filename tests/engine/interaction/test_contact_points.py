@@ -187,9 +187,11 @@ def test_phase_without_motion_or_geometry_is_noted_not_invented(examples_dir: Pa
     trajectory = execute(plan, asset)
     still = ActuatedPhase(link="lid", joint="lid_hinge", t0=1.5, t1=2.0, kind="direct_manipulation")
     unknown = ActuatedPhase(link="handle", joint="handle_joint", t0=0.0, t1=1.0, kind="direct_manipulation")
-    document = interaction_targets(asset, trajectory, [still, unknown])
+    unrelated = ActuatedPhase(link="lid", joint="pedal_pivot", t0=0.0, t1=0.35, kind="direct_manipulation")
+    document = interaction_targets(asset, trajectory, [still, unknown, unrelated])
     assert document.interactions == []
-    assert len(document.notes) == 2 and "does not move" in document.notes[0] and "unknown" in document.notes[1]
+    assert [n.split(": ", 1)[1] for n in document.notes] == [
+        "joint lid_hinge does not move in [1.5, 2.0] s", "unknown link", "joint pedal_pivot does not move it"]
 
 
 def test_document_is_deterministic(partnet: Path) -> None:
