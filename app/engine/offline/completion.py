@@ -23,21 +23,21 @@ from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.goals import goal_for
+from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.revisions import replay
 
 if TYPE_CHECKING:
-    from app.engine.offline.builder import Builder, _Move
+    from app.engine.offline.builder import Builder
     from app.engine.offline.grounding import Part
 
 _OPENING_STATES = frozenset({"open", "up", "vertical"})
 _NOTHING = Frame(clause=-1, text="", verb=None, sense=None)
 
 
-def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move], effects: list[_Move], why: Why) -> None:
-    from app.engine.offline.builder import _Move
-
-    unlatched: list[_Move] = []
+def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move], effects: list[Move], why: Why) -> None:
+    unlatched: list[Move] = []
     if sense is VerbSense.UNLATCH:
         unlatched = [m for m in effects if m.part.kind in HINGED_KINDS]
         controls, effects = _unlatch(builder, act, controls, effects)
@@ -54,13 +54,13 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move]
     if not controls and opening and not manual and sense is not VerbSense.RECLINE:
         for move in opening:
             for control in mech.controls_for(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
-                controls.append(_Move(control, "control", goal_for(_NOTHING, VerbSense.PRESS, control, builder.tracker).goal, words=""))
+                controls.append(Move(control, "control", goal_for(_NOTHING, VerbSense.PRESS, control, builder.tracker).goal, words=""))
                 notes[control.joint] = f"{_kind(control)} ({control.joint}) opens the {_kind(move.part)}"
                 builder.mentioned.add(control.joint)
     if controls and not effects and sense in (VerbSense.PRESS, VerbSense.OPERATE, VerbSense.HOLD, VerbSense.PUSH_IN, VerbSense.TOGGLE):
         for worked in list(controls):
             for effect in mech.effects_of(worked.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
-                effects.append(_Move(effect, "effect", goal_for(_NOTHING, VerbSense.OPEN, effect, builder.tracker).goal, words=""))
+                effects.append(Move(effect, "effect", goal_for(_NOTHING, VerbSense.OPEN, effect, builder.tracker).goal, words=""))
                 notes[effect.joint] = f"the {_kind(worked.part)} ({worked.part.joint}) drives it"
                 builder.mentioned.add(effect.joint)
     effects = [replace(m, role="effect") if controls else m for m in effects]
@@ -79,10 +79,10 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move]
     if sense is VerbSense.RELEASE:
         effects = effects + _let_fall(builder, controls)
     original_controls = list(controls)
-    controls = [m for m in controls if not builder._reached(m) or m.release == "held"]
+    controls = [m for m in controls if not builder.reached(m) or m.release == "held"]
     kept = []
     for move in effects:
-        if builder._reached(move):
+        if builder.reached(move):
             builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {move.goal.state}")
             continue
         kept.append(move)
@@ -94,7 +94,7 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move]
         _merge_into_last(builder, kept)
         builder.refs.remember([m.part for m in kept], [])
         return
-    builder._append(act, sense, controls, kept, why=why)
+    builder.append(act, sense, controls, kept, why=why)
     builder.explanation.because(notes)
     builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or [m.part for m in controls], [m.part for m in controls])
 
@@ -107,7 +107,7 @@ def _kind(part: object) -> str:
     return kind.value if kind is not None else "part"
 
 
-def _joins_unlatch(builder: Builder, act: Act, effects: list[_Move]) -> bool:
+def _joins_unlatch(builder: Builder, act: Act, effects: list[Move]) -> bool:
     """"Turn the latch, then open the door": the door's opening is the latch's effect, one causal step
     (the latch springs back while the door swings)."""
     if not builder.steps or act.parallel or act.wait_before_s:
@@ -123,18 +123,16 @@ def _joins_unlatch(builder: Builder, act: Act, effects: list[_Move]) -> bool:
         any(c.link in asset.descendants(m.part.link) for m in effects) for c in controls)
 
 
-def _merge_into_last(builder: Builder, effects: list[_Move]) -> None:
+def _merge_into_last(builder: Builder, effects: list[Move]) -> None:
     last = builder.steps[-1]
-    moves = [builder._joint_move(replace(m, role="effect")) for m in effects]
+    moves = [builder.joint_move(replace(m, role="effect")) for m in effects]
     builder.steps[-1] = last.model_copy(update={"effects": [*last.effects, *moves]})
-    _replay(builder)
+    replay(builder)
 
 
-def _results(builder: Builder, act: Act, controls: list[_Move], effects: list[_Move], implicit: list[Part]) -> list[_Move]:
+def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Move], implicit: list[Part]) -> list[Move]:
     """Stated results refine the amount of an effect already there, or add the effect (``implicit``: what
     a subjectless result is about, e.g. the door an unlatching freed)."""
-    from app.engine.offline.builder import _Move
-
     out = list(effects)
     for frame in act.results:
         sense = frame.sense or act.goal.sense or VerbSense.OPEN
@@ -143,7 +141,7 @@ def _results(builder: Builder, act: Act, controls: list[_Move], effects: list[_M
         themes = tuple(m for m in frame.themes if not m.pronoun)
         current = [m.part for m in out] or implicit or [m.part for m in controls]
         try:
-            parts, words = builder._ground(frame, sense, themes) if themes else (current or builder.refs.pronoun(), [])
+            parts, words = builder.ground(frame, sense, themes) if themes else (current or builder.refs.pronoun(), [])
         except GroundingError:
             if not themes:
                 raise
@@ -160,25 +158,23 @@ def _results(builder: Builder, act: Act, controls: list[_Move], effects: list[_M
                 out[existing] = replace(out[existing], goal=goal, loose=loose)
             elif part.joint not in {m.part.joint for m in controls}:
                 said = words[index] if index < len(words) else part.link
-                out.append(_Move(part, "effect" if controls else "direct", goal, words=said, loose=loose))
+                out.append(Move(part, "effect" if controls else "direct", goal, words=said, loose=loose))
                 builder.mentioned.add(part.joint)
     return out
 
 
-def _unlatch(builder: Builder, act: Act, controls: list[_Move], effects: list[_Move]) -> tuple[list[_Move], list[_Move]]:
+def _unlatch(builder: Builder, act: Act, controls: list[Move], effects: list[Move]) -> tuple[list[Move], list[Move]]:
     """"unlatch the door": the door's latch (or handle) moves, the door does not."""
-    from app.engine.offline.builder import _Move
-
     hinged = [m for m in effects if m.part.kind in HINGED_KINDS]
     others = [m for m in effects if m.part.kind not in HINGED_KINDS]
     if not hinged or controls:
         return controls, others if controls else effects
-    found: list[_Move] = []
+    found: list[Move] = []
     for move in hinged:
         latches = mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded) or [
             p for p in builder.parts if mech.is_control(p) and p.link in builder.asset.descendants(move.part.link)]
         for latch in latches[:1]:
-            found.append(_Move(latch, "control", goal_for(act.goal, VerbSense.UNLATCH, latch, builder.tracker).goal, words=move.words))
+            found.append(Move(latch, "control", goal_for(act.goal, VerbSense.UNLATCH, latch, builder.tracker).goal, words=move.words))
             builder.mentioned.add(latch.joint)
     if not found and builder.steps and builder.steps[-1].controls:
         builder.notes.append(f"read '{act.goal.text}' as the effect of the control worked before")
@@ -190,22 +186,19 @@ def _unlatch(builder: Builder, act: Act, controls: list[_Move], effects: list[_M
     return found, others
 
 
-def _latches(builder: Builder, effects: list[_Move]) -> list[_Move]:
-    from app.engine.offline.builder import _Move
-
-    out: list[_Move] = []
+def _latches(builder: Builder, effects: list[Move]) -> list[Move]:
+    out: list[Move] = []
     for move in effects:
         if move.goal.state not in _OPENING_STATES:
             continue
         for latch in mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
-            out.append(_Move(latch, "control", goal_for(_NOTHING, VerbSense.UNLATCH, latch, builder.tracker).goal, words=""))
+            out.append(Move(latch, "control", goal_for(_NOTHING, VerbSense.UNLATCH, latch, builder.tracker).goal, words=""))
             builder.mentioned.add(latch.joint)
     return out
 
 
-def _prerequisites(builder: Builder, act: Act, moves: list[_Move]) -> None:
+def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:
     """Open what stands in the way first (the door before the tray)."""
-    from app.engine.offline.builder import _Move
     from app.engine.offline.resolve import resolve
 
     for move in moves:
@@ -216,18 +209,18 @@ def _prerequisites(builder: Builder, act: Act, moves: list[_Move]) -> None:
             continue
         for blocker in mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded):
             builder.mentioned.add(blocker.joint)
-            opening = _Move(blocker, "direct", goal_for(_NOTHING, VerbSense.OPEN, blocker, builder.tracker).goal, words="")
+            opening = Move(blocker, "direct", goal_for(_NOTHING, VerbSense.OPEN, blocker, builder.tracker).goal, words="")
             latches = _latches(builder, [opening])
             if latches:
                 opening = replace(opening, role="effect")
             latches = _releases(builder, act, VerbSense.OPEN, latches, [opening])
-            builder._append(replace(act, means=None, hold_s=0.0, wait_before_s=act.wait_before_s), VerbSense.OPEN, latches, [opening],
+            builder.append(replace(act, means=None, hold_s=0.0, wait_before_s=act.wait_before_s), VerbSense.OPEN, latches, [opening],
                             why="prerequisite", parallel=False)
             builder.explanation.because({blocker.joint: f"{blocker.link} must be open before {move.part.link} can move"})
             builder.notes.append(f"opened {blocker.link} first: it blocks {move.part.link}")
 
 
-def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move], effects: list[_Move]) -> list[_Move]:
+def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move], effects: list[Move]) -> list[Move]:
     """What each control does after its actuation."""
     held = act.goal.hold or sense is VerbSense.HOLD
     out = []
@@ -251,24 +244,14 @@ def _hold_until_now(builder: Builder, joint: str) -> None:
         moves = [m.model_copy(update={"release": "stays"}) if m.joint == joint and m.release == "self_return" else m for m in step.controls]
         if moves != list(step.controls):
             builder.steps[index] = step.model_copy(update={"controls": moves})
-            _replay(builder)
+            replay(builder)
 
 
-def _replay(builder: Builder) -> None:
-    from app.engine.offline.tracker import Tracker
-
-    builder.tracker = Tracker.of(builder.asset)
-    for step in builder.steps:
-        builder.tracker.apply(step)
-
-
-def _let_fall(builder: Builder, controls: list[_Move]) -> list[_Move]:
+def _let_fall(builder: Builder, controls: list[Move]) -> list[Move]:
     """Letting go of a holding control lets what it held return (a pedal's lid falls shut)."""
-    from app.engine.offline.builder import _Move
-
     out = []
     for effect_joint, control_joint in list(builder.tracker.held.items()):
         if any(m.part.joint == control_joint for m in controls):
             part = next(p for p in builder.parts if p.joint == effect_joint)
-            out.append(_Move(part, "effect", Goal(state="previous"), words=""))
+            out.append(Move(part, "effect", Goal(state="previous"), words=""))
     return out

@@ -23,7 +23,7 @@ from app.engine.offline.naming import link_words
 from app.engine.offline.tracker import Tracker
 
 if TYPE_CHECKING:
-    from app.engine.offline.builder import _Move
+    from app.engine.offline.moves import Move
 
 REACHED = 1e-6
 
@@ -133,13 +133,13 @@ def held_span(part: Part, tracker: Tracker) -> tuple[float, float]:
     return closed, opened - closed
 
 
-def _value(move: _Move, tracker: Tracker) -> float | None:
+def _value(move: Move, tracker: Tracker) -> float | None:
     from app.engine.offline.resolve import resolve
 
     return resolve(move.goal, move.part.geometry, tracker.obj, tracker.asset, tracker.value(move.part.joint)).value
 
 
-def couple(controls: list[_Move], effects: list[_Move], tracker: Tracker) -> tuple[list[_Move], list[_Move], str | None]:
+def couple(controls: list[Move], effects: list[Move], tracker: Tracker) -> tuple[list[Move], list[Move], str | None]:
     """A holding control and what it holds move in proportion: the fraction of the pedal's travel is the
     fraction of the lid's opening (see :func:`held_span`). When only one side says how far, the other follows;
     a vague amount ("slightly") on the effect does not override a stated one on the control."""

@@ -71,7 +71,7 @@ def _plain(value: Any) -> Any:
         out = {}
         for item in dataclasses.fields(value):
             field_value = getattr(value, item.name)
-            if field_value in (None, (), [], frozenset(), False, "", 0) and not isinstance(field_value, float) or item.name in ("start", "end", "used"):
+            if (field_value in (None, (), [], frozenset(), False, "", 0) and not isinstance(field_value, float)) or item.name in ("start", "end", "used"):
                 continue
             out[item.name] = _plain(field_value)
         return out

@@ -1,0 +1,116 @@
+"""Acts that revise the step before instead of adding one: "..., and lower it 40 degrees" (how far the
+previous motion goes), "hold it there for 2 s", "keep it down so the lid swings up to vertical",
+"... and let it roll".
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from app.engine.errors import GroundingError
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.goals import goal_for
+from app.engine.offline.grounding import Part
+from app.engine.offline.reading.acts import Act
+from app.engine.offline.reading.frames import Frame
+from app.engine.offline.resolve import resolve
+from app.engine.offline.tracker import Tracker
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder
+
+
+def replay(builder: Builder) -> None:
+    """Rebuild the tracker's state from the steps (after a step was revised)."""
+    builder.tracker = Tracker.of(builder.asset)
+    for step in builder.steps:
+        builder.tracker.apply(step)
+
+
+def elaborates(builder: Builder, act: Act, sense: VerbSense, parts: list[Part]) -> bool:
+    """"Release the door, and lower it 40 degrees": a conjoined clause on "it" that only says how far the
+    previous, unquantified motion of the same parts goes (the same way) replaces that motion's amount."""
+    goal = act.goal
+    if not act.conjoined or goal.quantities.amount is None or not builder.steps or not goal.themes or not all(m.pronoun for m in goal.themes):
+        return False
+    last = builder.steps[-1]
+    moves = {m.joint: m for m in (*last.controls, *last.effects)}
+    joints = {p.joint for p in parts}
+    if not parts or any(j not in moves or moves[j].goal.amount is not None for j in joints):
+        return False
+    before = Tracker.of(builder.asset)
+    for step in builder.steps[:-1]:
+        before.apply(step)
+    updated = {}
+    for part in parts:
+        old = moves[part.joint]
+        start = before.value(part.joint)
+        choice = goal_for(goal, sense, part, before).goal
+        new_value = resolve(choice, part.geometry, before.obj, builder.asset, start).value
+        old_value = resolve(old.goal, part.geometry, before.obj, builder.asset, start).value
+        if new_value is None or old_value is None or (new_value - start) * (old_value - start) <= 0:
+            return False
+        updated[part.joint] = old.model_copy(update={"goal": choice, "q": round(float(new_value), 9)})
+    controls = [updated.get(m.joint, m) for m in last.controls]
+    effects = [updated.get(m.joint, m) for m in last.effects]
+    builder.steps[-1] = last.model_copy(update={"controls": controls, "effects": effects})
+    replay(builder)
+    builder.notes.append(f"read '{goal.text}' as how far the previous motion goes")
+    return True
+
+
+def coast(builder: Builder, frame: Frame) -> None:
+    """"push it forward 1 m and let it roll (0.3 m to a stop)": the motion before coasts."""
+    last = builder.steps[-1]
+    assert last.base is not None
+    update: dict[str, object] = {"coast": True}
+    amount = frame.quantities.amount
+    if amount is not None and amount.unit == "m":
+        update["distance_m"] = amount.value
+        update["wheels"] = last.base.wheels
+    builder.steps[-1] = last.model_copy(update={"base": last.base.model_copy(update=update)})
+    replay(builder)
+
+
+def hold(builder: Builder, act: Act) -> bool:
+    """"hold it there for 2 s", "keep the lid open": hold the last step; "hold the button" presses it."""
+    frame = act.goal
+    duration = frame.quantities.duration_s or 0.0
+    pronoun = not frame.themes or all(m.pronoun for m in frame.themes)
+    if builder.steps and (pronoun or same_as_last(builder, frame)):
+        last = builder.steps[-1]
+        builder.steps[-1] = last.model_copy(update={"hold_s": last.hold_s + duration})
+        if act.results:
+            refine_last(builder, act)
+        return True
+    return False
+
+
+def refine_last(builder: Builder, act: Act) -> None:
+    """"... and keep it down so the lid swings up to vertical": what the hold lets happen refines the last step."""
+    last = builder.steps[-1]
+    before = Tracker.of(builder.asset)
+    for step in builder.steps[:-1]:
+        before.apply(step)
+    updated = {}
+    for frame in act.results:
+        sense = frame.sense or VerbSense.OPEN
+        try:
+            parts, _ = builder.ground(frame, sense, tuple(m for m in frame.themes if not m.pronoun))
+        except GroundingError:
+            continue
+        for part in parts:
+            if any(m.joint == part.joint for m in last.effects):
+                updated[part.joint] = goal_for(frame, sense, part, before).goal
+    effects = [m.model_copy(update={"goal": updated[m.joint]}) if m.joint in updated else m for m in last.effects]
+    builder.steps[-1] = last.model_copy(update={"effects": effects})
+    replay(builder)
+
+
+def same_as_last(builder: Builder, frame: Frame) -> bool:
+    try:
+        parts, _ = builder.ground(frame, VerbSense.HOLD, frame.themes)
+    except GroundingError:
+        return False
+    moved = {m.joint for m in (*builder.steps[-1].controls, *builder.steps[-1].effects)} if builder.steps else set()
+    return bool(parts) and all(p.joint in moved for p in parts)

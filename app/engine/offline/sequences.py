@@ -1,0 +1,92 @@
+"""Acts that become several steps or a whole-object motion: codes typed on a keypad (one press per key),
+"both doors, left one first", and moving or turning the whole object.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.goals import goal_for
+from app.engine.offline.keypad import code_keys
+from app.engine.offline.moves import Move
+from app.engine.offline.reading.acts import Act
+from app.engine.offline.reading.frames import Frame, place_words
+from app.engine.offline.revisions import replay
+from app.engine.offline.whole_object import object_motion, returning_motion
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder
+
+
+def with_result_quantities(frame: Frame, results: tuple[Frame, ...]) -> Frame:
+    """"Shove the car so it rolls 0.6 m along +X in a second": what the object is said to do afterwards gives
+    the motion its amount, direction and time."""
+    merged = frame.quantities
+    for result in results:
+        if result.themes and not all(m.pronoun or m.is_object for m in result.themes):
+            continue
+        extra = result.quantities
+        merged = replace(merged, amount=extra.amount or merged.amount, axis=extra.axis or merged.axis, direction=extra.direction or merged.direction,
+                         duration_s=extra.duration_s or merged.duration_s, speed_mps=extra.speed_mps or merged.speed_mps)
+    return replace(frame, quantities=merged)
+
+
+def object_motion_act(builder: Builder, act: Act) -> None:
+    goal = act.goal
+    previous = builder.steps[-1].base if builder.steps else None
+    motion = returning_motion(goal, previous) if goal.returning or goal.sense in (VerbSense.RETURN,) else None
+    if motion is None:
+        goal = with_result_quantities(goal, act.results)
+        motion = object_motion(goal, builder.tracker.obj, yaw=yaw(builder))
+        if act.conjoined and previous is not None and builder.last_base_default and goal.themes and goal.themes[0].pronoun and (
+                motion.motion.axis_world == previous.axis_world and goal.quantities.amount is not None):
+            builder.steps[-1] = builder.steps[-1].model_copy(update={"base": previous.model_copy(update={"distance_m": motion.motion.distance_m})})
+            replay(builder)
+            builder.notes.append(f"read '{goal.text}' as the distance of the previous motion")
+            builder.last_base_default = False
+            return
+    builder.notes.extend(motion.notes)
+    builder.last_base_default = any(n.startswith("no distance given") for n in motion.notes)
+    builder.append(act, goal.sense or VerbSense.MOVE, [], [], base=motion.motion, why="asked")
+    builder.refs.last_object = True
+
+
+def yaw(builder: Builder) -> float:
+    return sum(step.base.yaw_rad for step in builder.steps if step.base is not None)
+
+
+def is_code(builder: Builder, frame: Frame) -> bool:
+    """Keys named by digit or by place only ("press 1, 2, 3", "enter bottom-left then top-right"), on an asset with a keypad."""
+    places = [c for c in frame.codes if c[0] == "place"]
+    named = [m for m in frame.themes if not m.is_object and m.kind not in (PartKind.BUTTON, PartKind.CODE) and not place_words(m.words)]
+    digits = len(frame.codes) > len(places)
+    keys = [m for m in frame.themes if m.kind is PartKind.BUTTON and not place_words(m.words)]
+    return len(builder.refs.of_kind(PartKind.BUTTON)) > 1 and not named and (digits or len(places) > 1 or (len(places) == 1 and not keys))
+
+
+def enter_code(builder: Builder, act: Act) -> None:
+    """"type 1-2-3-4 on the keypad": one press per key, in order."""
+    keys = code_keys(act.goal.codes, builder.refs)
+    for index, key in enumerate(keys):
+        move = Move(key, "control", goal_for(act.goal, VerbSense.PRESS, key, builder.tracker).goal, words=f"key {index + 1}")
+        here = act if index == 0 else replace(act, wait_before_s=0.0, parallel=False)
+        if index < len(keys) - 1:
+            here = replace(here, results=())
+        builder.complete(here, VerbSense.PRESS, [move], [])
+
+
+def first_then_rest(builder: Builder, act: Act) -> None:
+    """"open both doors 90 degrees, left one first": the named one, then the others."""
+    goal = act.goal
+    assert goal.first is not None
+    sense = builder.frame_sense(goal)
+    parts, words = builder.ground(goal, sense, goal.themes)
+    first_mention = replace(goal.first, kind=parts[0].kind if parts else None, anaphor=False)
+    first, _ = builder.refs.resolve(first_mention)
+    ordered = [p for p in parts if p in first] + [p for p in parts if p not in first]
+    for index, part in enumerate(ordered):
+        moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
+        builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0), sense, [], moves)
