@@ -21,7 +21,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.explain import Explanation
-from app.engine.offline.goals import goal_for
+from app.engine.offline.goals import beyond_limit, goal_for
 from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
@@ -146,7 +146,13 @@ class Builder:
             own_role = role or ("control" if mech.is_control(part) else "direct")
             choice = goal_for(frame, sense, part, self.tracker)
             self.notes.extend(choice.notes)
-            loose = frame.quantities.amount is not None and frame.quantities.amount.loose
+            amount = frame.quantities.amount
+            loose = amount is not None and amount.loose
+            if loose and amount is not None and choice.goal.amount is not None:
+                self.notes.append(f"read '{amount.words}' as {amount.value:.0%} of the way for {part.link}")
+            limit = beyond_limit(choice.goal, part, self.tracker)
+            if limit is not None:
+                self.notes.append(f"{part.link} ({part.joint}) cannot go that far: it stops at its limit {limit:.4g}")
             out.append(Move(part, own_role, choice.goal, words=said, loose=loose))
         return out
 
@@ -208,7 +214,7 @@ class Builder:
         if not effects_parts and not controls:
             raise self.refs.refuse(f"nothing in '{goal.text}' names a part to move")
         if sense is VerbSense.RELEASE and effects_parts and all(mech.is_control(p) for p in effects_parts) and not any(
-                self.pressed(p) for p in effects_parts):
+                self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
         self._check_motion(goal, effects_parts)
         if elaborates(self, act, sense, effects_parts):
@@ -235,6 +241,10 @@ class Builder:
             after_part = bool(self.refs.last)
             return moves_object(frame, pronoun=True, after_part=after_part) and (after_part or not self.parts or frame.verb in ("push", "move"))
         return False
+
+    def worked_before(self, part: Part) -> bool:
+        """An earlier step pressed or turned this control (it may have sprung back since)."""
+        return any(m.joint == part.joint and m.goal.state != "rest" for step in self.steps for m in step.controls)
 
     def pressed(self, part: Part) -> bool:
         return abs(self.tracker.value(part.joint) - part.geometry.rest) > REACHED

@@ -222,14 +222,15 @@ def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:
 
 def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move], effects: list[Move]) -> list[Move]:
     """What each control does after its actuation."""
-    held = act.goal.hold or sense is VerbSense.HOLD
+    held = (act.goal.hold or sense is VerbSense.HOLD) and not act.goal.quantities.duration_s  # a timed hold ends with a release
+    brief = act.goal.brief or (act.means is not None and act.means.brief)
     out = []
     for move in controls:
         if sense is VerbSense.RELEASE:
             _hold_until_now(builder, move.part.joint)
             out.append(replace(move, release="stays"))
             continue
-        if mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
+        if mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects) and not brief:
             out.append(replace(move, release="held"))
         elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat"):
             out.append(replace(move, release="self_return"))
@@ -240,8 +241,11 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
 
 def _hold_until_now(builder: Builder, joint: str) -> None:
     """"Press the button, then release it": the earlier press is held until this release."""
+    part = next(p for p in builder.parts if p.joint == joint)
     for index, step in enumerate(builder.steps):
-        moves = [m.model_copy(update={"release": "stays"}) if m.joint == joint and m.release == "self_return" else m for m in step.controls]
+        holding = mech.holds(part) and any(e.goal.state in _OPENING_STATES for e in step.effects)
+        release = "held" if holding else "stays"
+        moves = [m.model_copy(update={"release": release}) if m.joint == joint and m.release == "self_return" else m for m in step.controls]
         if moves != list(step.controls):
             builder.steps[index] = step.model_copy(update={"controls": moves})
             replay(builder)

@@ -38,6 +38,11 @@ NOMINAL_BASE_SPEED_MPS = 0.4
 """Speed assumed when writing wheel velocities into the paper's fields (the planner sets the real one)."""
 
 
+_CONTROL_PRIMITIVE = {"pressed": "press", "cw": "turn", "ccw": "turn", "down": "press", "up": "lift", "rest": "release", "toward": "push",
+                      "left": "push", "right": "push", "forward": "push", "backward": "pull", "open": "pull", "closed": "push"}
+"""The paper's ``primitive`` names what is done to the first manipulated link: for a control, how it is worked."""
+
+
 def _semantics(asset: ArticulatedAsset) -> Semantics:
     links = []
     for name in asset.visual_links:
@@ -88,7 +93,8 @@ def _paper_fields(step: Step, contract: ContractStep, asset: ArticulatedAsset) -
     release = contract.controls[0].release if contract.controls else "stays"
     behaviour: Literal["self_return", "stays", "unknown"] = "self_return" if release == "self_return" else "stays"
     magnitude = None if primary.value is None else round(abs(primary.value - asset.joints[primary.joint].rest), 6)
-    action = Action(primitive=step.primitive, target_link=primary.link, target_links=list(dict.fromkeys(links)), target_role=role,
+    primitive = _CONTROL_PRIMITIVE.get(contract.controls[0].goal.state, step.primitive) if contract.controls else step.primitive
+    action = Action(primitive=primitive, target_link=primary.link, target_links=list(dict.fromkeys(links)), target_role=role,
                     magnitude=magnitude, control_return_behavior=behaviour)
     return action, Effects(effect_links=[g.link for g in step.effects], joint_targets=[JointTarget(joint=g.joint, to=_to(g)) for g in step.goals],
                            coupling_rules=list(step.coupling))

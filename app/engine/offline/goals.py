@@ -168,3 +168,19 @@ def _opening_amount(goal: Goal, part: Part, tracker: Tracker) -> tuple[Goal, lis
         relative = Goal(state=goal.state, amount=goal.amount, unit=goal.unit, measured_from="current")
         return relative, [f"{part.link} is already open past that amount: opened it that much further"]
     return goal, []
+
+
+def beyond_limit(goal: Goal, part: Part, tracker: Tracker) -> float | None:
+    """The limit an angle or distance amount runs into (``None`` when the joint can go that far)."""
+    geometry = part.geometry
+    if goal.amount is None or goal.unit not in ("rad", "m") or geometry.lower is None or geometry.upper is None:
+        return None
+    now = tracker.value(part.joint)
+    value = resolve(goal, geometry, tracker.obj, tracker.asset, now).value
+    start = closed_of(geometry) if goal.measured_from == "closed" else geometry.rest if goal.measured_from == "rest" else now
+    if value is None:
+        return None
+    wanted = abs(goal.amount)
+    if abs(abs(value - start) - wanted) > 1e-6 and value in (geometry.lower, geometry.upper):
+        return value
+    return None

@@ -26,6 +26,8 @@ from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token
 
+_BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
+_BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
@@ -70,6 +72,8 @@ class Frame:
     """Keys of a code, in order: ("digit", "4") or ("place", "top", "left") ("enter 1-2-3", "type top-left, bottom-middle")."""
     first: Mention | None = None
     """"open both doors, left one first": which of the themes goes first."""
+    brief: bool = False
+    """A brief press ("tap", "briefly", "a quick press"): a control that would hold is let go at once."""
 
 
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
@@ -284,6 +288,7 @@ def build_frame(clause: Clause) -> Frame:
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra,
         codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
+        brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )
 
 
