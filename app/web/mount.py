@@ -10,11 +10,12 @@ through an import map; nothing is fetched from another host.
 from __future__ import annotations
 
 import logging
+from functools import lru_cache
 from pathlib import Path
 
 from fastapi import FastAPI
 from fastapi.openapi.docs import get_redoc_html, get_swagger_ui_html, get_swagger_ui_oauth2_redirect_html
-from fastapi.responses import FileResponse, HTMLResponse, PlainTextResponse
+from fastapi.responses import FileResponse, HTMLResponse, PlainTextResponse, Response
 from starlette.staticfiles import StaticFiles
 from starlette.types import Receive, Scope, Send
 
@@ -32,6 +33,7 @@ VENDOR = {
 INSTALL_HINT = "front-end packages are not installed: run `npm ci --prefix app/web` (make demo / make test do it)"
 FAVICON = "/static/favicon.svg"
 NO_CACHE = {"Cache-Control": "no-cache"}
+REDOC_REMOTE_LOGO = b"https://cdn.redoc.ly/redoc/logo-mini.svg"
 
 
 def _missing_packages() -> list[str]:
@@ -48,7 +50,19 @@ class _MissingPackage:
         await self.response(scope, receive, send)
 
 
+@lru_cache(maxsize=1)
+def _redoc_bundle() -> bytes:
+    """Redoc's bundle with its one remote reference (the attribution logo) pointed at a local file."""
+    return (VENDOR["redoc"] / "redoc.standalone.js").read_bytes().replace(REDOC_REMOTE_LOGO, FAVICON.encode())
+
+
 def _mount_vendor(app: FastAPI) -> None:
+    if VENDOR["redoc"].is_dir():
+
+        @app.get("/vendor/redoc/redoc.standalone.js", include_in_schema=False)
+        async def redoc_bundle() -> Response:
+            return Response(_redoc_bundle(), media_type="text/javascript", headers={"Cache-Control": "public, max-age=3600"})
+
     for name, folder in VENDOR.items():
         if folder.is_dir():
             app.mount(f"/vendor/{name}", StaticFiles(directory=folder), name=f"vendor-{name}")

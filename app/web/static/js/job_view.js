@@ -25,6 +25,7 @@ export class JobView {
     this.progress = h("div");
     this.body = h("div", { class: "job-body" });
     this.header = h("section", { class: "panel" }, h("h2", { id: "job-title" }, "Job"), this.status, this.progress);
+    delete root.dataset.loaded;
     fill(root, this.header, this.body);
   }
 
@@ -103,6 +104,7 @@ export class JobView {
     this.clockText = h("span", { class: "muted", testid: "time" });
     this.jointPanel = h("div", { testid: "joint-panel" });
     this.player = new Player({ onTime: (t) => this.onTime(t) });
+    window.artimoPlayer = this.player; // for the browser tests and the console
     const section = h("section", { class: "panel" }, h("h2", {}, "Animation"),
       h("div", { class: "player-grid" },
         h("div", {}, this.player.element,

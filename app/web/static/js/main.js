@@ -27,6 +27,7 @@ function welcome() {
 async function route() {
   view?.close?.();
   view = null;
+  delete main.dataset.loaded;
   const [section, id] = location.hash.replace(/^#\/?/, "").split("/");
   for (const link of document.querySelectorAll("[data-nav]")) link.classList.toggle("active", link.dataset.nav === (section || "jobs"));
   jobs.select(section === "jobs" ? id : null);

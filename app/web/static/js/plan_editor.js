@@ -33,10 +33,10 @@ export class PlanEditor {
     this.message = h("div");
     this.element = h("div", { testid: "plan-editor" },
       h("p", { class: "muted" }, "Edit the phases and targets (or the JSON), then run: the new job executes this plan as given — no perceiver, planner or critic."),
+      h("div", { class: "row" }, this.run), this.message,
       h("div", { class: "editor-grid" },
         h("div", {}, h("h3", {}, "Phases and targets"), this.form),
-        h("div", {}, h("h3", {}, "Plan.json"), h("div", { class: "json-wrap" }, this.textarea), this.issues)),
-      h("div", { class: "row" }, this.run), this.message);
+        h("div", {}, h("h3", {}, "Plan.json"), this.issues, h("div", { class: "json-wrap" }, this.textarea))));
     this.textarea.value = JSON.stringify(this.plan, null, 2);
     this.renderForm();
     this.scheduleCheck();

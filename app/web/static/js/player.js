@@ -9,7 +9,7 @@ import { h } from "./dom.js";
 
 const HIGHLIGHT = new THREE.Color(0x2f6fde);
 const GIZMO_PX = 96;
-const ROOT_NODE = "artimo_root";
+const MAX_STEP_S = 0.5; // a longer pause between frames (hidden tab) does not jump ahead
 
 function label(text, color) {
   const canvas = document.createElement("canvas");
@@ -149,7 +149,10 @@ export class Player {
 
   setTime(t) {
     this.time = Math.min(Math.max(t, 0), this.duration || 0);
-    if (this.mixer) this.mixer.setTime(this.time);
+    if (this.action) {
+      this.action.time = this.time; // set, not stepped: the mixer would wrap t = end to 0 when looping
+      this.mixer.update(0);
+    }
     this.onTime(this.time);
   }
 
@@ -165,7 +168,7 @@ export class Player {
 
   frame() {
     const now = performance.now();
-    const delta = Math.min((now - this.last) / 1000, 0.1);
+    const delta = Math.min((now - this.last) / 1000, MAX_STEP_S);
     this.last = now;
     if (this.playing && this.duration > 0) {
       let next = this.time + delta * this.speed;
