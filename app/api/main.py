@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from fastapi import APIRouter
 
-from app.api.routes import animations, artifacts, assets, batches, events, health, links, listings, plans
+from app.api.routes import animations, artifacts, assets, batches, benchmarks, events, health, links, listings, plans
 
 api_router = APIRouter()
 api_router.include_router(health.router)
@@ -16,3 +16,4 @@ api_router.include_router(events.router)  # /v1/animations/{id}/events before th
 api_router.include_router(links.router)
 api_router.include_router(artifacts.router)
 api_router.include_router(batches.router)
+api_router.include_router(benchmarks.router)

@@ -57,7 +57,7 @@ def _redoc_bundle() -> bytes:
 
 
 def _mount_vendor(app: FastAPI) -> None:
-    if VENDOR["redoc"].is_dir():
+    if "redoc" in VENDOR and VENDOR["redoc"].is_dir():
 
         @app.get("/vendor/redoc/redoc.standalone.js", include_in_schema=False)
         async def redoc_bundle() -> Response:

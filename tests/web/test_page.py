@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import io
 import json
+import time
 from typing import Any
 
 import httpx
@@ -213,19 +214,30 @@ def test_edit_a_target_and_run_it_as_a_new_job(probe: PageProbe, served: Served)
     probe.shot("08-plan-job")
 
 
-def test_batches_view(probe: PageProbe, served: Served) -> None:
+def test_batches_view_with_benchmark_scores(probe: PageProbe, served: Served) -> None:
     page = probe.page
+    cases = [json.loads(line) for line in (REPO / "benchmark" / "cases" / "dev_examples.jsonl").read_text().splitlines()
+             if '"asset": "pedal_bin"' in line][:2]
     with served.client() as client:
         asset = client.get("/v1/assets").json()["data"][0]
-        batch = client.post("/v1/batches", json={"name": "two prompts", "cases": [
-            {"asset": asset["id"], "prompt": PROMPT, "case_id": "press"},
-            {"asset": asset["id"], "prompt": "open the lid", "case_id": "lid"}]}).json()
+        batch = client.post("/v1/benchmarks", json={"name": "pedal bench", "cases": [{**c, "asset": asset["id"]} for c in cases]}).json()
+        deadline = time.monotonic() + JOB_TIMEOUT_MS / 1000
+        while not client.get(f"/v1/batches/{batch['id']}").json()["done"]:
+            assert time.monotonic() < deadline, "benchmark jobs did not finish"
+            time.sleep(0.3)
     page.goto(f"{served.url}/#/batches")
     page.wait_for_selector("[data-testid=batches] a")
-    page.click("text=two prompts")
-    page.wait_for_selector("[data-testid=batch] tr[data-case=press]")
+    page.click("text=pedal bench")
+    page.wait_for_selector("[data-testid=batch-scores]")
     assert page.url.endswith(batch["id"])
-    assert "not a benchmark batch" in page.text_content("[data-testid=batch]")
+    assert "P_gIoU" in page.text_content("[data-testid=batch-scores]")
+    first = cases[0]["case_id"]
+    row = page.locator(f"[data-testid=batch] tr[data-case={first}]")
+    assert float(row.locator("td").nth(2).text_content()) > 0.9  # P_gIoU of a case the offline agent gets right
+    row.locator("a").first.click()
+    page.wait_for_selector("text=key states of")
+    assert "lid_hinge" in page.text_content("[data-testid=batch]")
+    probe.shot("09-benchmark-batch", page.locator("[data-testid=batch]"))
 
 
 def test_docs_render_from_local_files(probe: PageProbe, served: Served) -> None:
@@ -236,3 +248,22 @@ def test_docs_render_from_local_files(probe: PageProbe, served: Served) -> None:
     page.goto(f"{served.url}/redoc")
     page.wait_for_selector("h1", timeout=30_000)
     assert "ArtiMo" in page.text_content("h1")
+
+
+def test_progress_falls_back_to_polling_without_the_event_stream(browser: Any, served: Served) -> None:
+    probe = PageProbe(browser, served)
+    try:
+        page = probe.page
+        page.route("**/events", lambda route: route.fulfill(status=503, body="no streams here"))
+        page.goto(served.page_url)
+        page.wait_for_function("() => document.querySelector('#key-state').textContent === 'signed in (link)'")
+        with served.client() as client:
+            files = [("asset", ("pedal_bin/pedal_bin.urdf", PEDAL_URDF.read_bytes()))]
+            job = client.post("/v1/animations", data={"prompt": PROMPT}, files=files).json()
+        page.goto(f"{served.url}/#/jobs/{job['id']}")
+        _status_is(page, "succeeded")
+        assert "(polling)" in page.text_content("[data-testid=job-status]")
+        page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
+    finally:
+        probe.context.close()
+    probe.check_clean()
