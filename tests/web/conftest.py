@@ -136,10 +136,11 @@ class PageProbe:
             self.external.append(url)
             route.abort()
 
-    def shot(self, name: str, locator: Any = None) -> Path:
+    def shot(self, name: str, locator: Any = None, *, full_page: bool = True) -> Path:
+        """Save a screenshot (of ``locator``, or the page) as a test artifact."""
         ARTIFACTS.mkdir(parents=True, exist_ok=True)
         path = ARTIFACTS / f"{name}.png"
-        (locator or self.page).screenshot(path=str(path), **({} if locator else {"full_page": True}))
+        (locator or self.page).screenshot(path=str(path), **({} if locator else {"full_page": full_page}))
         return path
 
     def check_clean(self) -> None:

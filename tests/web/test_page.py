@@ -124,7 +124,7 @@ def test_play_pause_and_speed(probe: PageProbe) -> None:
 
 def test_hover_names_and_highlights_a_link(probe: PageProbe) -> None:
     page = probe.page
-    _set_time(page, 0.0)
+    _set_time(page, 1.0)
     canvas = page.locator("[data-testid=viewer-canvas]")
     box = canvas.bounding_box()
     page.mouse.move(box["x"] + 2, box["y"] + 2)
@@ -136,6 +136,8 @@ def test_hover_names_and_highlights_a_link(probe: PageProbe) -> None:
     assert "pedal_pivot" in page.text_content(".viewer .tip")
     after = _pixels(canvas.screenshot())
     probe.shot("05-hover-pedal", canvas)
+    page.evaluate("window.scrollTo(0, 0)")
+    probe.shot("page", full_page=False)  # the README's picture (docs/page.png is a copy)
     assert (np.abs(after - before).sum(axis=2) > 30).mean() > 0.001, "the hovered link is not highlighted"
     page.mouse.move(box["x"] + 2, box["y"] + 2)
 

@@ -45,7 +45,9 @@ export class JobView {
   }
 
   showState(state, how) {
-    const stages = this.job.options?.plan_sha256 ? PLAN_STAGES : STAGES;
+    this.how = how;
+    const ran = this.report?.stages?.map((s) => s.stage);
+    const stages = ran?.length ? ran : (this.job.options?.plan_sha256 ? PLAN_STAGES : STAGES);
     const current = stages.indexOf(state.stage);
     const detail = state.status === "running" ? `${state.stage || "starting"} ${state.progress ?? 0}%` : (state.stage || "");
     this.root.dataset.status = state.status;
@@ -71,6 +73,7 @@ export class JobView {
     this.plan = planText ? JSON.parse(planText) : null;
     this.causal = causalText ? JSON.parse(causalText) : null;
     this.frames = trajectoryText ? parseTrajectory(trajectoryText) : [];
+    this.showState(this.job, this.how || "request"); // the stages this run went through
     this.artifacts = new ArtifactLinks(this.job);
     const explain = h("section", { class: "panel", testid: "explain" }, h("h2", {}, "What happened"));
     const sections = [];
