@@ -15,13 +15,15 @@ from typing import Any
 
 from pydantic import BaseModel
 
-from app.api.errors import Unprocessable
+from app.api.errors import PayloadTooLarge, Unprocessable
+from app.api.uploads import MultipartForm
 from app.core.config import Settings
 from app.core.storage import Storage
 from app.db.models import Asset
 from app.engine.asset.cache import load_asset_cached
 from app.engine.errors import PlanValidationError
 from app.engine.plan.checks import validate_plan
+from app.schemas.jobs import MAX_PLAN_CHARS
 
 PLAN_OPTION = "plan_sha256"
 """Job option holding the stored plan's sha256 (``plans/<sha256>.json`` in storage)."""
@@ -38,6 +40,29 @@ class PlanCheck(BaseModel):
     """Problems that make the plan unusable, each ``field.path: message``."""
     warnings: list[str]
     """Things the executor will adjust (clamped targets, conflicting target fields, extended duration)."""
+
+
+def take_plan_file(form: MultipartForm) -> None:
+    """A ``plan`` sent as a file part (``curl -F plan=@plan.json``) becomes the ``plan`` text field.
+
+    Raises
+    ------
+    PayloadTooLarge
+        The file is longer than :data:`MAX_PLAN_CHARS` bytes.
+    Unprocessable
+        It is not UTF-8 text, or ``plan`` came twice.
+    """
+    files = form.files_of("plan")
+    if not files:
+        return
+    if len(files) > 1 or form.value("plan") is not None:
+        raise Unprocessable("send one 'plan'", field="plan")
+    if files[0].path.stat().st_size > MAX_PLAN_CHARS:
+        raise PayloadTooLarge(f"the plan file is longer than {MAX_PLAN_CHARS} bytes", field="plan")
+    try:
+        form.fields["plan"] = [files[0].path.read_text(encoding="utf-8")]
+    except UnicodeDecodeError as exc:
+        raise Unprocessable("plan: the file is not UTF-8 text", field="plan") from exc
 
 
 def plan_key(sha256: str) -> str:

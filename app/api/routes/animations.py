@@ -15,7 +15,7 @@ from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, Storag
 from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
 from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder, validate_fields
 from app.api.intake import asset_by_ref, store_upload
-from app.api.plan_jobs import PLAN_LABEL, accept_plan
+from app.api.plan_jobs import PLAN_LABEL, accept_plan, take_plan_file
 from app.api.presenters import job_public, job_url
 from app.api.queue import Enqueuer, dispatch_jobs
 from app.crud import jobs as crud_jobs
@@ -34,7 +34,7 @@ SUBMIT_BODY = multipart_openapi(
         "asset": ASSET_FILES_SCHEMA,
         "asset_ref": {"type": "string", "maxLength": 100, "description": "instead of files: an asset id or sha256 from POST /v1/assets"},
         "prompt": {"type": "string", "minLength": 1, "maxLength": MAX_PROMPT_CHARS},
-        "plan": {"type": "string", "description": "instead of a prompt: a Plan.json (JSON text) to execute and export"},
+        "plan": {"type": "string", "description": "instead of a prompt: a Plan.json to execute and export (text up to 64 KiB, or a file part)"},
         "provider": {**_TEXT, "description": "offline (default), openai or gemini"},
         "perceiver_model": _TEXT, "planner_model": _TEXT, "critic_model": _TEXT,
         "fps": {"type": "integer", "enum": [24, 30]},
@@ -75,6 +75,7 @@ async def create_animation(
     """Submit an asset (file(s) or ``asset_ref``) and a prompt (or a ``plan`` to execute as is); poll the returned ``url``."""
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
+        take_plan_file(form)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)
         files, ref = form.files_of("asset"), (form.value("asset_ref") or "").strip()
         if files and ref:

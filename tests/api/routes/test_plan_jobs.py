@@ -97,3 +97,15 @@ def test_plan_check_reports_issues_and_warnings(http, alice) -> None:
 def test_prompt_or_plan_is_required(http, alice) -> None:
     response = http.post("/v1/animations", headers=alice.headers, files=[("asset", assets.hinge_zip())])
     assert response.status_code == 422 and "plan" in json.dumps(response.json())
+
+
+def test_plan_as_a_file_part(http, alice, sent) -> None:
+    name, data = assets.hinge_zip("-planfile")
+    files = [("asset", (name, data)), ("plan", ("plan.json", json.dumps(hinge_plan(0.5)).encode()))]
+    response = http.post("/v1/animations", headers=alice.headers, files=files)
+    assert response.status_code == 202, response.text
+    twice = http.post("/v1/animations", headers=alice.headers, data={"plan": json.dumps(hinge_plan())},
+                      files=[*files[:1], ("plan", ("plan.json", b"{}"))])
+    assert twice.status_code == 422 and twice.json()["field"] == "plan"
+    binary = http.post("/v1/animations", headers=alice.headers, files=[files[0], ("plan", ("plan.json", b"\xff\xfe\x00"))])
+    assert binary.status_code == 422 and "UTF-8" in binary.json()["detail"]
