@@ -252,6 +252,20 @@ def test_docs_render_from_local_files(probe: PageProbe, served: Served) -> None:
     assert "ArtiMo" in page.text_content("h1")
 
 
+def test_a_failed_job_says_why(probe: PageProbe, served: Served) -> None:
+    page = probe.page
+    with served.client() as client:
+        files = [("asset", ("pedal_bin/pedal_bin.urdf", PEDAL_URDF.read_bytes()))]
+        job = client.post("/v1/animations", data={"prompt": "spin the propeller"}, files=files).json()
+    page.goto(f"{served.url}/#/jobs/{job['id']}")
+    _status_is(page, "failed")
+    page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
+    error = page.text_content("#main .error")
+    assert "GroundingError" in error and "propeller" in error
+    assert "propeller" in page.text_content("[data-testid=warnings]")  # report.json of the failed run
+    assert page.locator("[data-testid=viewer-canvas]").count() == 0 and page.locator("[data-testid=plan-editor]").count() == 0
+
+
 def test_progress_falls_back_to_polling_without_the_event_stream(browser: Any, served: Served) -> None:
     probe = PageProbe(browser, served)
     try:

@@ -31,14 +31,16 @@ export class JobView {
 
   async open() {
     this.job = await api(`/v1/animations/${this.id}`);
+    api(`/v1/assets/${this.job.asset_id}`).then((asset) => { this.assetName = asset.filename; }).catch(() => {});
     fill(this.header.querySelector("#job-title"), this.job.prompt);
     this.showState(this.job, "request");
     if (isTerminal(this.job.status)) return this.showResults();
+    let last = this.job.status;
     this.stop = watchJob(this.id, (state, how) => {
       this.showState(state, how);
+      if (state.status !== last) { last = state.status; this.onChanged?.(); }
       if (isTerminal(state.status)) {
         this.stop?.();
-        this.onChanged?.();
         api(`/v1/animations/${this.id}`).then((job) => { this.job = job; this.showResults(); });
       }
     });
@@ -58,7 +60,7 @@ export class JobView {
       }, stage))),
       state.status === "running" || state.status === "queued" ? h("progress", { max: 100, value: state.progress ?? 0 }) : null,
       state.error ? errorBox(`${state.error_kind || "error"}: ${state.error}`) : null,
-      h("p", { class: "muted" }, `asset ${this.job.asset_id.slice(0, 8)} · created ${when(this.job.created_at)}`,
+      h("p", { class: "muted" }, `asset ${this.assetName || this.job.asset_id.slice(0, 8)} · created ${when(this.job.created_at)}`,
         this.job.options?.plan_sha256 ? " · plan job (executor + exporters only)" : "",
         !isTerminal(state.status) ? h("button", { class: "secondary", type: "button", style: "margin-left: 8px",
           onclick: () => api(`/v1/animations/${this.id}`, { method: "DELETE" }).catch(() => {}) }, "cancel") : null));
