@@ -30,7 +30,7 @@ RUN useradd --create-home --uid 10001 artimo && mkdir -p /data && chown artimo /
 WORKDIR /app
 
 # Layer 1: third-party dependencies only, rebuilt when pyproject.toml changes.
-ARG EXTRAS=service,models,render
+ARG EXTRAS=service,models,render,usd,mjcf
 COPY pyproject.toml ./
 RUN python - <<'PY' > /tmp/requirements.txt && pip install -r /tmp/requirements.txt && rm /tmp/requirements.txt
 import os, tomllib

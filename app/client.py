@@ -153,9 +153,10 @@ class ArtimoClient:
         """Submit a job; ``asset`` is a folder, a .zip, or an uploaded asset's id/sha256.
 
         ``options``: ``provider``, ``perceiver_model``, ``planner_model``, ``critic_model``,
-        ``fps``, ``max_critic_rounds``, ``preview``. Returns ``{id, url, status}``.
+        ``fps``, ``max_critic_rounds``, ``preview``, ``exports`` (e.g. ``"usd,mjcf"`` or a list).
+        Returns ``{id, url, status}``.
         """
-        data = {"prompt": prompt, **{k: str(v) for k, v in options.items() if v is not None}}
+        data = {"prompt": prompt, **{k: ",".join(v) if isinstance(v, list | tuple) else str(v) for k, v in options.items() if v is not None}}
         path = Path(asset)
         if isinstance(asset, str) and not path.exists():
             fields = [(k, (None, v)) for k, v in {**data, "asset_ref": asset}.items()]  # multipart without a file

@@ -22,6 +22,10 @@ CONTENT_TYPES = {
     ".gif": "image/gif",
     ".jpg": "image/jpeg",
     ".txt": "text/plain",
+    ".usda": "model/vnd.usda",
+    ".xml": "application/xml",
+    ".csv": "text/csv",
+    ".npz": "application/zip",
 }
 DEFAULT_CONTENT_TYPE = "application/octet-stream"
 SAFE_NAME = re.compile(r"[^A-Za-z0-9._-]+")

@@ -41,6 +41,7 @@ def run_plan_job(options: dict[str, Any], asset_zip: Path, out_dir: Path, observ
         raise CancelledError("cancelled before stage execute")
     observer.on_stage("execute", 50)
     config = settings.engine_config()
-    run_plan(asset_zip, plan, out_dir, cache_dir=config.asset_cache_dir, preview=bool(options.get("preview")))
+    run_plan(asset_zip, plan, out_dir, cache_dir=config.asset_cache_dir, preview=bool(options.get("preview")),
+             exports=tuple(options.get("exports") or ()))
     observer.on_stage("report", 100)
     logger.info("plan %s executed", options[PLAN_OPTION][:12])

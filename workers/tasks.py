@@ -122,6 +122,8 @@ def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObse
     config = settings.engine_config()
     if claim.options.get("preview"):
         config = config.model_copy(update={"preview": True})
+    if claim.options.get("exports"):
+        config = config.model_copy(update={"exports": tuple(claim.options["exports"])})
     rounds = claim.options.get("max_critic_rounds")
     try:
         if is_plan_job(claim.options):  # a submitted plan: executor and exporters only

@@ -7,6 +7,7 @@ import os
 import time
 from pathlib import Path
 
+from app.cli.export_option import add_export_option, exports_of
 from app.cli.output import cache_dir, err, out
 from app.engine.errors import ProviderError
 
@@ -25,6 +26,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     parser.add_argument("--render", action="store_true", help="also render reference/overlay images into OUT/images")
     parser.add_argument("--no-collisions", action="store_true", help="skip the critic's collision checks")
     parser.add_argument("--preview", action="store_true", help="also render OUT/preview.gif of the final animation (needs EGL)")
+    add_export_option(parser)
     parser.set_defaults(handler=_animate)
 
 
@@ -59,7 +61,7 @@ def _animate(args: argparse.Namespace) -> int:
 
     began = time.perf_counter()
     config = EngineConfig(render_images=args.render, check_collisions=not args.no_collisions, preview=args.preview,
-                          asset_cache_dir=cache_dir(args))
+                          asset_cache_dir=cache_dir(args), exports=exports_of(args))
     roles = make_roles(args.provider, _provider_config(args), config)
     result = run_pipeline(
         PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps),

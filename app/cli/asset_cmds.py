@@ -7,6 +7,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from app.cli.export_option import add_export_option, exports_of
 from app.cli.output import cache_dir, out, out_json
 from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
@@ -31,6 +32,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     run.add_argument("--plan", type=Path, required=True)
     run.add_argument("--out", type=Path, required=True, help="output folder")
     run.add_argument("--preview", action="store_true", help="also render OUT/preview.gif (needs EGL)")
+    add_export_option(run)
     run.set_defaults(handler=_run)
 
 
@@ -91,8 +93,9 @@ def _run(args: argparse.Namespace) -> int:
     from app.engine.run import run_plan
 
     began = time.perf_counter()
+    exports = exports_of(args)
     asset, plan = _load(args)
-    report = run_plan(asset, plan, args.out, preview=args.preview)
+    report = run_plan(asset, plan, args.out, preview=args.preview, exports=exports)
     for warning in report.warnings + report.events:
         out(f"note: {warning}")
     for kind, name in report.outputs.items():

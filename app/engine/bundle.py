@@ -2,14 +2,16 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.glb import export_glb
 from app.engine.export.jsonl import write_trajectory_jsonl
+from app.engine.export.outputs import write_run_outputs
 from app.engine.files import atomic_write_bytes, atomic_write_text
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from app.engine.report import RunReport
 
@@ -21,8 +23,10 @@ REPORT_FILE = "report.json"
 PREVIEW_FILE = "preview.gif"
 
 
-def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, causal: CausalDocument | None = None) -> dict[str, str]:
-    """Write causal.json (if given), plan.json, trajectory.jsonl and animation.glb; returns {kind: file name}."""
+def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, causal: CausalDocument | None = None,
+                    exports: Iterable[str] = ()) -> dict[str, str]:
+    """Write causal.json (if given), plan.json, trajectory.jsonl, animation.glb, interaction.json and the
+    asked-for ``exports`` (usd, mjcf, ros, csv, npz); returns {kind: file name}."""
     out_dir.mkdir(parents=True, exist_ok=True)
     written = {}
     if causal is not None:
@@ -34,6 +38,7 @@ def write_animation(out_dir: Path, asset: ArticulatedAsset, plan: Plan, trajecto
     written["trajectory"] = TRAJECTORY_FILE
     export_glb(asset, trajectory, out_dir / GLB_FILE)
     written["glb"] = GLB_FILE
+    written.update(write_run_outputs(out_dir, asset, plan, trajectory, causal, exports))
     return written
 
 

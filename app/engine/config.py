@@ -4,7 +4,9 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from pydantic import BaseModel, ConfigDict, Field
+from pydantic import BaseModel, ConfigDict, Field, field_validator
+
+from app.engine.errors import ExportError
 
 PROMPTS_DIR = Path(__file__).resolve().parents[2] / "prompts"
 
@@ -27,5 +29,19 @@ class EngineConfig(BaseModel):
     prompts_dir: Path = PROMPTS_DIR
     request_timeout_s: float = Field(default=120.0, gt=0)
     max_concurrent_calls: int = Field(default=4, ge=1, le=32)
+    exports: tuple[str, ...] = ()
+    """Extra export formats to write: ``usd``, ``mjcf``, ``ros``, ``csv``, ``npz`` (see ``app.engine.export.outputs``)."""
     asset_cache_dir: Path | None = None
     """Disk cache of loaded assets (see ``app.engine.asset.cache``); ``None`` disables it."""
+
+    @field_validator("exports", mode="before")
+    @classmethod
+    def _known_exports(cls, value: object) -> tuple[str, ...]:
+        from app.engine.export.outputs import parse_exports
+
+        if not isinstance(value, str | list | tuple):
+            raise ValueError("exports must be a comma-separated string or a list of names")
+        try:
+            return parse_exports(value)
+        except ExportError as exc:  # a ValueError lets pydantic name the field
+            raise ValueError(str(exc)) from exc

@@ -84,9 +84,11 @@ class RoleOutputError(EngineError):
 class GroundingError(EngineError):
     """The prompt could not be grounded to parts of the asset."""
 
-    def __init__(self, message: str, *, movable_parts: list[str] | None = None) -> None:
+    def __init__(self, message: str, *, movable_parts: list[str] | None = None, candidates: list[str] | None = None) -> None:
         self.movable_parts = list(movable_parts or [])
-        super().__init__(message, movable_parts=self.movable_parts)
+        self.candidates = list(candidates or [])
+        """When the prompt is ambiguous: how to name each part it could mean."""
+        super().__init__(message, movable_parts=self.movable_parts, candidates=self.candidates)
 
 
 class MetricError(EngineError):

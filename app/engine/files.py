@@ -14,10 +14,12 @@ def _default_mode() -> int:
     return 0o666 & ~current
 
 
-def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
+def atomic_write_bytes(path: str | Path, data: bytes, *, sync: bool = True) -> Path:
     """Write ``data`` to ``path`` via a temporary file in the same folder and a rename.
 
     The file gets the usual permissions (0o666 minus the umask), not mkstemp's 0o600.
+    ``sync=False`` skips the fsync (many small files, e.g. textures: still never half-written
+    to a reader, but not forced to disk before the rename).
     """
     target = Path(path)
     target.parent.mkdir(parents=True, exist_ok=True)
@@ -26,7 +28,8 @@ def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
         with os.fdopen(handle, "wb") as out:
             out.write(data)
             out.flush()
-            os.fsync(out.fileno())
+            if sync:
+                os.fsync(out.fileno())
         os.chmod(temporary, _default_mode())
         os.replace(temporary, target)
     except BaseException:

@@ -103,6 +103,7 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             perception = await roles.perceiver.perceive(context)
             report.role_calls.extend(perception.calls)
             report.warnings.extend(perception.intent.notes)
+            report.understanding = list(perception.understanding)
         with run.stage("plan"):
             planned = await roles.planner.plan(context, perception)
             report.role_calls.extend(planned.calls)
@@ -117,7 +118,7 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             report.final_state = f"{refined.state} (best round {refined.best_round})"
             report.events.extend(refined.trajectory.events)
         with run.stage("export"):
-            outputs = write_animation(run.out_dir, asset, refined.plan, refined.trajectory, perception.causal)
+            outputs = write_animation(run.out_dir, asset, refined.plan, refined.trajectory, perception.causal, config.exports)
         if config.preview:
             with run.stage("preview"):
                 try:

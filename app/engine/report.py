@@ -87,6 +87,8 @@ class RunReport(BaseModel):
     critic_rounds: list[CriticRound] = Field(default_factory=list)
     final_state: str | None = None
     warnings: list[str] = Field(default_factory=list)
+    understanding: list[dict[str, Any]] = Field(default_factory=list)
+    """Per prompt clause, what the agent understood: words -> link/joint, goal, what it is measured from, order, why."""
     events: list[str] = Field(default_factory=list)
     stages: list[StageTiming] = Field(default_factory=list)
     total_s: float = 0.0

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import logging
+from collections.abc import Iterable
 from pathlib import Path
 
 from app.engine.asset.cache import load_asset_cached
@@ -22,10 +23,11 @@ PLAN_STATE = "plan executed as given: executor and exporters only (no perceiver,
 
 def run_plan(
     asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path, *,
-    cache_dir: Path | None = None, preview: bool = False,
+    cache_dir: Path | None = None, preview: bool = False, exports: Iterable[str] = (),
 ) -> RunReport:
     """Validate and execute ``plan`` on ``asset`` and write plan.json, trajectory.jsonl,
-    animation.glb and report.json into ``out_dir`` (and ``preview.gif`` with ``preview``).
+    animation.glb, interaction.json and report.json into ``out_dir`` (and ``preview.gif``
+    with ``preview``; the ``exports`` usd, mjcf, ros, csv, npz when asked).
 
     Raises
     ------
@@ -40,7 +42,7 @@ def run_plan(
     with clock.stage("execute"):
         trajectory = execute(checked.document, model)
     with clock.stage("export"):
-        outputs = write_animation(target, model, checked.document, trajectory)
+        outputs = write_animation(target, model, checked.document, trajectory, exports=exports)
     warnings = list(checked.warnings)
     if preview:
         with clock.stage("preview"):

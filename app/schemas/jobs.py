@@ -27,6 +27,7 @@ class JobOptions(BaseModel):
     fps: Literal[24, 30] | None = None
     max_critic_rounds: int | None = Field(default=None, ge=0, le=3)
     preview: bool | None = Field(default=None, description="also render preview.gif of the final animation")
+    exports: list[str] | None = Field(default=None, description="also write: usd, mjcf, ros, csv, npz (a list, or comma-separated in a form)")
 
     @field_validator("provider")
     @classmethod
@@ -36,6 +37,21 @@ class JobOptions(BaseModel):
         if value is not None and value not in available_providers():
             raise ValueError(f"unknown provider {value!r} (available: {', '.join(available_providers())})")
         return value
+
+    @field_validator("exports", mode="before")
+    @classmethod
+    def _known_exports(cls, value: object) -> list[str] | None:
+        from app.engine.errors import ExportError
+        from app.engine.export.outputs import parse_exports
+
+        if value is None:
+            return None
+        if not isinstance(value, str | list | tuple) or not all(isinstance(item, str) for item in value):
+            raise ValueError("exports must be a list of names or a comma-separated string")
+        try:
+            return list(parse_exports(value)) or None
+        except ExportError as exc:
+            raise ValueError(str(exc)) from exc
 
     def stored(self) -> dict[str, Any]:
         """The options saved with the job (unset ones left out)."""

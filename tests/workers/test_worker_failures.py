@@ -20,7 +20,7 @@ from tests.workers.jobs import PEDAL_BIN, PEDAL_PROMPT, load_job
 JOB_TIMEOUT_S = 60.0
 REDELIVERY_TIMEOUT_S = 40.0
 POLL_S = 0.05
-OUTPUT_NAMES = ["animation.glb", "causal.json", "plan.json", "report.json", "trajectory.jsonl"]
+OUTPUT_NAMES = ["animation.glb", "causal.json", "interaction.json", "plan.json", "report.json", "trajectory.jsonl"]
 
 
 @pytest.fixture()

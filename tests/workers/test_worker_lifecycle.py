@@ -51,7 +51,7 @@ def test_submit_run_succeed_download(client: ArtimoClient, tmp_path: Path) -> No
     assert done["status"] == "succeeded" and done["progress"] == 100 and done["error"] is None
     assert {"load_asset", "perceive", "plan", "refine", "export", "total"} <= set(done["timings"])
     names = sorted(a["name"] for a in done["artifacts"])
-    assert names == ["animation.glb", "causal.json", "plan.json", "report.json", "trajectory.jsonl"]
+    assert names == ["animation.glb", "causal.json", "interaction.json", "plan.json", "report.json", "trajectory.jsonl"]
     written = client.download(accepted["id"], tmp_path)
     assert sorted(p.name for p in written) == names
     glb = tmp_path / "animation.glb"
@@ -69,6 +69,31 @@ def test_preview_option_adds_a_gif_artifact(client: ArtimoClient, tmp_path: Path
     assert gif["content_type"] == "image/gif" and gif["url"].endswith("/files/preview.gif")
     (written,) = client.download(accepted["id"], tmp_path, names=["preview.gif"])
     assert written.read_bytes()[:6] == b"GIF89a"
+
+
+def test_exports_option_adds_artifacts_each_ecosystem_reads(client: ArtimoClient, tmp_path: Path) -> None:
+    import mujoco
+    import numpy as np
+    from pxr import Usd, UsdGeom
+
+    accepted = client.submit(PEDAL_BIN, PEDAL_PROMPT, exports=["usd", "mjcf", "ros", "csv", "npz"])
+    done = client.wait(accepted["id"], timeout=JOB_TIMEOUT_S, poll=POLL_S)
+    assert done["status"] == "succeeded" and done["options"]["exports"] == ["usd", "mjcf", "ros", "csv", "npz"]
+    types = {a["name"]: a["content_type"] for a in done["artifacts"]}
+    assert types["animation.usda"] == "model/vnd.usda" and types["scene.xml"] == "application/xml"
+    assert {"joint_trajectory.json", "trajectory.csv", "trajectory.npz", "interaction.json"} <= set(types)
+    names = ["animation.usda", "scene.xml", "joint_trajectory.json", "trajectory.csv", "trajectory.npz", "interaction.json"]
+    client.download(accepted["id"], tmp_path, names=names)
+    stage = Usd.Stage.Open(str(tmp_path / "animation.usda"))
+    assert UsdGeom.GetStageUpAxis(stage) == "Z" and stage.GetPrimAtPath("/pedal_bin/body/lid").IsValid()
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "scene.xml"))
+    assert model.nkey >= 2 and mujoco.mj_name2id(model, mujoco.mjtObj.mjOBJ_JOINT, "lid_hinge") >= 0
+    with np.load(tmp_path / "trajectory.npz", allow_pickle=False) as arrays:
+        assert "lid_hinge" in arrays.files
+    interactions = json.loads((tmp_path / "interaction.json").read_text())["interactions"]
+    assert [(i["link"], i["action"]) for i in interactions] == [("pedal", "push")]
+    response = client._request("GET", f"/v1/animations/{accepted['id']}/scene.xml")
+    assert response.content == (tmp_path / "scene.xml").read_bytes()
 
 
 def test_ungroundable_prompt_fails_with_engine_message(client: ArtimoClient) -> None:

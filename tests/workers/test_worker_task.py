@@ -19,7 +19,7 @@ from workers.lease import job_lease
 from workers.observer import JobObserver
 from workers.tasks import Outcome, execute_job
 
-EXPECTED_FILES = {"animation.glb", "causal.json", "plan.json", "report.json", "trajectory.jsonl"}
+EXPECTED_FILES = {"animation.glb", "causal.json", "interaction.json", "plan.json", "report.json", "trajectory.jsonl"}
 
 
 def _stored_keys(settings: Settings, job_id: uuid.UUID) -> list[str]:

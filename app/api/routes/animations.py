@@ -27,7 +27,7 @@ logger = logging.getLogger(__name__)
 router = APIRouter(prefix="/v1/animations", tags=["animations"])
 
 MAX_OFFSET = 1_000_000_000
-JOB_FIELDS = ("prompt", "plan", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds", "preview")
+JOB_FIELDS = ("prompt", "plan", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds", "preview", "exports")
 _TEXT = {"type": "string"}
 SUBMIT_BODY = multipart_openapi(
     {
@@ -40,6 +40,7 @@ SUBMIT_BODY = multipart_openapi(
         "fps": {"type": "integer", "enum": [24, 30]},
         "max_critic_rounds": {"type": "integer", "minimum": 0, "maximum": 3},
         "preview": {"type": "boolean", "description": "also render preview.gif (an animated GIF of the result)"},
+        "exports": {"type": "string", "maxLength": 100, "description": "also write these formats, comma-separated: usd, mjcf, ros, csv, npz"},
     },
     [],
 )

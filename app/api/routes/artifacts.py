@@ -18,7 +18,10 @@ from app.db.models import ApiClient
 
 router = APIRouter(prefix="/v1/animations", tags=["results"])
 
-ArtifactName = Literal["animation.glb", "trajectory.jsonl", "plan.json", "causal.json", "report.json"]
+ArtifactName = Literal[
+    "animation.glb", "trajectory.jsonl", "plan.json", "causal.json", "report.json", "interaction.json",
+    "animation.usda", "scene.xml", "joint_trajectory.json", "trajectory.csv", "trajectory.npz",
+]
 FILE_RESPONSES: dict[int | str, dict[str, Any]] = {
     200: {"content": {"application/octet-stream": {}}, "description": "the file, with its own content type"},
     **error_responses(401, 404, 422, 429),
@@ -68,5 +71,7 @@ def get_file(
 
 @router.get("/{job_id}/{name}", response_class=FileResponse, responses=FILE_RESPONSES)
 def get_artifact(job_id: uuid.UUID, name: ArtifactName, client: ClientDep, session: SessionDep, storage: StorageDep) -> FileResponse:
-    """``animation.glb`` (model/gltf-binary), ``trajectory.jsonl``, ``plan.json``, ``causal.json`` or ``report.json``."""
+    """``animation.glb`` (model/gltf-binary), ``trajectory.jsonl``, ``plan.json``, ``causal.json``, ``report.json``,
+    ``interaction.json``, and the exports asked for (``animation.usda``, ``scene.xml``, ``joint_trajectory.json``,
+    ``trajectory.csv``, ``trajectory.npz``)."""
     return _serve(session, storage, client, job_id, [name])

@@ -20,11 +20,12 @@ from app.engine.agents.critique import Critique
 from app.engine.agents.prompts import PromptStore, RenderedPrompt
 from app.engine.agents.roles import Context, Diagnosed, Perception, Planned
 from app.engine.agents.summaries import critic_cases
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import ExpressionError, PlanValidationError, RoleOutputError
 from app.engine.execute.trajectory import Trajectory
-from app.engine.offline.causal_doc import intent_from_causal
-from app.engine.offline.naming import link_category
-from app.engine.plan.causal import CausalDocument
+from app.engine.offline.contract_io import extension_of
+from app.engine.offline.naming import link_kind
+from app.engine.offline.tracker import resolve_steps
 from app.engine.plan.checks import check_causal, pydantic_issues, validate_plan
 from app.engine.plan.schema import Plan
 from app.engine.providers.base import ChatModel, Image, Message, ModelRequest
@@ -90,7 +91,7 @@ def _links(context: Context) -> list[dict[str, Any]]:
     for name in context.asset.link_order:
         joint = context.asset.parent_joint(name)
         movable = joint is not None and joint.movable
-        label = context.asset.links[name].semantics.label or link_category(context.asset, name) or ("no geometry" if not context.asset.links[name].has_geometry else "part")
+        label = context.asset.links[name].semantics.label or link_kind(context.asset, name) or ("no geometry" if not context.asset.links[name].has_geometry else "part")
         rows.append({"name": name, "label": label, "joint": joint.name if movable and joint else None, "joint_type": joint.type if movable and joint else None})
     return rows
 
@@ -117,10 +118,10 @@ class ModelPerceiver:
 
         def check(document: CausalDocument) -> None:
             check_causal(document, context.asset)
-            intent_from_causal(document, context.asset, context.prompt)
+            resolve_steps(extension_of(document, context.asset), context.asset, context.prompt)
 
         document, calls = await ask(self.chat, prompt, CausalDocument, attempts=context.config.role_attempts, images=images, check=check)
-        return Perception(causal=document, intent=intent_from_causal(document, context.asset, context.prompt), calls=tuple(calls))
+        return Perception(causal=document, intent=resolve_steps(extension_of(document, context.asset), context.asset, context.prompt), calls=tuple(calls))
 
 
 class ModelPlanner:

@@ -14,9 +14,9 @@ from app.engine.agents.critique import Critique
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import JointSummary, ScaleContext
 from app.engine.config import EngineConfig
+from app.engine.contracts.causal import CausalDocument
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.intent import Intent
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from app.engine.report import RoleCall
 
@@ -38,8 +38,10 @@ class Context:
 class Perception:
     causal: CausalDocument
     intent: Intent
-    """The steps the planner schedules (decoded from ``causal`` for model providers)."""
+    """The resolved steps of ``causal``'s contract (what the planner schedules and the critic checks)."""
     calls: tuple[RoleCall, ...] = ()
+    understanding: tuple[dict[str, Any], ...] = ()
+    """Per clause, what was understood (the offline perceiver's explanation)."""
 
 
 @dataclass(frozen=True)

@@ -23,7 +23,7 @@ from app.engine.files import atomic_write_bytes
 
 logger = logging.getLogger(__name__)
 
-CACHE_VERSION = 1
+CACHE_VERSION = 2
 HEADER = "header"
 
 
@@ -62,7 +62,7 @@ def _dump(asset: ArticulatedAsset) -> bytes:
             if part.material.image_png is not None:
                 image = images.setdefault(part.material.image_png, len(images))
             material = part.material
-            parts.append({"source": part.source, "normals": part.normals is not None, "uv": part.uv is not None,
+            parts.append({"source": part.source, "visual": part.visual, "normals": part.normals is not None, "uv": part.uv is not None,
                           "material": [material.name, list(material.base_color), material.metallic, material.roughness, material.double_sided, image]})
             arrays[f"v{index}"], arrays[f"f{index}"] = part.vertices, part.faces
             if part.normals is not None:
@@ -108,7 +108,7 @@ def _load(data: np.lib.npyio.NpzFile) -> ArticulatedAsset:
             png = bytes(data[f"img{image}"]) if image >= 0 else None
             material = Material(name=name, base_color=tuple(color), image_png=png, metallic=metallic, roughness=roughness, double_sided=double_sided)
             parts.append(MeshPart(vertices=data[f"v{index}"], faces=data[f"f{index}"], normals=data[f"n{index}"] if part["normals"] else None,
-                                  uv=data[f"u{index}"] if part["uv"] else None, material=material, source=part["source"]))
+                                  uv=data[f"u{index}"] if part["uv"] else None, material=material, source=part["source"], visual=part["visual"]))
             index += 1
         label, kind, visuals, source = record["semantics"]
         links[record["name"]] = LinkSpec(name=record["name"], parts=tuple(parts), semantics=LinkSemantics(label=label, joint_kind=kind, visual_names=tuple(visuals), source=source))

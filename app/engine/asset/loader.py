@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import logging
 import re
@@ -165,18 +166,22 @@ def _link_parts(
             transform = origin @ np.diag([*scale, 1.0])
             digest.update(str(mesh_path.relative_to(root)).encode())
             digest.update(mesh_path.read_bytes())
-            parts.extend(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label))
+            parts.extend(_named(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label), visual.name or ""))
         elif geometry.box is not None:
-            parts.extend(primitive_parts("box", np.asarray(geometry.box.size, dtype=np.float64), origin, rgba, budget, label=label, urdf_name=urdf_name))
+            parts.extend(_named(primitive_parts("box", np.asarray(geometry.box.size, dtype=np.float64), origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         elif geometry.cylinder is not None:
             size = np.array([geometry.cylinder.radius, geometry.cylinder.length], dtype=np.float64)
-            parts.extend(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
+            parts.extend(_named(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         elif geometry.sphere is not None:
             size = np.array([geometry.sphere.radius], dtype=np.float64)
-            parts.extend(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
+            parts.extend(_named(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         else:
             raise AssetError("visual geometry is empty", file=urdf_name, element=element)
     return parts
+
+
+def _named(parts: list[MeshPart], visual: str) -> list[MeshPart]:
+    return [dataclasses.replace(part, visual=visual) for part in parts]
 
 
 def _read_semantics(urdf_dir: Path, root: Path) -> dict[str, tuple[str, str]]:

@@ -107,6 +107,8 @@ class MeshPart:
     faces : (m, 3) int
     normals : (n, 3) float or None, unit length
     uv : (n, 2) float or None, glTF convention (v down)
+    source : the mesh file (relative to the asset) or ``primitive:<kind>``
+    visual : the URDF ``<visual name=...>`` it came from ("" when unnamed), e.g. ``handle-27``
     """
 
     vertices: FloatArray
@@ -115,6 +117,7 @@ class MeshPart:
     uv: FloatArray | None
     material: Material
     source: str
+    visual: str = ""
 
     def __post_init__(self) -> None:
         _frozen(self.vertices)

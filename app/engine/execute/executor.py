@@ -11,7 +11,15 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.joint_track import JointContext, TimedControl, track_joint
 from app.engine.execute.trajectory import Trajectory
 from app.engine.plan.checks import resolve_target, validate_plan
-from app.engine.plan.schema import JOINT_CONTROLS, BaseVelocity, BaseVelocityDecay, JointPosition, ModeSet, Plan
+from app.engine.plan.schema import (
+    JOINT_CONTROLS,
+    BaseVelocity,
+    BaseVelocityDecay,
+    BaseYawRate,
+    JointPosition,
+    ModeSet,
+    Plan,
+)
 from app.engine.types import FloatArray
 
 logger = logging.getLogger(__name__)
@@ -81,6 +89,32 @@ def base_translation(plan: Plan, times: FloatArray) -> FloatArray:
     return out
 
 
+def base_yaw(plan: Plan, times: FloatArray, events: list[str]) -> tuple[FloatArray, FloatArray]:
+    """((f, 4) rotation quaternions xyzw, (f, 3) translation that keeps the pivot in place) of every
+    ``base_yaw_rate`` control: the yaw is the exact integral of the rates."""
+    angle = np.zeros(times.shape[0])
+    pivot: FloatArray | None = None
+    for segment in plan.timeline:
+        elapsed = np.clip(times, segment.t0, segment.t1) - segment.t0
+        for control in segment.controls:
+            if isinstance(control, BaseYawRate):
+                angle += control.omega_radps * elapsed
+                here = np.asarray(control.pivot_world, dtype=np.float64)
+                if pivot is None:
+                    pivot = here
+                elif np.linalg.norm(here - pivot) > 1e-9:
+                    events.append(f"base_yaw_rate pivots differ; turning about the first one {pivot.tolist()}")
+    rotation = np.zeros((times.shape[0], 4))
+    rotation[:, 2] = np.sin(angle / 2.0)
+    rotation[:, 3] = np.cos(angle / 2.0)
+    shift = np.zeros((times.shape[0], 3))
+    if pivot is not None:
+        cos, sin = np.cos(angle), np.sin(angle)
+        shift[:, 0] = pivot[0] - (cos * pivot[0] - sin * pivot[1])
+        shift[:, 1] = pivot[1] - (sin * pivot[0] + cos * pivot[1])
+    return rotation, shift
+
+
 def _modes(plan: Plan, times: FloatArray) -> tuple[dict[str, bool], ...]:
     """Per-frame mode flags; a ``mode_set`` takes effect at its phase's ``t0`` and persists."""
     changes = [
@@ -119,8 +153,7 @@ def execute(plan: Plan, asset: ArticulatedAsset) -> Trajectory:
     tracks = {name: track_joint(contexts[name], per_joint.get(name, []), times, events) for name in asset.controllable_joints}
     values = resolve_joint_values(asset, tracks, times.shape[0])
     q = np.stack([values[name] for name in asset.movable_joints], axis=1) if asset.movable_joints else np.zeros((times.shape[0], 0))
-    rotation = np.zeros((times.shape[0], 4))
-    rotation[:, 3] = 1.0
+    rotation, pivot_shift = base_yaw(plan, times, events)
     for note in events:
         logger.debug("execute %s: %s", asset.name, note)
     return Trajectory(
@@ -128,7 +161,7 @@ def execute(plan: Plan, asset: ArticulatedAsset) -> Trajectory:
         times=times,
         joint_names=asset.movable_joints,
         q=q,
-        base_translation=base_translation(plan, times),
+        base_translation=base_translation(plan, times) + pivot_shift,
         base_rotation_xyzw=rotation,
         modes=_modes(plan, times),
         events=tuple(events),

@@ -17,8 +17,8 @@ import numpy as np
 
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.naming import link_category, tokens
-from app.engine.offline.vocabulary import CONTROL_CATEGORIES, LABEL_CATEGORY
+from app.engine.lexicon.kinds import CONTROL_KINDS, PartKind, kind_of_label
+from app.engine.offline.naming import link_kind, tokens
 from app.engine.types import FloatArray
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -37,7 +37,7 @@ class JointGeometry:
     joint: str
     type: str
     child: str
-    category: str | None
+    category: PartKind | None
     moving_links: tuple[str, ...]
     axis_world: FloatArray
     pivot_world: FloatArray
@@ -145,7 +145,7 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
     frame = rest[spec.parent][0] @ spec.origin
     axis_world = frame[:3, :3] @ spec.axis
     centroid = moved.mean(axis=0) if moved.shape[0] else frame[:3, 3]
-    category = link_category(asset, spec.child)
+    category = link_kind(asset, spec.child)
     closed = opened = press = up = down = None
     face = np.zeros(3)
     size = float(np.linalg.norm(moved.max(axis=0) - moved.min(axis=0))) if moved.shape[0] else 0.0
@@ -213,7 +213,7 @@ def _horizontal(vector: FloatArray) -> FloatArray:
 
 def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray]) -> FloatArray:
     """One part's vote for the object's front (zero when it says nothing)."""
-    if geometry.category in CONTROL_CATEGORIES:
+    if geometry.category in CONTROL_KINDS:
         # a knob on a tilted control panel: its axis, taken pointing up and out of the panel,
         # leans toward the user (a washer's back panel); vertical or level axes say nothing
         if geometry.type in ("revolute", "continuous") and 0.2 < abs(float(geometry.axis_world @ UP)) < 0.7:
@@ -301,6 +301,6 @@ def object_category(asset: ArticulatedAsset) -> str | None:
         return stem[0] if stem[0] not in ("mobility", "robot", "asset", "model") else None
     for link in asset.links.values():
         label = (link.semantics.label or "").lower()
-        if label.endswith("_body") and label not in LABEL_CATEGORY:
+        if label.endswith("_body") and kind_of_label(label) is None:
             return label[: -len("_body")]
     return None

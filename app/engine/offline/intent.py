@@ -1,12 +1,17 @@
-"""The offline perceiver's reading of a prompt, before it becomes Causal.json."""
+"""Resolved steps: the contract's steps with every goal turned into a joint value.
+
+:func:`app.engine.offline.tracker.resolve_steps` builds these from Causal.json's ``artimo``
+block; the planner schedules them and the geometric critic checks a trajectory against them.
+"""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
 
+from app.engine.lexicon.kinds import PartKind
 from app.engine.types import FloatArray
 
 Role = Literal["control", "direct", "effect"]
@@ -19,7 +24,7 @@ class JointGoal:
 
     joint: str
     link: str
-    category: str | None
+    category: PartKind | None
     role: Role
     value: float | None = None
     expr: str | None = None
@@ -27,11 +32,14 @@ class JointGoal:
     returns: Return = "unknown"
     sustains: bool = False
     """Releasing this control would undo its effect (a pedal holding a lid open)."""
+    start: float | None = None
+    """The joint's value when the step starts."""
 
 
 @dataclass(frozen=True, eq=False)
 class BaseGoal:
-    """Translate the whole object by ``distance_m`` along the unit ``axis``."""
+    """Translate the whole object by ``distance_m`` along the unit ``axis`` and/or turn it by ``yaw_rad``
+    about the vertical through ``pivot``."""
 
     axis: FloatArray
     distance_m: float
@@ -39,6 +47,8 @@ class BaseGoal:
     coast: bool = False
     wheels: tuple[tuple[str, float], ...] = ()
     """(joint, radians per metre travelled) of wheels that roll without slipping."""
+    yaw_rad: float = 0.0
+    pivot: tuple[float, float, float] | None = None
 
     def axis_tuple(self) -> tuple[float, float, float]:
         rounded = np.round(self.axis, 6) + 0.0
@@ -56,9 +66,11 @@ class Step:
     parallel: bool = False
     speed_factor: float = 1.0
     duration_s: float | None = None
-    coupling: tuple[str, ...] = field(default_factory=tuple)
+    coupling: tuple[str, ...] = ()
     pause_before_s: float = 0.0
     """Seconds the scene holds still before this step starts ("..., wait, then ...")."""
+    hold_s: float = 0.0
+    """Seconds the step's end state is held before its controls are let go."""
 
     @property
     def goals(self) -> tuple[JointGoal, ...]:

@@ -1,17 +1,13 @@
-"""Part categories of links from every name source: semantics.txt, link and visual names."""
+"""Part kinds of links from every name source: semantics.txt labels, link and visual names."""
 
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.vocabulary import CATEGORY_WORDS, LABEL_CATEGORY
+from app.engine.lexicon.kinds import REGISTRY, PartKind, kind_of_label
 
-_WORD_CATEGORY: dict[str, str] = {}
-for _category, _words in CATEGORY_WORDS.items():
-    for _word in _words:
-        _WORD_CATEGORY.setdefault(_word, _category)
-_WORD_CATEGORY.update({"turntable": "turntable", "foot": "pedal", "pad": "pedal", "tray": "tray"})
 GENERIC = re.compile(r"^(?:link|joint|part|base|visual|geom|mesh|obj|original|node|l|j)?\d*$")
 
 
@@ -21,35 +17,41 @@ def tokens(name: str) -> list[str]:
     return [t for t in re.split(r"[^a-z]+", spaced.lower()) if t]
 
 
-def category_of_text(text: str) -> str | None:
-    """Category named by a label or identifier, longest phrase first."""
-    label = text.lower().strip()
-    if label in LABEL_CATEGORY:
-        return LABEL_CATEGORY[label]
-    words = tokens(label)
-    if "latch" in words:  # a latch knob or latch handle behaves as a latch (springs back)
-        return "latch"
-    joined = " ".join(words)
-    for phrase in sorted(_WORD_CATEGORY, key=len, reverse=True):
-        if " " in phrase and re.search(r"\b" + re.escape(phrase) + r"\b", joined):
-            return _WORD_CATEGORY[phrase]
-    for word in reversed(words):  # the head noun is usually last ("drawer_top" is an exception handled below)
-        if word in _WORD_CATEGORY:
-            return _WORD_CATEGORY[word]
-        if word.endswith("s") and word[:-1] in _WORD_CATEGORY:
-            return _WORD_CATEGORY[word[:-1]]
+@lru_cache(maxsize=1)
+def _phrases() -> tuple[tuple[tuple[str, ...], PartKind], ...]:
+    pairs = [(tuple(tokens(word)), entry.kind) for entry in REGISTRY.values() for word in entry.words]
+    return tuple(sorted(pairs, key=lambda pair: -len(pair[0])))
+
+
+def kind_of_text(text: str) -> PartKind | None:
+    """Kind named by a label or identifier: a PartNet label, else its words (latch words win,
+    then multi-word names, then the last word that names a kind, plurals included)."""
+    label = kind_of_label(text)
+    if label is not None:
+        return label
+    words = tokens(text)
+    if any(w in ("latch", "lock") for w in words):
+        return PartKind.LATCH  # a latch knob or latch handle behaves as a latch (springs back)
+    for phrase, kind in _phrases():
+        if len(phrase) > 1 and any(tuple(words[i:i + len(phrase)]) == phrase for i in range(len(words))):
+            return kind
+    singles = {phrase[0]: kind for phrase, kind in _phrases() if len(phrase) == 1}
+    for word in reversed(words):
+        if word in singles:
+            return singles[word]
+        if word.endswith("s") and word[:-1] in singles:
+            return singles[word[:-1]]
     return None
 
 
-def link_category(asset: ArticulatedAsset, link: str) -> str | None:
-    """Best category of ``link``: semantics label, then link name, then visual names."""
+def link_kind(asset: ArticulatedAsset, link: str) -> PartKind | None:
+    """Best kind of ``link``: semantics label, then link name, then visual names."""
     spec = asset.links[link]
-    sources = [spec.semantics.label or "", link, *spec.semantics.visual_names]
-    for source in sources:
+    for source in (spec.semantics.label or "", link, *spec.semantics.visual_names):
         if source and not GENERIC.match(source.lower()):
-            category = category_of_text(source)
-            if category is not None:
-                return category
+            kind = kind_of_text(source)
+            if kind is not None:
+                return kind
     return None
 
 
@@ -65,5 +67,6 @@ def link_words(asset: ArticulatedAsset, link: str, *, visuals: bool = True) -> s
 def describe_link(asset: ArticulatedAsset, link: str) -> str:
     """Human label of a link for messages: "door (link_0)"."""
     spec = asset.links[link]
-    label = spec.semantics.label or link_category(asset, link)
+    kind = link_kind(asset, link)
+    label = spec.semantics.label or (kind.value if kind is not None else None)
     return f"{label} ({link})" if label and label != link else link

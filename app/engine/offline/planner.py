@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.lexicon.kinds import HINGED_KINDS, info
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Step
 from app.engine.plan.schema import MAX_DURATION_S, MIN_DURATION_S, Plan
 
@@ -22,10 +23,10 @@ STEP_GAP_S = 0.05
 LATENCY_CONTROL_S = 0.05
 LATENCY_SPRING_S = 0.10
 BASE_SPEED_MPS = 0.4
-CONTROL_DURATION_S: dict[str, float] = {"button": 0.3, "switch": 0.3, "pedal": 0.4, "handle": 0.4, "latch": 0.4, "lever": 0.5}
 QUARTER = math.pi / 2
 MAX_PLAN_S = MAX_DURATION_S - FINAL_HOLD_S
-SPRING_EFFECTS = ("lid", "door", "screen", "window")
+YAW_SPEED_RADPS = math.pi / 2 / 1.2
+"""A quarter turn of the whole object takes 1.2 s."""
 MAX_WHEEL_OMEGA = 19.5
 """Wheel speed cap (rad/s), just under the contract's 20."""
 DIGITS = 4
@@ -43,15 +44,16 @@ def _q(value: float) -> float:
 def motion_duration(goal: JointGoal, asset: ArticulatedAsset) -> float:
     """Seconds for one joint motion, before the speed factor."""
     joint = asset.joints[goal.joint]
-    if goal.category in CONTROL_DURATION_S and goal.role == "control":
-        return CONTROL_DURATION_S[goal.category]
+    entry = info(goal.category) if goal.category is not None else None
+    if entry is not None and entry.actuation_s is not None and goal.role == "control":
+        return entry.actuation_s
     if goal.value is None:
         return 2.0
     delta = abs(goal.value - joint.rest)
     if joint.type == "prismatic":
         size = max(_link_size(asset, goal.link), 0.05)
         return min(max(0.5 + delta / size, 0.3), 2.5)
-    if goal.category == "knob":
+    if entry is not None and entry.press == "turn":
         return min(max(0.3 + 0.3 * delta / QUARTER, 0.3), 1.5)
     return min(max(0.5 + 0.5 * delta / QUARTER, 0.4), 2.5)
 
@@ -112,9 +114,10 @@ def _joint_step(timeline: _Timeline, step: Step, start: float) -> float:
         t += duration
         held = [g.joint for g in step.controls if g.value is not None]
     if not step.effects:
+        t += _hold_all(timeline, step, t)
         return t + _release(timeline, step, t, 0.0) if step.controls else t
     if step.controls:
-        delay = LATENCY_SPRING_S if any(e.category in SPRING_EFFECTS for e in step.effects) else LATENCY_CONTROL_S
+        delay = LATENCY_SPRING_S if any(e.category in HINGED_KINDS for e in step.effects) else LATENCY_CONTROL_S
         timeline.add("causal_latency", "causal_latency", t, t + delay, [_hold(j) for j in held])
         timeline.delay = delay if timeline.delay is None else timeline.delay
         t += delay
@@ -124,8 +127,23 @@ def _joint_step(timeline: _Timeline, step: Step, start: float) -> float:
     controls += [_hold(j) for j in sustained if j in held]
     timeline.add("move_" + "_".join(_label(g) for g in step.effects), "effect_motion", t, t + duration, controls)
     timeline.effect_start = t if timeline.effect_start is None else timeline.effect_start
+    if step.hold_s > 0:
+        t += duration
+        t += _hold_all(timeline, step, t)
+        return t + _release(timeline, step, t, 0.0)
     _release(timeline, step, t, duration)
     return t + duration
+
+
+def _hold_all(timeline: _Timeline, step: Step, start: float) -> float:
+    """Hold every joint of the step where it is for ``step.hold_s`` seconds; returns the time used."""
+    if step.hold_s <= 0:
+        return 0.0
+    joints = list(dict.fromkeys(g.joint for g in step.goals if g.value is not None))
+    if not joints and step.base is None:
+        return 0.0
+    timeline.add("hold", "hold", start, start + step.hold_s, [_hold(j) for j in joints])
+    return step.hold_s
 
 
 def _release(timeline: _Timeline, step: Step, start: float, limit: float) -> float:
@@ -147,28 +165,36 @@ def _velocities(goals: tuple[JointGoal, ...]) -> list[dict[str, Any]]:
 def _base_step(timeline: _Timeline, step: Step, base: BaseGoal, start: float) -> float:
     if step.duration_s is not None:
         duration = step.duration_s
-    elif base.speed_mps:
+    elif base.speed_mps and base.distance_m:
         duration = base.distance_m / base.speed_mps
-    else:
+    elif base.distance_m:
         duration = min(max(base.distance_m / BASE_SPEED_MPS, 1.0), 4.0) * step.speed_factor
+    else:
+        duration = min(max(abs(base.yaw_rad) / YAW_SPEED_RADPS, 1.0), 4.0) * step.speed_factor
     fastest = max((abs(rate) for _, rate in base.wheels), default=0.0)
     if fastest > 0:  # keep every wheel within the contract's |omega| <= 20 rad/s
         peak_factor = 3.0 / (1.0 - math.exp(-3.0)) if base.coast else 1.0
         duration = max(duration, peak_factor * base.distance_m * fastest / MAX_WHEEL_OMEGA)
-    axis = list(base.axis_tuple())
-    if base.coast:
-        tau = duration / 3.0
-        v0 = base.distance_m / (tau * (1.0 - math.exp(-duration / tau)))
-        controls: list[dict[str, Any]] = [{"mode": "base_velocity_decay", "axis_world": axis, "v0_mps": _r(v0), "tau_s": _r(tau)}]
-        controls += [{"mode": "joint_velocity", "joint": j, "omega_radps": _r(rate * v0), "decay": {"tau_s": _r(tau), "min_omega_radps": 0.0}} for j, rate in base.wheels]
-    else:
-        speed = base.distance_m / duration
-        controls = [{"mode": "base_velocity", "axis_world": axis, "v_mps": _r(speed)}]
-        controls += [{"mode": "joint_velocity", "joint": j, "omega_radps": _r(rate * speed)} for j, rate in base.wheels]
-    timeline.add("move_object", "effect_motion", start, start + duration, controls)
+    if base.yaw_rad:
+        duration = max(duration, abs(base.yaw_rad) / MAX_WHEEL_OMEGA)
+    controls: list[dict[str, Any]] = []
+    if base.distance_m:
+        axis = list(base.axis_tuple())
+        if base.coast:
+            tau = duration / 3.0
+            v0 = base.distance_m / (tau * (1.0 - math.exp(-duration / tau)))
+            controls += [{"mode": "base_velocity_decay", "axis_world": axis, "v0_mps": _r(v0), "tau_s": _r(tau)}]
+            controls += [{"mode": "joint_velocity", "joint": j, "omega_radps": _r(rate * v0), "decay": {"tau_s": _r(tau), "min_omega_radps": 0.0}} for j, rate in base.wheels]
+        else:
+            speed = base.distance_m / duration
+            controls += [{"mode": "base_velocity", "axis_world": axis, "v_mps": _r(speed)}]
+            controls += [{"mode": "joint_velocity", "joint": j, "omega_radps": _r(rate * speed)} for j, rate in base.wheels]
+    if base.yaw_rad:
+        controls.append({"mode": "base_yaw_rate", "omega_radps": base.yaw_rad / duration, "pivot_world": list(base.pivot or (0.0, 0.0, 0.0))})
+    timeline.add("move_object" if base.distance_m else "turn_object", "effect_motion", start, start + duration, controls)
     timeline.onset = start if timeline.onset is None else timeline.onset
     timeline.effect_start = start if timeline.effect_start is None else timeline.effect_start
-    return start + duration
+    return start + duration + _hold_all(timeline, step, start + duration)
 
 
 def _compress(segments: list[dict[str, Any]], end: float) -> float:

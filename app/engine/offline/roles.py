@@ -6,15 +6,16 @@ import time
 
 from app.engine.agents.roles import Context, Diagnosed, Perception, Planned, Roles
 from app.engine.execute.trajectory import Trajectory
-from app.engine.offline.causal_doc import causal_from_intent, intent_from_causal
+from app.engine.offline.contract_io import causal_document, extension_of
 from app.engine.offline.critic import critique
-from app.engine.offline.perceiver import read_intent
+from app.engine.offline.perceiver import read_prompt
 from app.engine.offline.planner import plan_intent
+from app.engine.offline.tracker import resolve_steps
 from app.engine.plan.schema import Plan
 from app.engine.report import RoleCall
 
 PROVIDER = "offline"
-RULES_VERSION = "offline-rules-1"
+RULES_VERSION = "offline-rules-2"
 
 
 def _call(role: str, began: float) -> RoleCall:
@@ -27,19 +28,20 @@ class OfflinePerceiver:
 
     async def perceive(self, context: Context) -> Perception:
         began = time.perf_counter()
-        intent = read_intent(context.prompt, context.asset)
-        return Perception(causal=causal_from_intent(intent, context.asset), intent=intent, calls=(_call("perceiver", began),))
+        reading = read_prompt(context.prompt, context.asset)
+        document = causal_document(reading.extension, reading.intent, context.asset)
+        return Perception(causal=document, intent=reading.intent, calls=(_call("perceiver", began),), understanding=tuple(reading.understanding))
 
 
 class OfflinePlanner:
-    """Schedules the perceiver's steps; works from any Causal.json (a VLM's too)."""
+    """Schedules the contract's steps; reads only Causal.json (ours or a model's)."""
 
     name = PROVIDER
     model = RULES_VERSION
 
     async def plan(self, context: Context, perception: Perception) -> Planned:
         began = time.perf_counter()
-        intent = perception.intent if perception.intent.steps else intent_from_causal(perception.causal, context.asset, context.prompt)
+        intent = resolve_steps(extension_of(perception.causal, context.asset), context.asset, context.prompt)
         return Planned(plan=plan_intent(intent, context.asset), calls=(_call("planner", began),))
 
 

@@ -13,8 +13,8 @@ from typing import Any, TypeVar
 from pydantic import BaseModel, ValidationError
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import ExpressionError, PlanValidationError
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.expr import Limits, evaluate_expr
 from app.engine.plan.schema import JOINT_CONTROLS, JointPosition, Plan
 
@@ -35,7 +35,7 @@ def _loc(parts: tuple[int | str, ...]) -> str:
     for part in parts:
         if isinstance(part, int):
             out += f"[{part}]"
-        elif part in ("base_velocity", "base_velocity_decay", "joint_velocity", "joint_position", "hold_position", "spring_return", "mode_set"):
+        elif part in ("base_velocity", "base_velocity_decay", "base_yaw_rate", "joint_velocity", "joint_position", "hold_position", "spring_return", "mode_set"):
             continue  # discriminator tag pydantic inserts into the location
         else:
             out += f".{part}" if out else str(part)

@@ -64,6 +64,15 @@ class BaseVelocityDecay(_Control):
     _axis = field_validator("axis_world")(_check_axis)
 
 
+class BaseYawRate(_Control):
+    """Our extension: the whole object turns about the world vertical through ``pivot_world``
+    at ``omega_radps`` (counter-clockwise seen from above is positive)."""
+
+    mode: Literal["base_yaw_rate"]
+    omega_radps: Omega
+    pivot_world: Axis = (0.0, 0.0, 0.0)
+
+
 class Decay(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
     type: Literal["exponential"] = "exponential"
@@ -124,7 +133,7 @@ class ModeSet(_Control):
 
 
 Control = Annotated[
-    BaseVelocity | BaseVelocityDecay | JointVelocity | JointPosition | HoldPosition | SpringReturn | ModeSet,
+    BaseVelocity | BaseVelocityDecay | BaseYawRate | JointVelocity | JointPosition | HoldPosition | SpringReturn | ModeSet,
     Field(discriminator="mode"),
 ]
 JOINT_CONTROLS = (JointVelocity, JointPosition, HoldPosition, SpringReturn)

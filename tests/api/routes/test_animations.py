@@ -58,6 +58,7 @@ def test_files_and_reference_together_are_422(http, alice) -> None:
         ({"fps": "abc"}, "fps"),
         ({"max_critic_rounds": "9"}, "max_critic_rounds"),
         ({"provider": "nonsense"}, "provider"),
+        ({"exports": "usd,gltf"}, "exports"),
         ({"prompt": "x" * 5000}, "prompt"),
     ],
 )
@@ -66,6 +67,13 @@ def test_invalid_fields_are_422_naming_the_field(http, alice, sent, fields, wher
     assert response.status_code == 422, response.text
     assert any(error["loc"] == ["body", where] for error in response.json()["detail"])
     assert sent == []
+
+
+def test_exports_are_stored_as_known_names(http, alice, sent) -> None:
+    response = submit(http, alice.headers, exports=" NPZ, usd ,usd")
+    assert response.status_code == 202, response.text
+    job = http.get(response.json()["url"], headers=alice.headers).json()
+    assert job["options"]["exports"] == ["usd", "npz"]
 
 
 def test_missing_prompt_is_422(http, alice) -> None:

@@ -25,7 +25,7 @@ def _same(a, b) -> None:  # type: ignore[no-untyped-def]
         la, lb = a.links[name], b.links[name]
         assert la.semantics == lb.semantics and len(la.parts) == len(lb.parts)
         for pa, pb in zip(la.parts, lb.parts, strict=True):
-            assert pa.material == pb.material and pa.source == pb.source
+            assert pa.material == pb.material and pa.source == pb.source and pa.visual == pb.visual
             for field in ("vertices", "faces", "normals", "uv"):
                 x, y = getattr(pa, field), getattr(pb, field)
                 assert (x is None and y is None) or np.array_equal(x, y)
@@ -65,3 +65,11 @@ def test_corrupt_entry_is_ignored(tmp_path: Path, examples_dir: Path) -> None:
 
 def test_no_cache_dir_means_plain_loading(examples_dir: Path) -> None:
     assert load_asset_cached(examples_dir / "oven", None).name == "oven"
+
+
+def test_parts_keep_their_urdf_visual_names(partnet: Path, tmp_path: Path) -> None:
+    """Interaction targets find handles by the URDF visual name; the cache keeps it."""
+    for asset in (load_asset(partnet / "storage_19179"), load_asset_cached(partnet / "storage_19179", tmp_path),
+                  load_asset_cached(partnet / "storage_19179", tmp_path)):
+        names = {part.visual for part in asset.links["link_0"].parts}
+        assert names == {"drawer_front-28", "handle-27"}

@@ -12,6 +12,8 @@ from app.engine.execute.executor import execute
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.glb import export_glb
 from app.engine.plan.schema import Plan
+from tests.support.export_runs import MotionCase
+from tests.support.export_runs import motion_cases as build_motion_cases
 from tests.support.glb_cases import (
     CASE_SPECS,
     SAFE_PLAN,
@@ -55,3 +57,8 @@ def tiny_asset() -> ArticulatedAsset:
 @pytest.fixture
 def tiny_trajectory() -> Trajectory:
     return build_tiny_trajectory()
+
+
+@pytest.fixture(scope="session")
+def motion_cases(partnet: Path, examples_dir: Path) -> dict[str, MotionCase]:
+    return build_motion_cases(partnet, examples_dir)

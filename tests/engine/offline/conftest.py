@@ -13,9 +13,9 @@ from app.engine.asset.loader import load_asset
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.config import EngineConfig
+from app.engine.contracts.causal import CausalDocument
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.roles import offline_roles
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from tests.conftest import EXAMPLES, partnet_root
 

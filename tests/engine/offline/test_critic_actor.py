@@ -16,7 +16,7 @@ from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.config import EngineConfig
 from app.engine.execute.executor import execute
 from app.engine.offline.critic import critique
-from app.engine.offline.perceiver import read_intent
+from app.engine.offline.perceiver import read_prompt
 from app.engine.offline.planner import plan_intent
 from app.engine.offline.roles import GeometricCritic, OfflinePerceiver
 from app.engine.plan.schema import Plan
@@ -25,7 +25,7 @@ from tests.engine.offline.conftest import asset
 
 def _setup(name: str, prompt: str) -> tuple[Any, Any, dict[str, Any]]:
     model = asset(name)
-    intent = read_intent(prompt, model)
+    intent = read_prompt(prompt, model).intent
     return model, intent, plan_intent(intent, model).model_dump(exclude_none=True)
 
 

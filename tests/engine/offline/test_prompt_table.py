@@ -18,6 +18,10 @@ from tests.engine.offline.conftest import animate, asset
 
 PI = math.pi
 TOLERANCE = 0.02
+BOX_100671_CLOSED = -0.3896
+BOX_102456_CLOSED = -0.7854
+SAFE_102387_CLOSED = -0.7854
+"""Closed ends (lower limits) of boxes that rest open: angles in prompts are measured from closed."""
 
 
 @dataclass(frozen=True)
@@ -77,6 +81,7 @@ ROWS: list[Row] = [
     R("trash_can_102181", "open the bin", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
     R("trash_can_102181", "open the lid by pressing the pedal", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
     R("trash_can_102181", "press the pedal, then release it", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),
+    # the lid opens in proportion to the pedal, up to upright: half of its 180-degree range is upright, a full press
     R("trash_can_102181", "use the pedal to open the lid halfway", joints={"joint_0": E(end="upper"), "joint_1": E(end=3.15416 / 2)}),
     # --- wheeled bin: lid, rolling ---
     R("trash_can_102155", "open the lid", joints={"joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
@@ -87,7 +92,8 @@ ROWS: list[Row] = [
     R("trash_can_102155", "drag the trash can 30 cm to the left", base=(0.0, 0.3, 0.0)),
     # --- safes: door, knobs ---
     R("safe_101593", "open the safe door", joints={"joint_0": E(end="upper")}),
-    R("safe_101593", "open the safe", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
+    # a door does not need its knobs turned because it has knobs (issue 10 §3: only latches hold a door shut)
+    R("safe_101593", "open the safe", joints={"joint_0": E(end="upper"), "joint_1": E(still=True), "joint_2": E(still=True)}),
     R("safe_101593", "rotate the left knob 90 degrees clockwise", joints={"joint_1": E(end=-PI / 2), "joint_2": E(still=True), "joint_0": E(still=True)}),
     R("safe_101593", "turn the right dial a quarter turn counterclockwise", joints={"joint_2": E(end=PI / 2), "joint_1": E(still=True)}),
     R("safe_101593", "spin the right knob two full turns", joints={"joint_2": E(abs_end=4 * PI), "joint_1": E(still=True)}),
@@ -286,7 +292,8 @@ ROWS: list[Row] = [
     R("storage_27044", "Pull the drawer all the way out, then slide it back halfway.", joints={"joint_0": E(end=0.5 * 0.684)}),
     R("dishwasher_11700", "Open the dishwasher door fully, then raise it back to 45 degrees.", joints={"joint_0": E(end=PI / 4)}),
     R("microwave_7304", "Open the door to 90 degrees and then close it back to 30 degrees.", joints={"joint_1": E(end=PI / 6)}),
-    R("box_102456", "Open the box lid fully, then let it fall back to 60 degrees.", joints={"joint_0": E(end=PI / 3)}),
+    # angles are measured from closed (the lid rests 45 degrees open; closed is the lower limit)
+    R("box_102456", "Open the box lid fully, then let it fall back to 60 degrees.", joints={"joint_0": E(end=BOX_102456_CLOSED + PI / 3)}),
     R("laptop_10101", "Push the laptop lid down until it is about 45 degrees from closed.", joints={"joint_1": E(end=-2.0923007 + PI / 4)}),
     R("dishwasher_11700", "Let the dishwasher door drop most of the way, to about 70 degrees.", joints={"joint_0": E(end=math.radians(70))}),
     R("oven_7138", "Let the oven door down all the way.", joints={"joint_0": E(end="upper")}),
@@ -297,7 +304,7 @@ ROWS: list[Row] = [
     R("bottle_cap_3558", "Give the bottle cap a quarter twist to loosen it.", joints={"joint_0": E(end=PI / 2)}),
     R("toaster_103498", "Push the toaster 20 cm along -Y.", base=(0.0, -0.2, 0.0)),
     R("toaster_103498", "Open the toaster.", refuse=True),
-    R("box_100671", "Lift the storage chest's lid until it stands about 110 degrees open.", joints={"joint_0": E(end=math.radians(110))}),
+    R("box_100671", "Lift the storage chest's lid until it stands about 110 degrees open.", joints={"joint_0": E(end=BOX_100671_CLOSED + math.radians(110))}),
     R("washing_machine_103508", "Turn the big dial 90 degrees, then each small knob 45 degrees.",
       joints={"joint_1": E(abs_end=PI / 2), "joint_2": E(abs_end=PI / 4), "joint_3": E(abs_end=PI / 4)}, order=(("joint_1", "joint_2"),)),
     R("washing_machine_103508", "Turn both small knobs 45 degrees.", joints={"joint_1": E(still=True), "joint_2": E(abs_end=PI / 4), "joint_3": E(abs_end=PI / 4)}),
@@ -307,7 +314,8 @@ ROWS: list[Row] = [
     R("refrigerator_11178", "Open both fridge doors fully, then close them back to 30 degrees.", joints={"joint_0": E(end=PI / 6), "joint_1": E(end=PI / 6)}),
     R("refrigerator_11178", "Swing the narrower fridge door open 100 degrees.", joints={"joint_0": E(end=math.radians(100)), "joint_1": E(still=True)}),
     R("refrigerator_11178", "Open the wider fridge door 90 degrees.", joints={"joint_1": E(end=PI / 2), "joint_0": E(still=True)}),
-    R("safe_102387", "Dial the combination, and the safe door opens 90 degrees.", joints={"joint_1": E(moves=True), "joint_0": E(end=PI / 2)}, order=(("joint_1", "joint_0"),)),
+    R("safe_102387", "Dial the combination, and the safe door opens 90 degrees.", joints={"joint_1": E(moves=True), "joint_0": E(end=SAFE_102387_CLOSED + PI / 2)},
+      order=(("joint_1", "joint_0"),)),
     R("safe_101564", "Key in the top-middle button; the door then unlocks and opens 45 degrees.", joints={"joint_13": E(end=PI / 4)}, order=(("joint_1", "joint_13"),)),
     R("trash_can_102181", "Step on the pad only a little so the lid opens about 30 degrees.", joints={"joint_0": E(end=0.2 * 0.5718), "joint_1": E(end=PI / 6)}),
     # --- a named part that is not there, or cannot move as asked, is refused ---
@@ -315,7 +323,8 @@ ROWS: list[Row] = [
     R("laptop_10101", "Eject the laptop's battery.", refuse=True),
     R("window_103135", "Slide the window sash sideways 20 cm.", refuse=True),
     # --- descriptions and references are not the target ---
-    R("refrigerator_11178", "Open the fridge door with the handle a third of the way.", joints={"joint_1": E(end=PI / 3), "joint_0": E(still=True)}),
+    # "with the handle" tells the two doors apart: only link_0's mesh has a handle
+    R("refrigerator_11178", "Open the fridge door with the handle a third of the way.", joints={"joint_0": E(end=PI / 3), "joint_1": E(still=True)}),
     R("coffee_machine_103030", "Lift the blender jar 3 cm out of its base.", joints={"joint_1": E(end=0.03), "joint_2": E(still=True)}),
     R("coffee_machine_103030", "Once the lid is lifted 20 cm off the jar, lift the jar 4 cm.", joints={"joint_2": E(end=0.2), "joint_1": E(end=0.04)},
       order=(("joint_2", "joint_1"),)),
@@ -328,7 +337,7 @@ ROWS: list[Row] = [
     R("examples/pedal_bin", "Lift the pedal bin 10 cm and set it back down.", base=(0.0, 0.0, 0.0)),
     R("examples/pedal_bin", "Lift the pedal bin 10 cm, then lower it 10 cm.", base=(0.0, 0.0, 0.0)),
     # --- which way a verb moves the part ---
-    R("box_100671", "Raise the chest lid 50 degrees.", joints={"joint_0": E(end=math.radians(50))}),
+    R("box_100671", "Raise the chest lid 50 degrees.", joints={"joint_0": E(end=BOX_100671_CLOSED + math.radians(50))}),
     R("stapler_103099", "Fold the stapler's top arm fully back.", joints={"joint_0": E(end="upper")}),
     R("bucket_102352", "Raise the bucket handle halfway to upright.", joints={"joint_0": E(end=4.71867216569187 / 4)}),
     # --- probe6 fixes ---

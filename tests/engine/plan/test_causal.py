@@ -8,8 +8,8 @@ from typing import Any
 import pytest
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import PlanValidationError
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.checks import validate_causal
 
 

@@ -6,6 +6,7 @@ from typing import Annotated, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
+from app.engine.contracts.steps import Extension
 from app.engine.errors import ExpressionError
 from app.engine.plan.expr import parse_expr, parse_velocity
 
@@ -127,6 +128,8 @@ class CausalDocument(_Strict):
     semantics: Semantics = Field(default_factory=Semantics)
     causal: Causal
     causal_segments: list[CausalSegment] | None = None
+    artimo: Extension | None = None
+    """Our extension block (:mod:`app.engine.contracts.steps`): the lossless step list the planners read."""
 
     def all_joint_targets(self) -> list[JointTarget]:
         """Joint targets of the top level and every segment, in order."""

@@ -1,0 +1,1 @@
+"""Interaction targets: what an external actor touches, where, and along which path."""

@@ -1,0 +1,228 @@
+"""Verb senses: what a verb does to a part or to the whole object — one entry per verb lemma.
+
+Verbs are grouped VerbNet-style by how they behave: the sense they carry on a part, how a
+particle changes it ("pull out", "push in", "swing shut"), what they mean when the whole
+object is the theme ("turn it around" is a yaw, "push the cart" moves it), what a bare use
+implies ("flush" works a flush lever), and which kind of motion they name (a hinge or a slide).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from enum import StrEnum
+from types import MappingProxyType
+from typing import Literal
+
+from app.engine.lexicon.kinds import PartKind
+
+
+class VerbSense(StrEnum):
+    OPEN = "open"
+    CLOSE = "close"
+    PRESS = "press"
+    RELEASE = "release"
+    PULL_OUT = "pull_out"
+    PUSH_IN = "push_in"
+    TURN = "turn"
+    SPIN = "spin"
+    RAISE = "raise"
+    LOWER = "lower"
+    TOGGLE = "toggle"
+    MOVE = "move"
+    YAW = "yaw"
+    UNLATCH = "unlatch"
+    LOCK = "lock"
+    OPERATE = "operate"
+    HOLD = "hold"
+    WAIT = "wait"
+    RECLINE = "recline"
+    SWITCH_ON = "switch_on"
+    SWITCH_OFF = "switch_off"
+    RETURN = "return"
+
+
+Motion = Literal["any", "hinge", "slide"]
+_NONE: Mapping[str, VerbSense] = MappingProxyType({})
+
+
+@dataclass(frozen=True)
+class VerbInfo:
+    lemma: str
+    sense: VerbSense
+    particles: Mapping[str, VerbSense] = field(default_factory=lambda: _NONE)
+    """A particle that changes the sense: "pull ... out" -> PULL_OUT, "swing ... shut" -> CLOSE."""
+    object_sense: VerbSense | None = None
+    """Sense when the whole object is the theme (``None``: the verb does not move whole objects)."""
+    displaces: bool = False
+    """A press-type verb that also carries a free object away ("push the box", "kick the bin")."""
+    motion: Motion = "any"
+    """The kind of motion the verb names: a hinge ("fold", "swing") or a straight slide ("slide")."""
+    implies: tuple[PartKind, ...] = ()
+    """Kinds a bare use works ("flush the toilet" -> its lever or button)."""
+    stative: bool = False
+    """Describes a state to keep ("hold", "keep", "leave"), not a motion."""
+
+
+def _p(**pairs: VerbSense) -> Mapping[str, VerbSense]:
+    return MappingProxyType(dict(pairs))
+
+
+S = VerbSense
+_OPENING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, up=S.RAISE, down=S.LOWER, back=S.RETURN, off=S.OPEN)
+_PUSHING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, **{"in": S.PUSH_IN}, down=S.PRESS, back=S.RETURN, up=S.RAISE, out=S.PULL_OUT)
+_PULLING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, down=S.LOWER, up=S.RAISE, back=S.RETURN, **{"in": S.PUSH_IN}, off=S.OPEN)
+_FOLDING = _p(open=S.OPEN, out=S.OPEN, up=S.RAISE, back=S.RECLINE, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, over=S.TOGGLE)
+_TURNING = _p(on=S.SWITCH_ON, off=S.SWITCH_OFF, back=S.RETURN, open=S.OPEN, shut=S.CLOSE, around=S.YAW, round=S.YAW)
+_RAISING = _p(open=S.OPEN, up=S.RAISE, off=S.OPEN, back=S.RETURN, out=S.PULL_OUT)
+_LOWERING = _p(down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE, back=S.RETURN, open=S.OPEN)
+
+_VERBS: tuple[VerbInfo, ...] = (
+    # open / close
+    VerbInfo("open", S.OPEN, _p(up=S.OPEN, back=S.RETURN, out=S.OPEN)),
+    VerbInfo("reopen", S.OPEN),
+    VerbInfo("unfold", S.OPEN, motion="hinge"),
+    VerbInfo("uncover", S.OPEN),
+    VerbInfo("close", S.CLOSE, _p(up=S.CLOSE, back=S.RETURN)),
+    VerbInfo("shut", S.CLOSE),
+    VerbInfo("seal", S.CLOSE),
+    VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE)),
+    VerbInfo("fold", S.CLOSE, _FOLDING, motion="hinge"),
+    VerbInfo("swing", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.OPEN, up=S.RAISE, down=S.LOWER, back=S.RETURN), motion="hinge"),
+    VerbInfo("flip", S.TOGGLE, _p(open=S.OPEN, up=S.OPEN, back=S.OPEN, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, on=S.SWITCH_ON, off=S.SWITCH_OFF), motion="hinge"),
+    VerbInfo("tilt", S.RAISE, _p(back=S.RECLINE, open=S.OPEN, up=S.RAISE, down=S.LOWER, forward=S.CLOSE), motion="hinge"),
+    VerbInfo("recline", S.RECLINE, motion="hinge"),
+    VerbInfo("lean", S.RECLINE, _p(back=S.RECLINE, forward=S.CLOSE), motion="hinge"),
+    VerbInfo("crack", S.OPEN, _p(open=S.OPEN)),
+    VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE)),
+    # press / release
+    VerbInfo("press", S.PRESS, _p(down=S.PRESS, **{"in": S.PRESS}, open=S.OPEN), displaces=False),
+    VerbInfo("depress", S.PRESS),
+    VerbInfo("push", S.PRESS, _PUSHING, object_sense=S.MOVE, displaces=True),
+    VerbInfo("step", S.PRESS, _p(on=S.PRESS, down=S.PRESS, off=S.RELEASE)),
+    VerbInfo("stomp", S.PRESS, _p(on=S.PRESS)),
+    VerbInfo("stamp", S.PRESS, _p(on=S.PRESS)),
+    VerbInfo("tap", S.PRESS),
+    VerbInfo("hit", S.PRESS, displaces=True, object_sense=S.MOVE),
+    VerbInfo("punch", S.PRESS, _p(**{"in": S.PRESS}), displaces=True, object_sense=S.MOVE),
+    VerbInfo("click", S.PRESS),
+    VerbInfo("squeeze", S.PRESS),
+    VerbInfo("pump", S.PRESS),
+    VerbInfo("type", S.PRESS, _p(**{"in": S.PRESS})),
+    VerbInfo("enter", S.PRESS, _p(**{"in": S.PRESS})),
+    VerbInfo("key", S.PRESS, _p(**{"in": S.PRESS})),
+    VerbInfo("dial", S.TURN, _p(**{"in": S.TURN}), implies=(PartKind.KNOB,)),
+    VerbInfo("release", S.RELEASE),
+    VerbInfo("come", S.MOVE, _p(off=S.RELEASE, away=S.RELEASE, out=S.PULL_OUT, open=S.OPEN, down=S.LOWER, up=S.RAISE, back=S.RETURN,
+                                  loose=S.OPEN, undone=S.OPEN)),
+    VerbInfo("let", S.RELEASE, _p(go=S.RELEASE, down=S.LOWER, up=S.RAISE, open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT,
+                                  back=S.RETURN)),
+    VerbInfo("spring", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, up=S.RAISE)),
+    VerbInfo("snap", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, shut=S.CLOSE)),
+    VerbInfo("bounce", S.RELEASE, _p(back=S.RELEASE)),
+    # slide in / out
+    VerbInfo("pull", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
+    VerbInfo("draw", S.PULL_OUT, _PULLING),
+    VerbInfo("extend", S.PULL_OUT),
+    VerbInfo("slide", S.PULL_OUT, _PULLING, object_sense=S.MOVE, motion="slide"),
+    VerbInfo("eject", S.PULL_OUT),
+    VerbInfo("take", S.PULL_OUT, _p(out=S.PULL_OUT, off=S.OPEN)),
+    VerbInfo("remove", S.PULL_OUT),
+    VerbInfo("retract", S.PUSH_IN),
+    VerbInfo("insert", S.PUSH_IN),
+    VerbInfo("tuck", S.PUSH_IN, _p(**{"in": S.PUSH_IN})),
+    VerbInfo("yank", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
+    VerbInfo("tug", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
+    # turn / spin
+    VerbInfo("turn", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("rotate", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("twist", S.TURN, _TURNING),
+    VerbInfo("crank", S.TURN),
+    VerbInfo("wind", S.TURN, _p(up=S.TURN)),
+    VerbInfo("set", S.TURN, _p(down=S.LOWER, back=S.RETURN)),
+    VerbInfo("swivel", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("pivot", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("spin", S.SPIN, _p(around=S.SPIN, round=S.SPIN), object_sense=S.YAW),
+    VerbInfo("revolve", S.SPIN),
+    VerbInfo("screw", S.TURN, _p(on=S.CLOSE, off=S.OPEN, down=S.CLOSE, shut=S.CLOSE)),
+    VerbInfo("unscrew", S.OPEN),
+    VerbInfo("loosen", S.OPEN),
+    VerbInfo("tighten", S.CLOSE),
+    VerbInfo("run", S.SPIN),
+    VerbInfo("start", S.SPIN),
+    # raise / lower
+    VerbInfo("lift", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("raise", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("hoist", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("elevate", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("pick", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("lower", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("drop", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("put", S.LOWER, _p(down=S.LOWER, back=S.RETURN, away=S.PUSH_IN, on=S.CLOSE), object_sense=S.MOVE),
+    VerbInfo("lay", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("place", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("fall", S.LOWER, _p(shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN, back=S.RETURN)),
+    VerbInfo("tip", S.LOWER, _p(over=S.TOGGLE, back=S.RECLINE, up=S.RAISE)),
+    # switches
+    VerbInfo("toggle", S.TOGGLE, _p(on=S.SWITCH_ON, off=S.SWITCH_OFF)),
+    VerbInfo("switch", S.TOGGLE, _p(on=S.SWITCH_ON, off=S.SWITCH_OFF)),
+    VerbInfo("flick", S.TOGGLE, _p(on=S.SWITCH_ON, off=S.SWITCH_OFF, up=S.RAISE, down=S.LOWER)),
+    VerbInfo("rock", S.TOGGLE, object_sense=S.MOVE),
+    VerbInfo("flush", S.PRESS, implies=(PartKind.LEVER, PartKind.BUTTON, PartKind.HANDLE)),
+    VerbInfo("toast", S.LOWER, implies=(PartKind.LEVER,)),
+    # whole-object motion
+    VerbInfo("move", S.MOVE, _p(back=S.RETURN), object_sense=S.MOVE),
+    VerbInfo("drag", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),
+    VerbInfo("nudge", S.MOVE, object_sense=S.MOVE, displaces=True),
+    VerbInfo("kick", S.MOVE, object_sense=S.MOVE, displaces=True),
+    VerbInfo("carry", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("transport", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("translate", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("shift", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("roll", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("wheel", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("drive", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("tow", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("haul", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("coast", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("scoot", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("relocate", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("reposition", S.MOVE, object_sense=S.MOVE),
+    # latches
+    VerbInfo("unlatch", S.UNLATCH),
+    VerbInfo("unlock", S.UNLATCH, implies=(PartKind.LATCH, PartKind.HANDLE, PartKind.KNOB)),
+    VerbInfo("unhook", S.UNLATCH),
+    VerbInfo("unbolt", S.UNLATCH),
+    VerbInfo("unclip", S.UNLATCH),
+    VerbInfo("unclasp", S.UNLATCH),
+    VerbInfo("free", S.UNLATCH),
+    VerbInfo("lock", S.LOCK),
+    VerbInfo("latch", S.LOCK),
+    # generic operation
+    VerbInfo("operate", S.OPERATE),
+    VerbInfo("use", S.OPERATE),
+    VerbInfo("activate", S.OPERATE),
+    VerbInfo("engage", S.OPERATE),
+    VerbInfo("trigger", S.OPERATE),
+    VerbInfo("work", S.OPERATE),
+    VerbInfo("actuate", S.OPERATE),
+    # states, time, returns
+    VerbInfo("hold", S.HOLD, _p(down=S.PRESS, open=S.HOLD, up=S.HOLD), stative=True),
+    VerbInfo("keep", S.HOLD, stative=True),
+    VerbInfo("leave", S.HOLD, stative=True),
+    VerbInfo("wait", S.WAIT, stative=True),
+    VerbInfo("pause", S.WAIT, stative=True),
+    VerbInfo("return", S.RETURN),
+    VerbInfo("restore", S.RETURN),
+    VerbInfo("reset", S.RETURN),
+)
+
+VERBS: Mapping[str, VerbInfo] = MappingProxyType({v.lemma: v for v in _VERBS})
+
+PARTICLES = frozenset({"out", "in", "open", "shut", "closed", "up", "down", "back", "away", "off", "on", "over", "around", "round", "go", "forward"})
+"""Words that may follow a verb and change its sense (``VerbInfo.particles``)."""
+
+
+def verb(lemma: str) -> VerbInfo | None:
+    return VERBS.get(lemma)

@@ -1,0 +1,180 @@
+"""Function words and quantity words: spatial qualifiers, ordinals, amounts, speeds, units,
+connectives, object nouns. Pure data; the front end's stages read it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from enum import StrEnum
+from types import MappingProxyType
+
+
+class Side(StrEnum):
+    TOP = "top"
+    BOTTOM = "bottom"
+    LEFT = "left"
+    RIGHT = "right"
+    FRONT = "front"
+    BACK = "back"
+    MIDDLE = "middle"
+    INNER = "inner"
+    OUTER = "outer"
+
+
+def _m(**pairs: object) -> Mapping[str, object]:
+    return MappingProxyType(dict(pairs))
+
+
+SPATIAL: Mapping[str, tuple[Side, bool]] = MappingProxyType({
+    # word -> (side, extreme: "the single most X one")
+    "top": (Side.TOP, False), "upper": (Side.TOP, False), "higher": (Side.TOP, False), "uppermost": (Side.TOP, True),
+    "topmost": (Side.TOP, True), "highest": (Side.TOP, True),
+    "bottom": (Side.BOTTOM, False), "lower": (Side.BOTTOM, False), "lowest": (Side.BOTTOM, True), "bottommost": (Side.BOTTOM, True),
+    "left": (Side.LEFT, False), "leftmost": (Side.LEFT, True), "left-hand": (Side.LEFT, False), "lefthand": (Side.LEFT, False),
+    "right": (Side.RIGHT, False), "rightmost": (Side.RIGHT, True), "right-hand": (Side.RIGHT, False), "righthand": (Side.RIGHT, False),
+    "front": (Side.FRONT, False), "frontmost": (Side.FRONT, True), "back": (Side.BACK, False), "rear": (Side.BACK, False),
+    "backmost": (Side.BACK, True), "rearmost": (Side.BACK, True),
+    "middle": (Side.MIDDLE, False), "center": (Side.MIDDLE, False), "centre": (Side.MIDDLE, False), "central": (Side.MIDDLE, False),
+    "inner": (Side.INNER, False), "inside": (Side.INNER, False), "internal": (Side.INNER, False), "outer": (Side.OUTER, False),
+    "outside": (Side.OUTER, False),
+})
+ORDINALS: Mapping[str, int] = MappingProxyType({
+    "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7, "eighth": 8, "ninth": 9, "tenth": 10,
+    "1st": 1, "2nd": 2, "3rd": 3, "4th": 4, "5th": 5, "6th": 6, "last": -1, "final": -1,
+})
+SIZES: Mapping[str, str] = MappingProxyType({
+    **dict.fromkeys(("large", "larger", "largest", "big", "bigger", "biggest", "main", "wide", "wider", "widest", "tall", "taller", "tallest",
+                     "long", "longer", "longest", "spoked", "huge", "giant"), "large"),
+    **dict.fromkeys(("small", "smaller", "smallest", "little", "tiny", "mini", "narrow", "narrower", "narrowest", "short", "shorter", "shortest"), "small"),
+})
+COLLECTIVE = frozenset({"both", "all", "every", "each"})
+DETERMINERS = frozenset({"the", "a", "an", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
+PRONOUNS = frozenset({"it", "them", "they", "itself"})
+OTHER_WORDS = frozenset({"other", "another", "remaining", "opposite"})
+NEGATIONS = frozenset({"not", "never", "don't", "dont", "without", "avoid", "except", "but", "cannot", "can't", "doesn't", "won't", "mustn't"})
+
+NUMBER_WORDS: Mapping[str, float] = MappingProxyType({
+    "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
+    "eleven": 11, "twelve": 12, "fifteen": 15, "twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60,
+    "seventy": 70, "eighty": 80, "ninety": 90, "hundred": 100, "forty-five": 45, "fortyfive": 45, "a hundred": 100,
+    "one hundred": 100, "hundred and twenty": 120, "one hundred and twenty": 120, "a hundred and twenty": 120,
+    "one hundred and eighty": 180, "a hundred and eighty": 180, "hundred and eighty": 180, "one hundred and thirty-five": 135,
+    "twenty-five": 25, "thirty-five": 35, "forty-five degrees": 45, "seventy-five": 75, "eighty-five": 85, "sixty-five": 65,
+})
+MULTIPLIERS: Mapping[str, float] = MappingProxyType({"once": 1, "twice": 2, "thrice": 3})
+
+AMOUNTS: Mapping[str, float] = MappingProxyType({
+    # fraction of the closed -> open (or rest -> far limit) range
+    "fully": 1.0, "completely": 1.0, "all the way": 1.0, "wide": 1.0, "wide open": 1.0, "entirely": 1.0, "totally": 1.0,
+    "full": 1.0, "maximum": 1.0, "max": 1.0, "as far as it goes": 1.0, "as far as possible": 1.0, "as far as it will go": 1.0,
+    "to the limit": 1.0, "to the end": 1.0, "all the way open": 1.0,
+    "halfway": 0.5, "half way": 0.5, "half-way": 0.5, "half": 0.5, "midway": 0.5, "partway": 0.5, "part way": 0.5, "half open": 0.5,
+    "partly": 0.3, "partially": 0.3, "a bit": 0.25, "a little": 0.2, "a little bit": 0.2, "somewhat": 0.3, "ajar": 0.25,
+    "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "a few": 0.25, "a tad": 0.15,
+    "mostly": 0.75, "most of the way": 0.75, "three quarters": 0.75, "three-quarters": 0.75, "a third": 1 / 3, "one third": 1 / 3,
+    "two thirds": 2 / 3, "two-thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
+    "a third of the way": 1 / 3, "as far as": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+})
+LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
+                           "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
+"""Amounts that are a reading of a vague word (the explanation warns about them)."""
+SPEEDS: Mapping[str, float] = MappingProxyType({
+    # duration multiplier
+    "slowly": 2.0, "slow": 2.0, "gently": 1.5, "carefully": 1.5, "gradually": 2.0, "leisurely": 2.0, "softly": 1.5,
+    "quickly": 0.5, "fast": 0.5, "rapidly": 0.5, "swiftly": 0.5, "briskly": 0.6, "suddenly": 0.4, "quick": 0.5,
+    "abruptly": 0.4, "vigorously": 0.5, "hard": 0.7, "firmly": 0.9, "smoothly": 1.2, "sharply": 0.5,
+})
+ROTATION_SENSE: Mapping[str, str] = MappingProxyType({
+    "clockwise": "cw", "cw": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw",
+    "anti-clockwise": "ccw", "ccw": "ccw", "widdershins": "ccw",
+})
+DIRECTIONS: Mapping[str, str] = MappingProxyType({
+    "forward": "forward", "forwards": "forward", "ahead": "forward", "frontward": "forward", "frontwards": "forward",
+    "backward": "backward", "backwards": "backward", "rearward": "backward", "rearwards": "backward",
+    "leftward": "left", "leftwards": "left", "rightward": "right", "rightwards": "right", "sideways": "sideways",
+    "upward": "up", "upwards": "up", "downward": "down", "downwards": "down", "aside": "sideways",
+})
+LENGTH_UNITS: Mapping[str, float] = MappingProxyType({
+    "mm": 1e-3, "millimeter": 1e-3, "millimetre": 1e-3, "cm": 1e-2, "centimeter": 1e-2, "centimetre": 1e-2,
+    "m": 1.0, "meter": 1.0, "metre": 1.0, "in": 0.0254, "inch": 0.0254, "ft": 0.3048, "foot": 0.3048, "feet": 0.3048,
+})
+ANGLE_UNITS: Mapping[str, float] = MappingProxyType({"degree": 0.017453292519943295, "deg": 0.017453292519943295, "°": 0.017453292519943295,
+                                                      "radian": 1.0, "rad": 1.0})
+TURN_UNITS: Mapping[str, float] = MappingProxyType({"turn": 1.0, "revolution": 1.0, "rotation": 1.0, "spin": 1.0, "twist": 1.0})
+TIME_UNITS: Mapping[str, float] = MappingProxyType({"s": 1.0, "sec": 1.0, "second": 1.0, "ms": 1e-3, "millisecond": 1e-3, "minute": 60.0, "min": 60.0})
+RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
+    # unit phrase -> (quantity, factor to SI)
+    "rad/s": ("omega", 1.0), "rad per second": ("omega", 1.0), "radians per second": ("omega", 1.0), "radps": ("omega", 1.0),
+    "rpm": ("omega", 0.10471975511965977), "revolutions per minute": ("omega", 0.10471975511965977),
+    "deg/s": ("omega", 0.017453292519943295), "degrees per second": ("omega", 0.017453292519943295),
+    "m/s": ("speed", 1.0), "meters per second": ("speed", 1.0), "metres per second": ("speed", 1.0), "cm/s": ("speed", 0.01),
+})
+STATES: Mapping[str, str] = MappingProxyType({
+    # adjectives / particles naming an end state
+    "open": "open", "opened": "open", "shut": "closed", "closed": "closed", "up": "up", "down": "down",
+    "vertical": "vertical", "vertically": "vertical", "upright": "vertical", "perpendicular": "vertical", "straight up": "vertical",
+    "flat": "flat", "horizontal": "flat", "horizontally": "flat", "level": "flat",
+    "on": "on", "off": "off", "pressed": "pressed", "down position": "down", "in": "in", "out": "out",
+})
+
+# clause connectives (single words; multi-word ones are joined by the normaliser first)
+SEQUENCE = frozenset({"then", "afterwards", "afterward", "next", "finally", "later", "subsequently", "thereafter", "after_that",
+                      "and_then", "once_done", "when_done", "after_which", "followed_by", "and_after_that", "and_finally", "lastly",
+                      "after_it", "after_this", "once_it_is_done", "once_that_is_done", "when_that_is_done"})
+PARALLEL = frozenset({"while", "whilst", "as", "simultaneously", "at_the_same_time", "meanwhile", "together_with", "along_with",
+                      "at_once"})
+SIMULTANEOUS = frozenset({"simultaneously", "at_the_same_time", "together", "at_once", "in_parallel", "in_unison", "both_at_once"})
+BEFORE = frozenset({"before"})
+AFTER = frozenset({"after", "once", "when"})
+PURPOSE = frozenset({"to", "in_order_to", "so_as_to"})
+RESULT = frozenset({"so", "so_that", "which", "making", "causing", "until"})
+MEANS = frozenset({"by"})
+INSTRUMENT = frozenset({"with", "using", "via", "through"})
+HOLD_WORDS = frozenset({"keep", "hold", "leave", "stay", "remain"})
+
+MULTIWORD: tuple[str, ...] = (
+    # joined into one token ("at_the_same_time"), longest first
+    "at the same time as", "at the same time", "in order to", "after it", "after this", "once it is done", "once that is done",
+    "when that is done", "so as to", "so that", "after that", "and then", "and after that",
+    "and finally", "once done", "when done", "after which", "followed by", "all the way", "as far as it will go", "as far as it goes",
+    "as far as possible", "most of the way", "a little bit", "a little", "a bit", "a tad", "just a crack", "a crack", "half way",
+    "part way", "three quarters", "a quarter of the way", "a third of the way", "a quarter", "a third", "one third", "two thirds",
+    "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
+    "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
+    "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of",
+    "on top of", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
+    "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
+    "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
+    "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
+)
+
+OBJECT_NOUNS: tuple[str, ...] = (
+    # what a user may call the whole object
+    "object", "thing", "whole", "entire", "unit", "item", "appliance", "furniture", "model", "asset",
+    "bin", "trash", "trashcan", "can", "dustbin", "garbage", "car", "toy", "cart", "trolley", "vehicle",
+    "suitcase", "luggage", "box", "bucket", "pail", "safe", "vault", "microwave", "oven", "stove", "fridge", "refrigerator", "freezer",
+    "cabinet", "cupboard", "dresser", "wardrobe", "storage", "toaster", "laptop", "computer", "notebook", "macbook", "stapler",
+    "faucet", "tap", "washer", "dishwasher", "machine", "toilet", "kettle", "pot", "saucepan", "bottle", "chest", "crate", "table",
+    "chair", "briefcase", "nightstand", "bedside", "locker", "wheelie", "dumpster", "device", "cooker", "sink", "bag", "handbag",
+    "purse", "stroller", "pram", "wagon", "buggy", "robot", "truck", "bus", "bookcase", "desk", "crib", "bureau",
+    "sideboard", "credenza", "armoire", "tallboy", "commode", "strongbox", "lockbox", "tote", "blender", "chest_of_drawers",
+    "bank_of_drawers", "set_of_drawers",
+    "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
+)
+FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
+                     "only"})
+"""Words that may open a clause before its verb."""
+RELEASE_NAME_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock", "lid", "pop"})
+"""Words in a button's own name that say it releases a door or lid."""
+BUTTON_RELEASED_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice"})
+"""Kinds of object whose only door or lid a (any) button releases."""
+OPERATED_OBJECTS = frozenset({"tap", "faucet", "valve", "mixer", "switch", "spigot"})
+"""Objects that are themselves controls: "turn the tap" works its handle, it does not yaw the object."""
+CAUSATIVES = frozenset({"let", "make", "have", "get", "allow", "watch", "see"})
+"""Verbs whose object does the inner verb on its own ("let the lid drop", "make the tray rotate")."""
+LIGHT_VERBS = frozenset({"give"})
+"""Verbs whose deverbal object is the real action ("give the car a push")."""
+STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stand", "stands", "standing",
+                           "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
+                           "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks"})
+"""Verbs of state: a clause built on one describes where a part is, it does not move it."""

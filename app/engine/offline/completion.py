@@ -1,0 +1,274 @@
+"""Causal completion of one act: what the object's mechanism adds to what the user said.
+
+Small rules, each asking the registry through :mod:`.mechanisms`:
+
+- stated results ("so the door pops open", "the lid lifts 40 degrees") refine or add effects;
+- "unlatch the door" works its latch, not the door;
+- a part opened without its control gets the control its mechanism needs (a pedal bin's pedal);
+- a control worked alone gets the effect it drives (the lid a pedal lifts);
+- a closed hinged part opens after its latch;
+- a part blocked by a closed one opens it first (the oven door before the tray);
+- controls spring back, stay, or stay held while their effect lasts; releasing a holding
+  control lets what it held fall back; releasing a control pressed earlier holds it until then.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from app.engine.contracts.steps import Goal, Why
+from app.engine.errors import GroundingError
+from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline import mechanisms as mech
+from app.engine.offline.goals import goal_for
+from app.engine.offline.reading.acts import Act
+from app.engine.offline.reading.frames import Frame
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder, _Move
+    from app.engine.offline.grounding import Part
+
+_OPENING_STATES = frozenset({"open", "up", "vertical"})
+_NOTHING = Frame(clause=-1, text="", verb=None, sense=None)
+
+
+def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move], effects: list[_Move], why: Why) -> None:
+    from app.engine.offline.builder import _Move
+
+    unlatched: list[_Move] = []
+    if sense is VerbSense.UNLATCH:
+        unlatched = [m for m in effects if m.part.kind in HINGED_KINDS]
+        controls, effects = _unlatch(builder, act, controls, effects)
+        if not controls and not effects and not act.results:
+            return
+    effects = _results(builder, act, controls, effects, [m.part for m in unlatched])
+    direct_controls = [m for m in effects if m.role == "control"]
+    if not controls and direct_controls:
+        controls = direct_controls
+        effects = [m for m in effects if m.role != "control"]
+    opening = [m for m in effects if m.goal.state in _OPENING_STATES]
+    notes: dict[str, str] = {}
+    manual = builder.manual or act.goal.manual or (act.means is not None and act.means.manual)
+    if not controls and opening and not manual and sense is not VerbSense.RECLINE:
+        for move in opening:
+            for control in mech.controls_for(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
+                controls.append(_Move(control, "control", goal_for(_NOTHING, VerbSense.PRESS, control, builder.tracker).goal, words=""))
+                notes[control.joint] = f"{_kind(control)} ({control.joint}) opens the {_kind(move.part)}"
+                builder.mentioned.add(control.joint)
+    if controls and not effects and sense in (VerbSense.PRESS, VerbSense.OPERATE, VerbSense.HOLD, VerbSense.PUSH_IN, VerbSense.TOGGLE):
+        for worked in list(controls):
+            for effect in mech.effects_of(worked.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
+                effects.append(_Move(effect, "effect", goal_for(_NOTHING, VerbSense.OPEN, effect, builder.tracker).goal, words=""))
+                notes[effect.joint] = f"the {_kind(worked.part)} ({worked.part.joint}) drives it"
+                builder.mentioned.add(effect.joint)
+    effects = [replace(m, role="effect") if controls else m for m in effects]
+    if sense in _OPEN_SENSES and not manual:
+        latches = _latches(builder, effects)
+        for latch in latches:
+            notes[latch.part.joint] = f"the {_kind(latch.part)} ({latch.part.joint}) holds it shut"
+        controls = latches + controls
+        if latches:
+            effects = [replace(m, role="effect") for m in effects]
+    controls, effects, coupled = mech.couple(controls, effects, builder.tracker)
+    if coupled:
+        builder.notes.append(coupled)
+    _prerequisites(builder, act, effects + [m for m in controls if m.role == "direct"])
+    controls = _releases(builder, act, sense, controls, effects)
+    if sense is VerbSense.RELEASE:
+        effects = effects + _let_fall(builder, controls)
+    original_controls = list(controls)
+    controls = [m for m in controls if not builder._reached(m) or m.release == "held"]
+    kept = []
+    for move in effects:
+        if builder._reached(move):
+            builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {move.goal.state}")
+            continue
+        kept.append(move)
+    if not controls and not kept and (effects or original_controls):
+        kept, controls = effects, original_controls  # nothing left to do: a still step keeps the contract honest (the note says why)
+    if not controls and not kept:
+        return
+    if not controls and why == "asked" and _joins_unlatch(builder, act, kept):
+        _merge_into_last(builder, kept)
+        builder.refs.remember([m.part for m in kept], [])
+        return
+    builder._append(act, sense, controls, kept, why=why)
+    builder.explanation.because(notes)
+    builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or [m.part for m in controls], [m.part for m in controls])
+
+
+_OPEN_SENSES = frozenset({VerbSense.OPEN, VerbSense.PULL_OUT, VerbSense.RAISE, VerbSense.OPERATE, VerbSense.MOVE})
+
+
+def _kind(part: object) -> str:
+    kind = getattr(part, "kind", None)
+    return kind.value if kind is not None else "part"
+
+
+def _joins_unlatch(builder: Builder, act: Act, effects: list[_Move]) -> bool:
+    """"Turn the latch, then open the door": the door's opening is the latch's effect, one causal step
+    (the latch springs back while the door swings)."""
+    if not builder.steps or act.parallel or act.wait_before_s:
+        return False
+    last = builder.steps[-1]
+    if last.effects or last.base is not None or not last.controls or last.hold_s:
+        return False
+    asset = builder.asset
+    controls = [next(p for p in builder.parts if p.joint == m.joint) for m in last.controls]
+    if not all(p.kind is not None and (info(p.kind).latches_host or info(p.kind).press == "turn" or p.kind is PartKind.HANDLE) for p in controls):
+        return False
+    return all(m.part.kind in HINGED_KINDS and m.goal.state in _OPENING_STATES for m in effects) and all(
+        any(c.link in asset.descendants(m.part.link) for m in effects) for c in controls)
+
+
+def _merge_into_last(builder: Builder, effects: list[_Move]) -> None:
+    last = builder.steps[-1]
+    moves = [builder._joint_move(replace(m, role="effect")) for m in effects]
+    builder.steps[-1] = last.model_copy(update={"effects": [*last.effects, *moves]})
+    _replay(builder)
+
+
+def _results(builder: Builder, act: Act, controls: list[_Move], effects: list[_Move], implicit: list[Part]) -> list[_Move]:
+    """Stated results refine the amount of an effect already there, or add the effect (``implicit``: what
+    a subjectless result is about, e.g. the door an unlatching freed)."""
+    from app.engine.offline.builder import _Move
+
+    out = list(effects)
+    for frame in act.results:
+        sense = frame.sense or act.goal.sense or VerbSense.OPEN
+        if sense is VerbSense.UNLATCH:
+            continue  # "... so the door unlocks": no motion of its own
+        themes = tuple(m for m in frame.themes if not m.pronoun)
+        current = [m.part for m in out] or implicit or [m.part for m in controls]
+        try:
+            parts, words = builder._ground(frame, sense, themes) if themes else (current or builder.refs.pronoun(), [])
+        except GroundingError:
+            if not themes:
+                raise
+            parts, words = [], []
+        if not parts and not themes and not out:
+            continue
+        for index, part in enumerate(parts):
+            if sense in (VerbSense.RELEASE, VerbSense.RETURN) and mech.is_control(part):
+                continue  # "... and the button pops back out": it springs back anyway
+            goal = goal_for(frame, sense, part, builder.tracker).goal
+            existing = next((i for i, m in enumerate(out) if m.part.joint == part.joint), None)
+            loose = frame.quantities.amount is not None and frame.quantities.amount.loose
+            if existing is not None:
+                out[existing] = replace(out[existing], goal=goal, loose=loose)
+            elif part.joint not in {m.part.joint for m in controls}:
+                said = words[index] if index < len(words) else part.link
+                out.append(_Move(part, "effect" if controls else "direct", goal, words=said, loose=loose))
+                builder.mentioned.add(part.joint)
+    return out
+
+
+def _unlatch(builder: Builder, act: Act, controls: list[_Move], effects: list[_Move]) -> tuple[list[_Move], list[_Move]]:
+    """"unlatch the door": the door's latch (or handle) moves, the door does not."""
+    from app.engine.offline.builder import _Move
+
+    hinged = [m for m in effects if m.part.kind in HINGED_KINDS]
+    others = [m for m in effects if m.part.kind not in HINGED_KINDS]
+    if not hinged or controls:
+        return controls, others if controls else effects
+    found: list[_Move] = []
+    for move in hinged:
+        latches = mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded) or [
+            p for p in builder.parts if mech.is_control(p) and p.link in builder.asset.descendants(move.part.link)]
+        for latch in latches[:1]:
+            found.append(_Move(latch, "control", goal_for(act.goal, VerbSense.UNLATCH, latch, builder.tracker).goal, words=move.words))
+            builder.mentioned.add(latch.joint)
+    if not found and builder.steps and builder.steps[-1].controls:
+        builder.notes.append(f"read '{act.goal.text}' as the effect of the control worked before")
+        builder.refs.remember([m.part for m in hinged], [])
+        return [], []
+    if not found:
+        raise builder.refs.refuse(f"'{act.goal.text}': nothing on the {_kind(hinged[0].part)} holds it shut")
+    builder.refs.remember([m.part for m in hinged], [m.part for m in found])
+    return found, others
+
+
+def _latches(builder: Builder, effects: list[_Move]) -> list[_Move]:
+    from app.engine.offline.builder import _Move
+
+    out: list[_Move] = []
+    for move in effects:
+        if move.goal.state not in _OPENING_STATES:
+            continue
+        for latch in mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
+            out.append(_Move(latch, "control", goal_for(_NOTHING, VerbSense.UNLATCH, latch, builder.tracker).goal, words=""))
+            builder.mentioned.add(latch.joint)
+    return out
+
+
+def _prerequisites(builder: Builder, act: Act, moves: list[_Move]) -> None:
+    """Open what stands in the way first (the door before the tray)."""
+    from app.engine.offline.builder import _Move
+    from app.engine.offline.resolve import resolve
+
+    for move in moves:
+        if move.part.joint in builder.tracker.before:
+            continue
+        target = resolve(move.goal, move.part.geometry, builder.tracker.obj, builder.asset, builder.tracker.value(move.part.joint)).value
+        if target is None:
+            continue
+        for blocker in mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded):
+            builder.mentioned.add(blocker.joint)
+            opening = _Move(blocker, "direct", goal_for(_NOTHING, VerbSense.OPEN, blocker, builder.tracker).goal, words="")
+            latches = _latches(builder, [opening])
+            if latches:
+                opening = replace(opening, role="effect")
+            latches = _releases(builder, act, VerbSense.OPEN, latches, [opening])
+            builder._append(replace(act, means=None, hold_s=0.0, wait_before_s=act.wait_before_s), VerbSense.OPEN, latches, [opening],
+                            why="prerequisite", parallel=False)
+            builder.explanation.because({blocker.joint: f"{blocker.link} must be open before {move.part.link} can move"})
+            builder.notes.append(f"opened {blocker.link} first: it blocks {move.part.link}")
+
+
+def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[_Move], effects: list[_Move]) -> list[_Move]:
+    """What each control does after its actuation."""
+    held = act.goal.hold or sense is VerbSense.HOLD
+    out = []
+    for move in controls:
+        if sense is VerbSense.RELEASE:
+            _hold_until_now(builder, move.part.joint)
+            out.append(replace(move, release="stays"))
+            continue
+        if mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
+            out.append(replace(move, release="held"))
+        elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat"):
+            out.append(replace(move, release="self_return"))
+        else:
+            out.append(replace(move, release="stays"))
+    return out
+
+
+def _hold_until_now(builder: Builder, joint: str) -> None:
+    """"Press the button, then release it": the earlier press is held until this release."""
+    for index, step in enumerate(builder.steps):
+        moves = [m.model_copy(update={"release": "stays"}) if m.joint == joint and m.release == "self_return" else m for m in step.controls]
+        if moves != list(step.controls):
+            builder.steps[index] = step.model_copy(update={"controls": moves})
+            _replay(builder)
+
+
+def _replay(builder: Builder) -> None:
+    from app.engine.offline.tracker import Tracker
+
+    builder.tracker = Tracker.of(builder.asset)
+    for step in builder.steps:
+        builder.tracker.apply(step)
+
+
+def _let_fall(builder: Builder, controls: list[_Move]) -> list[_Move]:
+    """Letting go of a holding control lets what it held return (a pedal's lid falls shut)."""
+    from app.engine.offline.builder import _Move
+
+    out = []
+    for effect_joint, control_joint in list(builder.tracker.held.items()):
+        if any(m.part.joint == control_joint for m in controls):
+            part = next(p for p in builder.parts if p.joint == effect_joint)
+            out.append(_Move(part, "effect", Goal(state="previous"), words=""))
+    return out

@@ -1,0 +1,170 @@
+"""A frame's verb sense, end state and amount applied to one part -> a contract :class:`Goal`.
+
+The sense table (:mod:`app.engine.lexicon.senses`) gives the end state for the part's class;
+the frame's words refine it (a rotation sense, a direction, an orientation, "back"), and the
+amount gets what it is measured from: the closed end for openings ("to 90 degrees",
+"halfway"), the current value for increments, closings and turns.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+from app.engine.contracts.steps import Goal, GoalState, MeasuredFrom
+from app.engine.lexicon.kinds import PartKind, info
+from app.engine.lexicon.senses import CLOSING_STATES, END_STATE, PartClass, part_class
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.grounding import Part
+from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.quantities import Amount
+from app.engine.offline.resolve import closed_of, resolve, spin_velocity
+from app.engine.offline.tracker import Tracker
+
+SCREW_AXIS_MIN_UP = 0.7
+"""|axis . up| above this: a lid turning about a vertical axis is a screw cap."""
+DEFAULT_UNSCREW_RAD = 2 * math.pi
+LIMIT_EPS = 1e-9
+_DIRECTIONAL = frozenset({"left", "right", "forward", "backward"})
+_RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former"})
+_FLIPPABLE = frozenset({VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE, VerbSense.SWITCH_ON, VerbSense.UNLATCH, VerbSense.PRESS})
+"""Senses whose turn direction is a default: a part that cannot turn that way turns the other way."""
+
+
+@dataclass(frozen=True)
+class GoalChoice:
+    goal: Goal
+    notes: tuple[str, ...] = ()
+
+
+def is_screw_cap(part: Part, tracker: Tracker) -> bool:
+    """A lid or cap with no open side that turns about the vertical: opening it means unscrewing."""
+    geometry = part.geometry
+    kind_ok = part.kind in (PartKind.CAP, PartKind.LID)
+    return (kind_ok and geometry.open_value is None and geometry.type in ("revolute", "continuous")
+            and abs(float(geometry.axis_world @ tracker.obj.up)) > SCREW_AXIS_MIN_UP)
+
+
+def _class(part: Part) -> PartClass:
+    if part.kind is None:
+        return PartClass.OPENABLE if part.geometry.open_value is not None else PartClass.OTHER
+    return part_class(info(part.kind))
+
+
+def _amount(amount: Amount | None) -> tuple[float | None, str | None]:
+    if amount is None:
+        return None, None
+    return amount.value, amount.unit
+
+
+def _default_from(state: GoalState, sense: VerbSense) -> MeasuredFrom:
+    if sense is VerbSense.RECLINE or state in CLOSING_STATES or state in ("cw", "ccw", "toward") or state in _DIRECTIONAL:
+        return "current"
+    if state in ("pressed", "up", "down", "vertical", "flat"):
+        return "current"
+    return "closed"
+
+
+def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalState:
+    """The end state ``sense`` asks of ``part``, refined by the frame's words."""
+    quantities = frame.quantities
+    geometry = part.geometry
+    rotates = geometry.type in ("revolute", "continuous")
+    absolute = quantities.amount is not None and quantities.amount.reference == "closed"
+    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS):
+        return "previous" if part.joint in tracker.before else "rest"
+    if frame.returning and absolute:
+        return "open"  # "let it fall back to 60 degrees": a position measured from closed
+    if sense is VerbSense.SWITCH_OFF:
+        return "rest"
+    if sense is VerbSense.SWITCH_ON and rotates:
+        return "cw"
+    if quantities.orientation is not None and rotates and sense is not VerbSense.SPIN:
+        return "vertical" if quantities.orientation == "vertical" else "flat"
+    if is_screw_cap(part, tracker) and sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.TURN) and quantities.sense is None:
+        return "ccw" if sense is VerbSense.OPEN else "cw"
+    if quantities.sense is not None and rotates:
+        return "cw" if quantities.sense == "cw" else "ccw"
+    part_class_ = _class(part)
+    if quantities.axis is None and quantities.direction == "backward" and part_class_ is PartClass.OPENABLE and sense in (
+            VerbSense.PRESS, VerbSense.MOVE, VerbSense.PUSH_IN, VerbSense.RETURN):
+        return "closed"  # "push it back 10 cm": toward closed, from where it is
+    if quantities.axis is not None and sense is not VerbSense.SPIN and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None):
+        return "toward"  # "swing the handle down onto the rim on the -X side"
+    rolls = part.kind is not None and info(part.kind).rolls
+    if quantities.direction in _DIRECTIONAL and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None) and not (
+            part_class_ is PartClass.PUSHED and geometry.type == "prismatic"):
+        return quantities.direction  # type: ignore[return-value]
+    if rolls and sense in (VerbSense.TURN, VerbSense.OPERATE, VerbSense.MOVE):
+        return "forward"  # a wheel turned without a sense turns the way it rolls forward
+    if part_class_ is PartClass.OPENABLE and sense in (VerbSense.RAISE, VerbSense.LOWER):
+        lid = part.kind is not None and info(part.kind).lid_like
+        if not lid and geometry.up_value is not None and geometry.down_value is not None and geometry.open_value is not None:
+            return "up" if sense is VerbSense.RAISE else "down"  # an oven door lowers open, a lid lifts open
+    state = END_STATE[sense][part_class_]
+    if state == "open" and geometry.open_value is None and part_class_ is PartClass.OPENABLE and geometry.up_value is not None and sense is VerbSense.RAISE:
+        return "up"
+    if sense is VerbSense.RAISE and part_class_ is not PartClass.OPENABLE and geometry.up_value is None:
+        return "pressed"
+    if sense is VerbSense.LOWER and part_class_ is not PartClass.OPENABLE and geometry.down_value is None:
+        return "pressed"
+    if state == "cw" and not rotates:
+        return "pressed"
+    return state
+
+
+def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalChoice:
+    """The goal of ``sense`` (from ``frame``) on ``part``."""
+    quantities = frame.quantities
+    geometry = part.geometry
+    spin = sense is VerbSense.SPIN or (geometry.type == "continuous" and sense in (VerbSense.TURN, VerbSense.OPERATE)
+                                       and (quantities.omega_radps is not None or quantities.duration_s is not None) and quantities.amount is None)
+    if spin and geometry.type in ("continuous", "revolute"):
+        angle = quantities.amount.value if quantities.amount is not None and quantities.amount.unit == "rad" else None
+        omega, duration = spin_velocity(geometry, quantities.sense, tracker.obj, angle, quantities.omega_radps, quantities.duration_s,
+                                        quantities.speed_factor, quantities.direction)
+        if geometry.type == "continuous":
+            return GoalChoice(Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9)))
+    state = state_for(frame, sense, part, tracker)
+    value, unit = _amount(quantities.amount)
+    if value is not None and unit == "m" and geometry.type != "prismatic":
+        value, unit = None, None
+    if value is not None and unit == "rad" and geometry.type == "prismatic":
+        value, unit = None, None
+    notes: list[str] = []
+    if is_screw_cap(part, tracker) and state in ("cw", "ccw") and value is None and geometry.type == "continuous":
+        value, unit = DEFAULT_UNSCREW_RAD, "rad"
+    if value is None and quantities.times > 1 and sense in (VerbSense.TURN, VerbSense.SPIN) and geometry.type in ("revolute", "continuous"):
+        value, unit = quantities.times * 2 * math.pi, "rad"  # "rotate it twice"
+    if state in ("cw", "ccw") and quantities.sense is None and value is None and geometry.type != "continuous" and sense in _FLIPPABLE:
+        ahead = resolve(Goal(state=state), geometry, tracker.obj, tracker.asset, tracker.value(part.joint)).value
+        if ahead is not None and abs(ahead - tracker.value(part.joint)) < LIMIT_EPS:
+            state = "ccw" if state == "cw" else "cw"  # it only turns the other way
+    reference = quantities.amount.reference if quantities.amount is not None else None
+    measured: MeasuredFrom = reference or _default_from(state, sense)
+    if state == "closed" and unit == "fraction" and value is not None and value >= 1.0:
+        value, unit = None, None
+    if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):
+        measured = "current"
+    goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
+                direction_world=quantities.axis if state == "toward" else None)
+    if state == "open" and unit in ("rad", "m") and reference is None:
+        goal, note = _opening_amount(goal, part, tracker)
+        notes.extend(note)
+    return GoalChoice(goal, tuple(notes))
+
+
+def _opening_amount(goal: Goal, part: Part, tracker: Tracker) -> tuple[Goal, list[str]]:
+    """"Open it 20 degrees" is an opening measured from closed — unless the part is already open
+    further than that, when it can only mean 20 degrees more (said in a note)."""
+    geometry = part.geometry
+    now = tracker.value(part.joint)
+    absolute = resolve(goal, geometry, tracker.obj, tracker.asset, now).value
+    closed = closed_of(geometry)
+    if absolute is None or geometry.open_value is None:
+        return goal, []
+    opening = 1.0 if geometry.open_value >= closed else -1.0
+    if (absolute - now) * opening < -LIMIT_EPS:
+        relative = Goal(state=goal.state, amount=goal.amount, unit=goal.unit, measured_from="current")
+        return relative, [f"{part.link} is already open past that amount: opened it that much further"]
+    return goal, []

@@ -1,0 +1,112 @@
+"""Frames -> :class:`Act` list in execution order: a goal with the means that achieves it,
+waits and holds attached to their neighbours, conditions as states to reach first,
+negations as exclusions, verbs carried into verbless clauses ("then the right door").
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.reading.clauses import Link
+from app.engine.offline.reading.frames import Frame
+
+DEFAULT_WAIT_S = 1.0
+
+
+@dataclass(frozen=True)
+class Act:
+    goal: Frame
+    means: Frame | None = None
+    parallel: bool = False
+    conjoined: bool = False
+    wait_before_s: float = 0.0
+    hold_s: float = 0.0
+    condition: bool = False
+    """A state to reach first ("while the door is open"): skipped when it already holds."""
+    results: tuple[Frame, ...] = ()
+    """What the user says the act causes ("so the door pops open"): refines or adds its effects."""
+    exclusions: tuple[Frame, ...] = ()
+    """What the user says not to do ("without touching the knob")."""
+
+    @property
+    def frames(self) -> tuple[Frame, ...]:
+        return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
+
+
+def _carry(frame: Frame, previous: Frame | None) -> Frame:
+    """A verbless clause takes the verb of the one before ("open the left door, then the right one");
+    an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back")."""
+    if frame.verb is not None or previous is None or previous.verb is None:
+        return frame
+    amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None)
+    if frame.codes and not frame.themes:
+        return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
+    if frame.themes or amount_only:
+        return replace(frame, verb=previous.verb, sense=previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
+                       themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)
+    return frame
+
+
+def _is_subjectless_event(frame: Frame) -> bool:
+    """"... and swings open 30 degrees": a finite verb with no subject continues the event before."""
+    return frame.conjoined and not frame.themes and frame.verb is not None and frame.text.split()[0] != frame.verb
+
+
+def _is_event(frame: Frame) -> bool:
+    """"(and) the door opens 90 degrees", "watch the lid lift": what the act before caused, told as an event."""
+    told_next = frame.marker in ("then", "and_then", "after_that", "next", "finally", "afterwards", "later")
+    return (frame.subject_theme and frame.verb is not None and not frame.stative and frame.link is not Link.PURPOSE and not told_next) or (
+        frame.let and frame.text.split()[0] in ("watch", "see"))
+
+
+def build_acts(frames: list[Frame]) -> list[Act]:
+    acts: list[Act] = []
+    pending_wait = 0.0
+    pending_conditions: list[Frame] = []
+    previous_goal: Frame | None = None
+    for frame in frames:
+        frame = _carry(frame, previous_goal)
+        if frame.sense is VerbSense.WAIT and not frame.themes:
+            pending_wait += frame.quantities.duration_s or DEFAULT_WAIT_S
+            continue
+        if frame.link is Link.NEGATED:
+            if acts:
+                acts[-1] = replace(acts[-1], exclusions=(*acts[-1].exclusions, frame))
+            continue
+        if (frame.link is Link.RESULT and acts) or (_is_event(frame) and acts):
+            acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
+            continue
+        if _is_subjectless_event(frame) and acts and acts[-1].results:
+            previous = acts[-1].results[-1]
+            acts[-1] = replace(acts[-1], results=(*acts[-1].results, replace(frame, themes=previous.themes, subject_theme=True)))
+            continue
+        if frame.link is Link.CONDITION or frame.stative:
+            if frame.link is Link.CONDITION and acts and frame.clause > acts[-1].goal.clause:
+                acts.insert(len(acts) - 1, Act(goal=frame, condition=True))
+            elif frame.link is Link.CONDITION or frame.marker in ("once", "when", "after"):
+                pending_conditions.append(frame)
+            else:
+                acts.append(Act(goal=frame, condition=True))  # "the drawer is sticking out; push it shut": sets "it"
+            continue
+        if frame.link is Link.PURPOSE and acts and acts[-1].means is None:
+            last = acts.pop()
+            acts.append(replace(last, goal=frame, means=last.goal))
+            previous_goal = frame
+            continue
+        if frame.link is Link.MEANS and acts and acts[-1].means is None:
+            acts[-1] = replace(acts[-1], means=frame)
+            continue
+        for condition in pending_conditions:
+            acts.append(Act(goal=condition, condition=True))
+        pending_conditions = []
+        act = Act(goal=frame, parallel=frame.link is Link.PARALLEL, conjoined=frame.conjoined, wait_before_s=pending_wait)
+        pending_wait = 0.0
+        if frame.goes_first and acts:
+            acts.insert(len(acts) - 1, act)
+        else:
+            acts.append(act)
+        previous_goal = frame
+    if pending_wait and acts:
+        acts[-1] = replace(acts[-1], hold_s=acts[-1].hold_s + pending_wait)
+    return acts

@@ -1,0 +1,238 @@
+"""Stage 2 — clauses: tokens -> :class:`Clause` list, each with how it links to its neighbours.
+
+Boundaries are sentence marks, sequence words ("then", "after that", "finally"), "and" or a
+comma before a new verb, parallel words ("while", "at the same time as"), ordering words
+("after ...ing", "before ...", "once ..."), purpose ("to <verb>", "in order to"), means
+("by ...ing", "using the X, ..."), results ("so the lid opens", "which swings open",
+"and the lid lifts"), conditions ("while the door is open") and negations ("without
+touching the knob", "don't move the drawer").
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import (
+    AFTER,
+    BEFORE,
+    CAUSATIVES,
+    DETERMINERS,
+    FILLERS,
+    NEGATIONS,
+    ORDINALS,
+    PARALLEL,
+    PURPOSE,
+    SEQUENCE,
+    SIMULTANEOUS,
+    SIZES,
+    SPATIAL,
+    SPEEDS,
+)
+from app.engine.offline.reading.mentions import kind_at
+from app.engine.offline.reading.tokens import Token
+
+
+class Link(StrEnum):
+    """How a clause attaches to the clause before it (in the prompt's order)."""
+
+    FIRST = "first"
+    SEQUENCE = "sequence"
+    PARALLEL = "parallel"
+    PURPOSE = "purpose"
+    """This clause is the goal the previous clause achieves ("press the pedal | to open the lid")."""
+    MEANS = "means"
+    """This clause is how the previous clause is achieved ("open the lid | by pressing the pedal")."""
+    RESULT = "result"
+    """This clause says what the previous one caused ("press the button | so the door pops open")."""
+    CONDITION = "condition"
+    """A state that must hold ("| while the door is open")."""
+    NEGATED = "negated"
+    """Something the user says not to do ("| without touching the knob")."""
+
+
+@dataclass(frozen=True)
+class Clause:
+    index: int
+    tokens: tuple[Token, ...]
+    link: Link
+    goes_first: bool = False
+    """Ordered before the previous clause ("B after A-ing", "before B, A" puts A first)."""
+    conjoined: bool = False
+    """Joined to the previous clause by "and" or a comma (not by a sequence word)."""
+    marker: str = ""
+    """The connective that opened it ("after", "once", "while", ...)."""
+
+    @property
+    def text(self) -> str:
+        return " ".join(t.text.replace("_", " ") for t in self.tokens)
+
+
+_NOT_BEFORE_VERB = DETERMINERS | frozenset(SPATIAL) | frozenset(ORDINALS) | frozenset(SIZES) | frozenset(
+    {"of", "each", "every", "both", "all", "another", "other", "this", "that", "no", "any", "some", "toggle", "rocker", "light", "power",
+     "control", "wall"})
+_VERB_CUE = frozenset({"and", ",", "then", "to", "by", "after", "before", "once", "when", "while", "whilst", "so", "please", "now",
+                       "first", "firstly", "just", "also", "and_then", "next", "finally", "lastly", "afterwards", "afterward",
+                       "after_that", "subsequently", "in_order_to", "so_as_to", "without", "until", "or", "as", "at_the_same_time",
+                       "simultaneously", "which", "that", "then,", "gently", "slowly", "quickly", "carefully", "fully",
+                       "don't", "dont", "not", "never", "do", "again", "meanwhile", "i", "you", "we", "let's", "lets", "using",
+                       "immediately", "briefly", "partially", "halfway", "slightly", "completely", "thereafter"})
+_AUX = frozenset({"is", "are", "was", "were", "be", "being", "been", "stays", "remains", "stay", "remain", "gets", "get"})
+
+
+def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
+    """Whether ``tokens[i]`` is a verb here (not a noun that looks like one: "the switch", "the left")."""
+    token = tokens[i]
+    if token.lemma not in VERBS or token.number is not None:
+        return False
+    previous = tokens[i - 1].text if i > 0 else ""
+    if previous in _NOT_BEFORE_VERB:
+        return False
+    if token.text in SPATIAL and token.text != token.lemma:
+        return False  # "left" is not "leave"
+    if token.text in SPATIAL or kind_at(tokens, i) is not None:
+        # "lower", "step", "switch", "dial": a verb only where a verb must start
+        return i == 0 or previous in _VERB_CUE
+    if strict:
+        return i == 0 or previous in _VERB_CUE or previous in _AUX
+    return True
+
+
+def _starts_clause(tokens: list[Token], i: int) -> bool:
+    """A new clause starts at ``i`` (after "and" / a comma): a verb, or a subject followed by a verb."""
+    j = i
+    while j < len(tokens) and (tokens[j].text in FILLERS or tokens[j].text in SPEEDS):
+        j += 1
+    if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES):
+        return True
+    # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
+    k = j
+    while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
+        if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in _NOT_BEFORE_VERB:
+            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
+        if tokens[k].text in _AUX and k > j:
+            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
+        k += 1
+    return False
+
+
+def _ing(token: Token) -> bool:
+    return token.text.endswith("ing") and token.lemma in VERBS
+
+
+def split_clauses(tokens: list[Token]) -> list[Clause]:
+    """The prompt's clauses in prompt order (``goes_first`` marks the ones to reorder)."""
+    clauses: list[Clause] = []
+    current: list[Token] = []
+    link, marker, conjoined = Link.FIRST, "", False
+
+    negated_here = False
+
+    def close() -> None:
+        nonlocal negated_here
+        body = list(current)
+        while body and body[0].is_punct:
+            body.pop(0)
+        while body and (body[-1].is_punct or body[-1].text in ("and", "or", "then")):
+            body.pop()
+        while body and body[0].text in FILLERS and not (len(body) > 1 and body[0].text == "first" and not verb_at(body, 1)):
+            body.pop(0)
+        if body:
+            first = Link.FIRST if link not in (Link.CONDITION, Link.NEGATED) else link
+            here = Link.NEGATED if negated_here else (link if clauses else first)
+            negated_here = False
+            clauses.append(Clause(index=len(clauses), tokens=tuple(body), link=here, marker=marker,
+                                  conjoined=conjoined))
+
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        word = token.text
+        nxt = i + 1
+        boundary: tuple[Link, str, bool] | None = None
+        if token.is_sentence_end or word == ":":
+            boundary = (Link.SEQUENCE, word, False)
+        elif word in SEQUENCE and _subject_only(current) and nxt < len(tokens) and tokens[nxt].lemma in VERBS:
+            boundary = None  # "the door then unlocks": the sequence word sits between a subject and its verb
+        elif word in SEQUENCE and (word != "next" or _starts_clause(tokens, nxt)):
+            boundary = (Link.SEQUENCE, word, False)
+        elif word in SIMULTANEOUS and not _starts_clause(tokens, nxt) and not (nxt < len(tokens) and _ing(tokens[nxt])):
+            boundary = None  # "open both doors at the same time": how, not a second action
+        elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
+            boundary = (Link.PARALLEL, word, False)
+        elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current):
+            boundary = (Link.SEQUENCE, word, True)
+        elif word == "until" and current:
+            boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
+        elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
+            boundary = (Link.SEQUENCE, word, False)
+        elif word in PURPOSE and nxt < len(tokens) and verb_at(tokens, nxt, strict=True) and current:
+            boundary = (Link.PURPOSE, word, False)
+        elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
+            boundary = (Link.MEANS, word, False)
+        elif word in ("so", "so_that", "which", "causing", "making") and current and (
+                _starts_clause(tokens, nxt) or (nxt < len(tokens) and tokens[nxt].lemma in VERBS) or word in ("causing", "making")):
+            boundary = (Link.RESULT, word, False)
+        elif word in NEGATIONS and current and _subject_only(current) and word not in ("without", "except", "but"):
+            negated_here = True  # "the wheels cannot roll", "they do not turn": this clause says what does not happen
+            current.append(token)
+            i += 1
+            continue
+        elif word in NEGATIONS and word not in ("but",) and current and not (i > 0 and tokens[i - 1].text in ("do", "does")):
+            boundary = (Link.NEGATED, word, False)
+        elif word in ("do", "does") and nxt < len(tokens) and tokens[nxt].text == "not":
+            boundary = (Link.NEGATED, "not", False)
+            nxt += 1
+        elif word in ("don't", "dont", "never", "cannot", "can't") and not current:
+            boundary = (Link.NEGATED, word, False)
+        if boundary is None:
+            current.append(token)
+            i += 1
+            continue
+        close()
+        current = []
+        link, marker, conjoined = boundary
+        if word in ("while", "whilst", "as", "once", "when", "after") and _condition(tokens, nxt):
+            link = Link.CONDITION
+        i = nxt
+    close()
+    return _order(clauses)
+
+
+def _subject_only(tokens: list[Token]) -> bool:
+    """Only a noun phrase so far ("the door | then unlocks")."""
+    body = [t for t in tokens if not t.is_punct]
+    return bool(body) and body[0].text in DETERMINERS and not any(verb_at(body, i) for i in range(len(body)))
+
+
+def _bare_verb(tokens: list[Token]) -> bool:
+    """Only a verb so far ("press | and hold the button"): the verbs share what follows."""
+    body = [t for t in tokens if t.text not in FILLERS]
+    return len(body) == 1 and verb_at(body, 0)
+
+
+def _condition(tokens: list[Token], i: int) -> bool:
+    """"while the door is open": a state, not a second action."""
+    for token in tokens[i:i + 8]:
+        if token.is_punct:
+            return False
+        if token.text in _AUX:
+            return True
+    return False
+
+
+def _order(clauses: list[Clause]) -> list[Clause]:
+    """Mark clauses that run before the clause they follow in the text: "B after A-ing" and
+    "before B, A" put A first."""
+    out: list[Clause] = []
+    for clause in clauses:
+        first = clause.tokens[0] if clause.tokens else None
+        gerund = first is not None and (_ing(first) or verb_at(list(clause.tokens), 0, strict=True))
+        previous = clauses[clause.index - 1] if clause.index > 0 else None
+        after_gerund = clause.marker in AFTER and gerund and previous is not None and previous.marker not in AFTER
+        after_before = clause.index == 1 and previous is not None and previous.marker in BEFORE and previous.link is not Link.CONDITION
+        if (after_gerund or after_before) and clause.link is not Link.CONDITION:
+            clause = Clause(clause.index, clause.tokens, clause.link, goes_first=True, marker=clause.marker, conjoined=clause.conjoined)
+        out.append(clause)
+    return out

@@ -1,0 +1,305 @@
+"""Stage 3 — frames: one :class:`Frame` per clause — verb sense, theme, instrument, end state,
+amount, manner, order, negation, holds and waits.
+
+A frame says what the clause asks in the lexicon's terms; it does not know the asset. The
+verb's sense may still depend on what it acts on ("push" a button presses it, "push" a
+drawer closes it, "push" the cart moves it): grounding refines it with the theme's kind.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from app.engine.lexicon.verbs import PARTICLES, VERBS, VerbSense
+from app.engine.lexicon.words import (
+    CAUSATIVES,
+    DETERMINERS,
+    INSTRUMENT,
+    LIGHT_VERBS,
+    ORDINALS,
+    SIMULTANEOUS,
+    SPATIAL,
+    STATIVE_VERBS,
+)
+from app.engine.offline.reading.clauses import Clause, Link, verb_at
+from app.engine.offline.reading.mentions import Mention, parse_mentions
+from app.engine.offline.reading.quantities import Quantities, read_quantities
+from app.engine.offline.reading.tokens import Token
+
+_BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
+_LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
+_RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
+                           "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
+_MANUAL = frozenset({"manually", "by_hand"})
+_REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
+                              "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around",
+                              "away", "clear"})
+_INSTRUMENT_PREPS = INSTRUMENT | frozenset({"by", "on", "holding", "gripping"})
+
+
+@dataclass(frozen=True)
+class Frame:
+    clause: int
+    text: str
+    verb: str | None
+    """Lemma of the clause's main verb."""
+    sense: VerbSense | None
+    """The verb's sense after its particle (before the theme refines it)."""
+    particle: str | None = None
+    themes: tuple[Mention, ...] = ()
+    instruments: tuple[Mention, ...] = ()
+    subject_theme: bool = False
+    """The subject is what moves ("the lid opens", "the door is open")."""
+    quantities: Quantities = field(default_factory=Quantities)
+    returning: bool = False
+    """Back to where it was ("push it back", "to its original position")."""
+    hold: bool = False
+    """Kept in its end state ("press and hold", "keep it pressed for 2 s")."""
+    let: bool = False
+    """The user lets it move on its own ("let the lid drop", "let go of the pedal")."""
+    link: Link = Link.FIRST
+    goes_first: bool = False
+    conjoined: bool = False
+    marker: str = ""
+    simultaneous: bool = False
+    manual: bool = False
+    stative: bool = False
+    """Describes a state ("the door is open"), not a motion."""
+    extra_verbs: tuple[str, ...] = ()
+    codes: tuple[tuple[str, ...], ...] = ()
+    """Keys of a code, in order: ("digit", "4") or ("place", "top", "left") ("enter 1-2-3", "type top-left, bottom-middle")."""
+    first: Mention | None = None
+    """"open both doors, left one first": which of the themes goes first."""
+
+
+_LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
+                                 "big", "another", "a_quarter", "one"})
+
+
+def _light_verb(tokens: list[Token]) -> list[Token]:
+    """"give the car a push" -> "push the car a push": the deverbal noun is the action (its amount stays:
+    "give the dial half a turn")."""
+    if not tokens or tokens[0].lemma not in LIGHT_VERBS:
+        return tokens
+    for i in range(2, len(tokens)):
+        if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
+            return [tokens[i], *tokens[1:]]
+    return tokens
+
+
+_STATE_WORDS = frozenset({"open", "closed", "shut", "up", "down", "on", "off", "out", "in"})
+
+
+def _find_verb(tokens: list[Token]) -> int | None:
+    for i in range(len(tokens)):
+        if tokens[i].text in CAUSATIVES and i == 0:
+            return i
+        if i > 0 and tokens[i - 1].text in ("is", "are", "was", "were", "be", "stays", "remains") and tokens[i].text in _STATE_WORDS:
+            continue  # "the door is open": a state, not a verb
+        if verb_at(tokens, i, strict=True):
+            return i
+    for i in range(1, len(tokens)):
+        token = tokens[i]
+        if token.lemma in VERBS and token.text != token.lemma and verb_at(tokens, i):
+            return i  # "the lid opens", "the door swings open"
+    return None
+
+
+def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[str | None, int | None]:
+    inside = {i for m in mentions for i in range(m.start, m.end)}
+    for i in range(verb + 1, min(len(tokens), verb + 9)):
+        word = tokens[i].text
+        if i in inside:
+            continue
+        if word in PARTICLES:
+            if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
+                continue
+            if word == "in" and i + 1 < len(tokens) and (tokens[i + 1].text in DETERMINERS or tokens[i + 1].number is not None):
+                continue  # "in the top row", "in 2 seconds"
+            info = VERBS.get(tokens[verb].lemma)
+            adjacent = i == verb + 1 and info is not None and word in info.particles
+            if word == "on" and not adjacent and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
+                continue  # "push the bin on its wheels"
+            if word == "off" and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
+                return "off", i  # "take the lid off the box"
+            return word, i
+        hinge = VERBS.get(tokens[verb].lemma)
+        if word in ("backward", "backwards") and hinge is not None and "back" in hinge.particles and hinge.motion == "hinge":
+            return "back", i  # "fold the screen backwards": a hinge verb's "back"
+        if word in ("to", "by", "so", "and", "then", "while", "until") and i > verb + 1:
+            break
+    return None, None
+
+
+def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
+    if verb is None:
+        return None
+    info = VERBS[verb]
+    if particle is not None and particle in info.particles:
+        return info.particles[particle]
+    return info.sense
+
+
+def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Mention]) -> tuple[list[Mention], list[Mention]]:
+    """(themes, instruments): a phrase after "with", "using", "by its", "on its" is how, not what;
+    an object named after a reference preposition ("out of the oven") is where. ``prior``: a subject
+    already named ("the lid is lifted 20 cm off the jar")."""
+    themes: list[Mention] = list(prior)
+    instruments: list[Mention] = []
+    for mention in mentions:
+        if mention.end < len(tokens) and tokens[mention.end].text in ("and_all", "included", "attached", "too"):
+            continue  # "lift the pot, lid and all": what comes along, not what moves
+        before = mention.start - 1
+        while before >= 0 and tokens[before].text in DETERMINERS:
+            before -= 1
+        preposition = tokens[before].text if before >= 0 else ""
+        if mention.is_object and themes and preposition in _INSTRUMENT_PREPS | _REFERENCE_PREPS:
+            continue  # "rotate the box on the table": where, not what
+        if preposition in _INSTRUMENT_PREPS and (themes or preposition in INSTRUMENT):
+            instruments.append(mention)
+        elif preposition in _REFERENCE_PREPS and themes and mention.is_object:
+            continue
+        elif preposition in _REFERENCE_PREPS and themes:
+            continue  # "lift the lid off the box": a place, not another theme
+        elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes:
+            continue  # "the left door, the one with the handle,": an apposition describing the door
+        else:
+            themes.append(mention)
+    return themes[len(prior):], instruments
+
+
+CODE_VERBS = frozenset({"type", "enter", "key", "punch", "input", "press", "tap", "push", "hit"})
+_CODE_SEPARATORS = frozenset({",", "then", "and", "and_then", "followed_by", "-", "next"})
+
+
+_KEY_WORDS = frozenset({"key", "button", "one", "on", "keypad", "of", "in", "at", "code", "combination", "sequence", "pin", "digit",
+                        "number", "passcode", "keycode", "pad"})
+
+
+def place_words(text: str) -> bool:
+    """Only words that place a key ("second-row middle", "bottom-left")."""
+    return all(w in SPATIAL or w in ORDINALS or w in ("row", "column") or (
+        "-" in w and all(p in SPATIAL or p in ORDINALS or p in ("row", "column") for p in w.split("-"))) for w in text.split() if w not in DETERMINERS)
+
+
+def _place_item(tokens: list[Token]) -> tuple[str, ...] | None:
+    """("place", sides..., "row=N" / "column=N") of one key description ("bottom-left", "second-row middle")."""
+    item: list[str] = []
+    words = [t.text for t in tokens if t.text not in DETERMINERS and t.lemma not in _KEY_WORDS]
+    for index, word in enumerate(words):
+        parts = word.split("-")
+        if len(parts) == 2 and parts[0] in ORDINALS and parts[1] in ("row", "column"):
+            item.append(f"{parts[1]}={ORDINALS[parts[0]]}")
+        elif word in ORDINALS and index + 1 < len(words) and words[index + 1] in ("row", "column"):
+            item.append(f"{words[index + 1]}={ORDINALS[word]}")
+        elif word in ("row", "column"):
+            continue
+        elif all(p in SPATIAL for p in parts):
+            item.extend(SPATIAL[p][0].value for p in parts)
+        else:
+            return None
+    return ("place", *item) if item else None
+
+
+def _code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[tuple[str, ...], ...]:
+    """The keys of an entered code, in order: digits, or places on the keypad ("top-left", "second-row middle")."""
+    items: list[tuple[str, ...]] = []
+    segment: list[Token] = []
+    for i in range(start, len(tokens) + 1):
+        token = tokens[i] if i < len(tokens) else None
+        if token is None or token.text in _CODE_SEPARATORS or token.is_punct:
+            place = _place_item(segment) if segment else None
+            if place is not None:
+                items.append(place)
+            segment = []
+            continue
+        if i in used:
+            continue
+        if token.number is not None and token.number == int(token.number) and token.number >= 0:
+            items.extend(("digit", d) for d in token.text.split(".")[0])
+            continue
+        segment.append(token)
+    return tuple(items)
+
+
+def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
+    """"..., left one first": a qualified "one" followed by "first" at the end of the clause."""
+    if len(tokens) >= 3 and tokens[-1].text == "first" and tokens[-2].text in ("one", "ones"):
+        j = len(tokens) - 2
+        while j > 0 and (tokens[j - 1].text in SPATIAL or tokens[j - 1].text in ("the",) or "-" in tokens[j - 1].text):
+            j -= 1
+        found = parse_mentions(tokens[j:-1], 0)
+        if found and found[0].anaphor:
+            return found[0], tokens[:j]
+    return None, tokens
+
+
+def build_frame(clause: Clause) -> Frame:
+    first, tokens = _first_of(_light_verb(list(clause.tokens)))
+    quantities = read_quantities(tokens)
+    verb_index = _find_verb(tokens)
+    verb = tokens[verb_index].lemma if verb_index is not None else None
+    causative = verb_index is not None and tokens[verb_index].text in CAUSATIVES
+    if verb_index is None:
+        subject, objects = [], parse_mentions(tokens, 0, quantities.used)
+    else:
+        subject = parse_mentions(tokens[:verb_index], 0, quantities.used)
+        objects = parse_mentions(tokens, verb_index + 1, quantities.used)
+    particle, particle_at = _particle(tokens, verb_index, objects) if verb_index is not None else (None, None)
+    if particle_at is not None:
+        objects = [m for m in objects if not m.start <= particle_at < m.end]
+    extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
+    words = {t.text for t in tokens}
+    stative = verb_index is None and any(t.text in STATIVE_VERBS for t in tokens)
+    intransitive = _intransitive(tokens, verb_index)
+    themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
+    subject_theme = bool(subject) and (not themes or stative or intransitive)
+    if subject_theme:
+        themes = subject + themes
+    let = causative or particle == "go"
+    if let and verb_index is not None:
+        inner = next((i for i in range(verb_index + 1, len(tokens)) if tokens[i].lemma in VERBS and tokens[i].lemma != "let"
+                      and tokens[i].lemma != "go"), None)
+        if inner is not None:  # "let the lid drop": the lid does what the inner verb says, on its own
+            verb = tokens[inner].lemma
+            particle, _ = _particle(tokens, inner, objects)
+    sense = _sense(verb, particle) if verb in VERBS else None
+    if let and verb in CAUSATIVES:
+        sense = VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)  # "let the door down", "let go"
+    elif let and (sense is None or particle == "go"):
+        sense = VerbSense.RELEASE
+    if any(m.head in _BODY_PARTS for m in subject) and sense is VerbSense.RELEASE:
+        themes, let = [], True  # "the foot comes off": the user lets go of what was pressed
+    if verb in _LETTING_GO and any(m.head in _BODY_PARTS for m in themes):
+        # "take your foot off the pedal", "lift your finger": the user lets go
+        sense, let = VerbSense.RELEASE, True
+        themes = [m for m in themes if m.head not in _BODY_PARTS] + _reference_mentions(objects, themes)
+    if verb_index is None and "back" in words:
+        particle = "back"  # "then 0.3 m back"
+    returning = sense is VerbSense.RETURN or bool(words & _RETURN_WORDS) or (particle == "back" and sense in (VerbSense.RETURN, None))
+    hold = sense is VerbSense.HOLD or "hold" in extra or "keep" in extra
+    return Frame(
+        clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
+        subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
+        goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker,
+        simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra,
+        codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
+    )
+
+
+def _intransitive(tokens: list[Token], verb_index: int | None) -> bool:
+    """A finite verb after its subject ("the lid opens", "the door swings open")."""
+    if verb_index is None or verb_index == 0:
+        return False
+    token = tokens[verb_index]
+    return token.text != token.lemma or tokens[verb_index - 1].text in ("is", "are", "gets", "get")
+
+
+def _reference_mentions(objects: list[Mention], themes: list[Mention]) -> list[Mention]:
+    """Phrases after "off" / "from" that name what the user lets go of."""
+    kept = {id(m) for m in themes}
+    return [m for m in objects if id(m) not in kept and m.head not in _BODY_PARTS and (m.kind is not None or m.pronoun)]
+
+
+def read_frames(clauses: list[Clause]) -> list[Frame]:
+    return [build_frame(clause) for clause in clauses]

@@ -1,0 +1,299 @@
+"""Noun phrases of a clause -> :class:`Mention` records (what part, where, how many, whose).
+
+A noun phrase is a run of determiners, qualifiers and nouns whose last noun is the head:
+"the upper-left door", "the door release button" (head: button), "the safe door" (head:
+door, the object word only says whose). Heads are part-kind words (the registry), object
+nouns, pronouns, anaphoric "one" / "the other", or an unknown noun (grounded by the asset's
+own part names, else refused). Trailing phrases qualify or own it: "the knob on the left",
+"the knob on the door", "the second drawer from the top", "the middle key in the bottom row".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+from app.engine.lexicon.kinds import REGISTRY, PartKind
+from app.engine.lexicon.verbs import PARTICLES, VERBS
+from app.engine.lexicon.words import (
+    AMOUNTS,
+    COLLECTIVE,
+    DETERMINERS,
+    OBJECT_NOUNS,
+    ORDINALS,
+    OTHER_WORDS,
+    PRONOUNS,
+    SIZES,
+    SPATIAL,
+    STATIVE_VERBS,
+    Side,
+)
+from app.engine.offline.reading.tokens import Token
+
+_OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
+_LINE_WORDS = frozenset({"row", "column"})
+_STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", "until", "while", "for", "into", "onto", "toward",
+                   "towards", "than", "is", "are", "was", "be", "as", "if", "but", "not", "without", "about", "over", "through",
+                   "along", "across", "around", "back", "up", "down", "out", "off", "open", "shut", "closed", "more", "further",
+                   "again", "fully", "halfway", "slightly", "way", "there", "here", "away", "together", "apart",
+                   "of", "on", "in", "at", "from", "inside", "behind", "near", "under", "below", "above", "beside", "next_to",
+                   "in_front_of", "on_top_of", "out_of", "against", "beneath", "underneath", "where", "when", "once",
+                   "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just",
+                   "cannot", "can't", "can", "will", "would", "should", "must",
+                   "still", "really", "right_away", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
+_NOT_HEADS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
+                        "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
+                        "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
+                        "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
+                        "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
+                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click"})
+"""Nouns that never name a part of the asset (units, places, body parts)."""
+_OBJECT_WORDS = frozenset(OBJECT_NOUNS)
+
+
+@dataclass(frozen=True)
+class Mention:
+    """A reference to a part (or to the whole object) in a clause."""
+
+    head: str
+    """The head noun as written (after spelling correction), e.g. "door", "it", "spoiler"."""
+    kind: PartKind | None = None
+    is_object: bool = False
+    pronoun: bool = False
+    anaphor: bool = False
+    """"the left one", "the other one": the head is the kind of an earlier mention."""
+    other: bool = False
+    sides: tuple[tuple[Side, bool], ...] = ()
+    """(side, extreme) qualifiers: "upper" -> (TOP, False), "leftmost" -> (LEFT, True)."""
+    ordinal: int | None = None
+    ordinal_from: Side | None = None
+    """"the second drawer from the bottom": counted from that side (default: reading order)."""
+    row: int | None = None
+    column: int | None = None
+    size: str | None = None
+    plural: bool = False
+    collective: bool = False
+    modifiers: tuple[str, ...] = ()
+    """Other words before the head ("release" in "the release button")."""
+    owner: Mention | None = None
+    whose: str | None = None
+    """The object that owns the part, when the prompt says so ("the stapler's magazine", "the magazine of the stapler")."""
+    start: int = 0
+    end: int = 0
+    """Token span inside the clause."""
+    words: str = ""
+
+
+@lru_cache(maxsize=1)
+def _kind_phrases() -> list[tuple[tuple[str, ...], PartKind]]:
+    phrases = [(tuple(w.replace("-", " ").split()), entry.kind) for entry in REGISTRY.values() for w in entry.words]
+    return sorted(phrases, key=lambda p: -len(p[0]))
+
+
+def kind_of_word(word: str) -> PartKind | None:
+    """The kind a single word names ("door" -> DOOR)."""
+    for phrase, kind in _kind_phrases():
+        if phrase == (word,):
+            return kind
+    return None
+
+
+def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
+    """(kind, length) of the longest part-kind phrase starting at ``tokens[i]``."""
+    for phrase, kind in _kind_phrases():
+        n = len(phrase)
+        window = tokens[i:i + n]
+        if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
+            return kind, n
+    return None
+
+
+def _line_index(word: str) -> int | None:
+    if word in ORDINALS:
+        return ORDINALS[word]
+    side = SPATIAL.get(word)
+    if side is None:
+        return None
+    return {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1, Side.MIDDLE: 0}.get(side[0])
+
+
+def _nominal(token: Token) -> bool:
+    word = token.text
+    if word in _OBJECT_WORDS:
+        return True  # "chest_of_drawers"
+    return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
+            and word not in STATIVE_VERBS)
+
+
+def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = frozenset()) -> list[Mention]:
+    """Every noun phrase in ``tokens[start:]`` (quantity tokens in ``used`` are skipped)."""
+    mentions: list[Mention] = []
+    i = start
+    while i < len(tokens):
+        if i in used or not _nominal(tokens[i]):
+            i += 1
+            continue
+        mention, i = _phrase(tokens, i, used)
+        if mention is None:
+            continue
+        mention = _trailing(tokens, mention, used, mentions)
+        i = max(i, mention.end)
+        if mention.head:
+            mentions.append(mention)
+    return mentions
+
+
+def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention | None, int]:
+    """The noun phrase starting at ``i`` and the index after it."""
+    begin = i
+    sides: list[tuple[Side, bool]] = []
+    ordinal = size = None
+    collective = other = False
+    nouns: list[tuple[int, int, PartKind | None, bool]] = []  # (start, length, kind, is_object)
+    unknown: list[int] = []
+    determiner = False
+    whose: str | None = None
+    owner: Mention | None = None
+    while i < len(tokens) and i not in used and (_nominal(tokens[i]) or _inner(tokens, i, begin) or tokens[i].text == "'s"):
+        token = tokens[i]
+        word = token.text
+        if word == "'s":
+            # "the stapler's (staple) magazine", "the door's handle": what came before owns what follows
+            if nouns and nouns[-1][3]:
+                whose = tokens[nouns[-1][0]].lemma
+            elif nouns:
+                start_, length, kind, _ = nouns[-1]
+                owner = Mention(head=" ".join(t.lemma for t in tokens[start_:start_ + length]), kind=kind, sides=tuple(sides), start=begin, end=i)
+            nouns, unknown, sides, ordinal, size = [], [], [], None, None
+            i += 1
+            continue
+        if (nouns or unknown) and (word in DETERMINERS or word in COLLECTIVE or word in ORDINALS or word in SPATIAL or word in SIZES):
+            break  # "open the right door | first": a qualifier after the head is not part of it
+        if token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and kind_at(tokens, i) is None and not nouns:
+            return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
+        found = kind_at(tokens, i)
+        if found is not None and not (word in SPATIAL and i + 1 < len(tokens) and _nominal(tokens[i + 1]) and kind_at(tokens, i + 1)):
+            nouns.append((i, found[1], found[0], False))
+            i += found[1]
+            continue
+        if token.number is not None or word in ("open", "closed", "shut", "opened"):
+            pass  # "all four wheels", "the closed pedal bin": a count or a state, the noun follows
+        elif word in DETERMINERS:
+            determiner = True
+        elif word in COLLECTIVE:
+            collective = True
+        elif word in OTHER_WORDS:
+            other = True
+        elif word in ORDINALS and not (word == "second" and i > 0 and tokens[i - 1].number is not None):
+            ordinal = ORDINALS[word]
+        elif word in SPATIAL:
+            sides.append(SPATIAL[word])
+        elif word in SIZES:
+            size = SIZES[word]
+        elif word in PRONOUNS or (word in ("one", "ones") and (sides or other or ordinal or size or determiner)):
+            pronoun = Mention(head=word, pronoun=word in PRONOUNS, anaphor=word in ("one", "ones"), other=other, sides=tuple(sides),
+                              ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
+                              start=begin, end=i + 1, words=_words(tokens, begin, i + 1))
+            return pronoun, i + 1
+        elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
+            nouns.append((i, 1, None, True))
+        elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not _continues(tokens, i + 1))):
+            break  # a verb ends the phrase ("the lid | drops"); "the door release button" goes on
+        elif "-" in word and all(part in SPATIAL for part in word.split("-")):
+            sides.extend(SPATIAL[part] for part in word.split("-"))  # "upper-left", "bottom-right"
+        elif word in PARTICLES:
+            break
+        elif (token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word:
+            unknown.append(i)
+        elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):
+            i += 1
+            return None, i
+        i += 1
+    end = i
+    if not nouns and not unknown:
+        at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well")
+        if other or (determiner and (sides or ordinal or size) and at_end):
+            # "the other", "then the second": an anaphoric head with qualifiers
+            return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,
+                           start=begin, end=end, words=_words(tokens, begin, end)), end
+        return None, max(end, begin + 1)
+    last_noun = nouns[-1] if nouns else None
+    if last_noun is not None and (not unknown or unknown[-1] < last_noun[0]):
+        head_index, length, kind, is_object = last_noun
+        head_tokens = tokens[head_index:head_index + length]
+        modifiers = tuple(tokens[j].text for j in range(begin, head_index) if j not in used and tokens[j].text not in DETERMINERS
+                          and not (tokens[j].lemma in _OBJECT_WORDS and j + 1 < len(tokens) and tokens[j + 1].text == "'s")
+                          and tokens[j].text not in COLLECTIVE and tokens[j].text not in SPATIAL and tokens[j].text not in ORDINALS
+                          and tokens[j].text not in SIZES and tokens[j].text not in OTHER_WORDS)
+        plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 for j in range(begin, head_index))
+        head_word = " ".join(t.lemma for t in head_tokens)
+    else:
+        head_index, kind, is_object = unknown[-1], None, False
+        modifiers = tuple(tokens[j].text for j in unknown[:-1])
+        plural = tokens[head_index].plural or collective
+        head_word = tokens[head_index].lemma
+    return Mention(head=head_word, kind=kind, is_object=is_object, other=other, sides=tuple(sides), ordinal=ordinal, size=size, plural=plural,
+                   collective=collective, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
+                   words=_words(tokens, begin, end)), end
+
+
+def _inner(tokens: list[Token], i: int, begin: int) -> bool:
+    """A count or state adjective inside a phrase ("all four wheels", "the closed lid"): a noun follows."""
+    token = tokens[i]
+    inside = i > begin and (token.number is not None or token.text in ("open", "closed", "shut", "opened"))
+    return inside and i + 1 < len(tokens) and _nominal(tokens[i + 1])
+
+
+def _continues(tokens: list[Token], i: int) -> bool:
+    """A noun of the same phrase follows at ``i`` ("release | button")."""
+    return i < len(tokens) and (kind_at(tokens, i) is not None or tokens[i].lemma in _OBJECT_WORDS)
+
+
+def _words(tokens: list[Token], start: int, end: int) -> str:
+    return " ".join(t.text.replace("_", " ") for t in tokens[start:end])
+
+
+def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: list[Token]) -> Mention:
+    """``mention`` in a row or column (1-based from the top / left; -1 last; 0 middle)."""
+    if line == "row":
+        return replace(mention, row=index, end=end, words=_words(tokens, mention.start, end))
+    return replace(mention, column=index, end=end, words=_words(tokens, mention.start, end))
+
+
+def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earlier: list[Mention]) -> Mention:
+    """Attach "on the left", "from the top", "in the bottom row", "of the door" after a phrase."""
+    i = mention.end
+    if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from"}:
+        return mention
+    prep = tokens[i].text
+    j = i + 1
+    while j < len(tokens) and tokens[j].text in DETERMINERS:
+        j += 1
+    if j >= len(tokens):
+        return mention
+    word = tokens[j].text
+    nxt = tokens[j + 1].text if j + 1 < len(tokens) else ""
+    if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
+        return _lined(mention, nxt, _line_index(word), j + 2, tokens)
+    if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one")):
+        end = j + 1 + (1 if nxt in ("side", "hand", "end") else 0)
+        if prep == "from" and mention.ordinal is not None:
+            return replace(mention, ordinal_from=SPATIAL[word][0], end=end, words=_words(tokens, mention.start, end))
+        if prep in ("on", "at", "in", "to"):
+            placed = replace(mention, sides=(*mention.sides, SPATIAL[word]), end=end, words=_words(tokens, mention.start, end))
+            return _trailing(tokens, placed, used, earlier) if end < len(tokens) and tokens[end].text == "of" else placed
+        return mention
+    if prep in ("of", "on", "in", "at", "inside"):
+        owner, end = _phrase(tokens, j, used)
+        if owner is not None and owner.head in _LINE_WORDS and (owner.ordinal is not None or owner.sides):
+            index = owner.ordinal if owner.ordinal is not None else _line_index(owner.sides[0][0].value)
+            return _lined(mention, owner.head, index, end, tokens)  # "the keypad's second row"
+        if owner is not None and (owner.kind is not None or owner.is_object or owner.pronoun):
+            owner = _trailing(tokens, owner, used, earlier)
+            end = max(end, owner.end)
+            if owner.is_object:
+                return replace(mention, end=end, words=_words(tokens, mention.start, end), whose=owner.head)
+            return replace(mention, owner=owner, end=end, words=_words(tokens, mention.start, end))
+        if owner is not None and owner.kind is None and not owner.anaphor:
+            return replace(mention, end=end)  # "the button on the control strip": a place on the object, not a part
+    return mention

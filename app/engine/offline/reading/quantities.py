@@ -1,0 +1,227 @@
+"""Quantities of one clause, read from its tokens: how far (and from where), how fast, how long,
+which way, and end orientations.
+
+An amount carries what it is measured from: ``closed`` for an end position ("to 30 degrees",
+"30 degrees from closed"), ``current`` for an increment ("another 10 degrees", "10 cm more",
+"by 5 cm"), ``None`` where the verb decides (the resolver's conventions).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Literal
+
+from app.engine.lexicon.words import (
+    AMOUNTS,
+    ANGLE_UNITS,
+    DIRECTIONS,
+    LENGTH_UNITS,
+    LOOSE_AMOUNTS,
+    MULTIPLIERS,
+    RATE_UNITS,
+    ROTATION_SENSE,
+    SPEEDS,
+    STATES,
+    TIME_UNITS,
+    TURN_UNITS,
+)
+from app.engine.offline.reading.tokens import Token
+
+Unit = Literal["fraction", "rad", "m"]
+Reference = Literal["closed", "current"]
+_TO = frozenset({"to", "until"})
+_RELATIVE_AFTER = frozenset({"more", "further", "farther", "extra"})
+_RELATIVE_BEFORE = frozenset({"another", "additional", "extra", "further", "by"})
+_ABOUT = frozenset({"about", "around", "roughly", "approximately", "exactly", "just", "nearly", "almost", "some", "only"})
+_DURATION_BEFORE = frozenset({"for", "over", "during", "in", "within", "taking", "lasting"})
+_FRACTION_WORDS = {"quarter": 0.25, "half": 0.5, "full": 1.0, "complete": 1.0, "whole": 1.0, "one": 1.0, "a": 1.0, "single": 1.0}
+_CLOSED_WORDS = frozenset({"closed", "shut", "close"})
+
+
+@dataclass(frozen=True)
+class Amount:
+    """How far: a fraction of the part's range, or an angle (rad) or a distance (m)."""
+
+    value: float
+    unit: Unit
+    reference: Reference | None = None
+    loose: bool = False
+    """A reading of a vague word ("slightly", "a bit")."""
+    words: str = ""
+
+
+@dataclass(frozen=True)
+class Quantities:
+    amount: Amount | None = None
+    speed_factor: float = 1.0
+    duration_s: float | None = None
+    omega_radps: float | None = None
+    speed_mps: float | None = None
+    direction: str | None = None
+    """forward, backward, left, right, up, down, sideways (as seen facing the object)."""
+    sense: str | None = None
+    """cw / ccw as seen facing the part."""
+    axis: tuple[float, float, float] | None = None
+    """A world axis named in the prompt ("+X", "along negative y")."""
+    orientation: str | None = None
+    """vertical or flat (an end orientation: "until the lid is upright")."""
+    times: int = 1
+    """"twice", "three times"."""
+    used: frozenset[int] = field(default_factory=frozenset)
+    """Token indices these quantities were read from."""
+
+
+def _axis(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int] | None:
+    text = tokens[i].text
+    if len(text) == 2 and text[0] in "+-" and text[1] in "xyz":
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(text[1])] = -1.0 if text[0] == "-" else 1.0
+        return (vector[0], vector[1], vector[2]), 1
+    if text in ("positive", "negative") and i + 1 < len(tokens) and tokens[i + 1].text in ("x", "y", "z"):
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(tokens[i + 1].text)] = -1.0 if text == "negative" else 1.0
+        return (vector[0], vector[1], vector[2]), 2
+    if text in ("x", "y", "z") and i + 1 < len(tokens) and tokens[i + 1].lemma in ("axis", "direction"):
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(text)] = 1.0
+        return (vector[0], vector[1], vector[2]), 2
+    return None
+
+
+def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
+    """What an amount at tokens[start:end] is measured from, from the words around it."""
+    before = [t.text for t in tokens[max(0, start - 3):start] if t.text not in _ABOUT]
+    after = [t.text for t in tokens[end:end + 3]]
+    if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
+        return "current"
+    if (before and before[-1] in _TO) or before[-2:] == ["up", "to"]:
+        return "closed"
+    if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] == "the" and len(after) > 2 and after[2] in _CLOSED_WORDS)):
+        return "closed"
+    return None
+
+
+def _markers(tokens: list[Token], start: int, end: int) -> set[int]:
+    """Indices of the words around an amount that say what it is measured from ("another", "more")."""
+    out = {j for j in range(max(0, start - 2), start) if tokens[j].text in _RELATIVE_BEFORE | _ABOUT | _TO}
+    out.update(j for j in range(end, min(len(tokens), end + 1)) if tokens[j].text in _RELATIVE_AFTER)
+    return out
+
+
+def read_quantities(tokens: list[Token]) -> Quantities:
+    """Everything quantitative in one clause's tokens."""
+    values: dict[str, object] = {}
+    used: set[int] = set()
+    amount: Amount | None = None
+    i = 0
+    while i < len(tokens):
+        token, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else None
+        axis = _axis(tokens, i)
+        if axis is not None:
+            values["axis"] = axis[0]
+            used.update(range(i, i + axis[1]))
+            i += axis[1]
+            continue
+        if token.number is not None and nxt is not None and nxt.text in ("full", "complete", "whole") and i + 2 < len(tokens) and tokens[i + 2].lemma in TURN_UNITS:
+            amount = Amount(token.number * 2 * math.pi, "rad", words=f"{token.text} {nxt.text} {tokens[i + 2].text}")  # "two full turns"
+            used.update((i, i + 1, i + 2))
+            i += 3
+            continue
+        if token.number is not None and nxt is not None:
+            unit = nxt.lemma
+            if unit in ANGLE_UNITS:
+                amount = Amount(token.number * ANGLE_UNITS[unit], "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+            elif unit in TURN_UNITS:
+                amount = Amount(token.number * 2 * math.pi, "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+            elif unit in LENGTH_UNITS and not (unit == "in" and i + 2 < len(tokens) and tokens[i + 2].text in ("the", "a", "its")):
+                amount = Amount(token.number * LENGTH_UNITS[unit], "m", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+            elif unit in TIME_UNITS:
+                values["duration_s"] = token.number * TIME_UNITS[unit]
+                used.update(j for j in (i - 1,) if j >= 0 and tokens[j].text in _DURATION_BEFORE)
+            elif unit in RATE_UNITS or nxt.text in RATE_UNITS:
+                quantity, factor = RATE_UNITS[unit if unit in RATE_UNITS else nxt.text]
+                values["omega_radps" if quantity == "omega" else "speed_mps"] = token.number * factor
+            elif unit == "percent":
+                amount = Amount(min(token.number / 100.0, 1.0), "fraction", words=f"{token.text}%")
+            elif nxt.lemma == "time" or nxt.text == "times":
+                values["times"] = max(1, round(token.number))
+            else:
+                i += 1
+                continue
+            used.update((i, i + 1))
+            used.update(_markers(tokens, i, i + 2))
+            i += 2
+            continue
+        if token.text in ("half", "a", "an", "one", "quarter") and nxt is not None and (nxt.text in ("a", "an") or token.text in ("a", "an")):
+            # "half a metre", "a foot", "a quarter of a metre"
+            j = i + (2 if nxt.text in ("a", "an") else 1)
+            if j < len(tokens) and tokens[j].lemma in LENGTH_UNITS and tokens[j].text not in ("in", "m"):
+                factor = {"half": 0.5, "quarter": 0.25}.get(token.text, 1.0)
+                amount = Amount(factor * LENGTH_UNITS[tokens[j].lemma], "m", words=" ".join(t.text for t in tokens[i:j + 1]))
+                used.update(range(i, j + 1))
+                i = j + 1
+                continue
+        if token.text in ("seen", "viewed", "looking", "looked") and nxt is not None and nxt.text == "from":
+            # "(as) seen from above / from the front": a viewpoint, not a part
+            j = i
+            while j < len(tokens) and not tokens[j].is_punct and tokens[j].text not in ("then", "and_then", "and", "by", "to"):
+                used.add(j)
+                j += 1
+            if i > 0 and tokens[i - 1].text == "as":
+                used.add(i - 1)
+            i = j
+            continue
+        if "-" in token.text and token.text.split("-")[0] in DIRECTIONS and "direction" not in values:
+            values["direction"] = DIRECTIONS[token.text.split("-")[0]]  # "the forward-rolling direction"
+            used.add(i)
+        if token.text in _FRACTION_WORDS and nxt is not None:
+            # "a quarter turn", "half a turn", "a full rotation", "one complete turn"
+            j = i + 1
+            fraction = _FRACTION_WORDS[token.text]
+            while j < len(tokens) and tokens[j].text in _FRACTION_WORDS and j < i + 3:
+                fraction = _FRACTION_WORDS[tokens[j].text] if tokens[j].text not in ("a", "one", "single") else fraction
+                j += 1
+            if j < len(tokens) and tokens[j].lemma in TURN_UNITS and (j > i + 1 or token.text in ("quarter", "half", "full")):
+                amount = Amount(fraction * 2 * math.pi, "rad", words=" ".join(t.text for t in tokens[i:j + 1]))
+                used.update(range(i, j + 1))
+                i = j + 1
+                continue
+        if token.text.replace("_", " ") in AMOUNTS and nxt is not None and nxt.lemma in TURN_UNITS:
+            # "a quarter turn", "a third of a turn"
+            amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=f"{token.text.replace('_', ' ')} {nxt.text}")
+            used.update((i, i + 1))
+            i += 2
+            continue
+        if token.text in MULTIPLIERS:
+            values["times"] = int(MULTIPLIERS[token.text])
+            used.add(i)
+        elif token.text.replace("_", " ") in AMOUNTS and amount is None:
+            phrase = token.text.replace("_", " ")
+            amount = Amount(AMOUNTS[phrase], "fraction", loose=phrase in LOOSE_AMOUNTS, words=phrase)
+            used.add(i)
+            if token.text == "as_far_as":  # "as far as its hinge allows": the rest of the clause only says "all the way"
+                j = i + 1
+                while j < len(tokens) and not tokens[j].is_punct and tokens[j].text not in ("then", "and_then"):
+                    used.add(j)
+                    j += 1
+        elif token.text in SPEEDS and "speed_factor" not in values:
+            values["speed_factor"] = SPEEDS[token.text]
+            used.add(i)
+        elif token.text.replace("_", "-") in ROTATION_SENSE or token.text in ROTATION_SENSE:
+            values["sense"] = ROTATION_SENSE.get(token.text, ROTATION_SENSE.get(token.text.replace("_", "-"), None))
+            used.add(i)
+        elif token.text in DIRECTIONS and "direction" not in values:
+            values["direction"] = DIRECTIONS[token.text]
+            used.add(i)
+        elif token.text in ("to_the_left", "to_the_right"):
+            values["direction"] = token.text.rsplit("_", 1)[1]
+            used.add(i)
+        elif (token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up":
+            values["orientation"] = STATES.get(token.text, "vertical")
+            used.add(i)
+        elif token.text in ("moment", "beat", "second", "sec") and i > 0 and tokens[i - 1].text in ("a", "one"):
+            values.setdefault("duration_s", 1.0)
+            used.update((i - 1, i))
+        i += 1
+    return Quantities(amount=amount, used=frozenset(used), **values)  # type: ignore[arg-type]

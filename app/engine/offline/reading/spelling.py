@@ -1,0 +1,127 @@
+"""Spelling correction against the domain lexicon and the asset's own part names.
+
+A word is left alone when the lexicon knows it, when it names a part of the asset, or when
+it is a common English word (``pyspellchecker``'s frequency list). Otherwise it is replaced
+by the closest domain word (optimal string alignment distance from ``rapidfuzz``: 1 edit for
+short words, 2 for longer ones) when exactly one word is closest; the token records what was
+typed, and the perceiver warns about every correction.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from functools import lru_cache
+from typing import TYPE_CHECKING
+
+from app.engine.lexicon.kinds import REGISTRY
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import (
+    AMOUNTS,
+    ANGLE_UNITS,
+    COLLECTIVE,
+    DETERMINERS,
+    DIRECTIONS,
+    FILLERS,
+    LENGTH_UNITS,
+    MULTIWORD,
+    NEGATIONS,
+    NUMBER_WORDS,
+    OBJECT_NOUNS,
+    ORDINALS,
+    OTHER_WORDS,
+    PRONOUNS,
+    ROTATION_SENSE,
+    SIZES,
+    SPATIAL,
+    SPEEDS,
+    STATES,
+    TIME_UNITS,
+    TURN_UNITS,
+)
+
+if TYPE_CHECKING:
+    from app.engine.offline.reading.tokens import Token
+
+ENGLISH_MIN_COUNT = 20
+"""A word seen at least this often in the English frequency list is a real word, never corrected."""
+MIN_LENGTH = 3
+_FUNCTION = (
+    "to", "of", "on", "in", "at", "by", "with", "from", "into", "onto", "and", "or", "so", "then", "while", "after", "before", "until",
+    "once", "when", "it", "is", "are", "be", "for", "its", "that", "which", "way", "as", "far", "more", "another", "further", "again",
+    "around", "round", "about", "over", "through", "using", "down", "up", "out", "off", "back", "open", "shut", "closed", "side",
+    "row", "column", "one", "ones", "go", "goes", "degree", "degrees", "seconds", "second", "times", "by", "same", "time",
+)
+
+
+@lru_cache(maxsize=1)
+def domain_words() -> frozenset[str]:
+    """Every single word the lexicon uses."""
+    words: set[str] = set(_FUNCTION)
+    for entry in REGISTRY.values():
+        for phrase in entry.words:
+            words.update(phrase.replace("-", " ").split())
+    for table in (VERBS, SPATIAL, ORDINALS, SIZES, AMOUNTS, SPEEDS, ROTATION_SENSE, DIRECTIONS, LENGTH_UNITS, ANGLE_UNITS,
+                  TURN_UNITS, TIME_UNITS, STATES, NUMBER_WORDS):
+        for key in table:
+            words.update(str(key).replace("-", " ").split())
+    for group in (COLLECTIVE, DETERMINERS, PRONOUNS, OTHER_WORDS, NEGATIONS, FILLERS, OBJECT_NOUNS, MULTIWORD):
+        for phrase in group:
+            words.update(phrase.replace("-", " ").split())
+    return frozenset(w for w in words if w.isalpha())
+
+
+@lru_cache(maxsize=1)
+def _english() -> object:
+    from spellchecker import SpellChecker
+
+    return SpellChecker(distance=1).word_frequency
+
+
+def _is_english(word: str) -> bool:
+    frequency = _english()
+    return int(frequency[word]) >= ENGLISH_MIN_COUNT  # type: ignore[index]
+
+
+def _budget(word: str) -> int:
+    return 1 if len(word) <= 5 else 2
+
+
+def suggest(word: str, vocabulary: frozenset[str]) -> str | None:
+    """The closest word of ``vocabulary`` within the edit budget, else ``None``.
+
+    Ties on the edit distance go to a word with the same letters (a swap: "opne" -> "open"),
+    then to the higher Jaro-Winkler similarity; a remaining tie is no correction.
+    """
+    from rapidfuzz.distance import OSA, JaroWinkler
+
+    budget = _budget(word)
+    scored: list[tuple[int, bool, float, str]] = []
+    for candidate in vocabulary:
+        if abs(len(candidate) - len(word)) > budget or len(candidate) < MIN_LENGTH:
+            continue
+        distance = OSA.distance(word, candidate, score_cutoff=budget)
+        if distance <= budget:
+            scored.append((distance, sorted(candidate) != sorted(word), -round(JaroWinkler.similarity(word, candidate), 6), candidate))
+    if not scored:
+        return None
+    scored.sort()
+    best = scored[0]
+    if len(scored) > 1 and scored[1][:3] == best[:3]:
+        return None
+    return best[3]
+
+
+def correct(token: Token, known: frozenset[str]) -> Token:
+    """``token`` with its word corrected when it is not a known word (see the module docstring)."""
+    word = token.text
+    if len(word) < MIN_LENGTH or word in known or word in domain_words():
+        return token
+    from app.engine.offline.reading.tokens import lemma_of
+
+    lemma, _ = lemma_of(word)
+    if lemma in domain_words() or lemma in known or _is_english(word):
+        return token
+    fixed = suggest(word, domain_words() | known)
+    if fixed is None:
+        return token
+    return replace(token, text=fixed, lemma=fixed, corrected_from=word)

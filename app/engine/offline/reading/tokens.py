@@ -1,0 +1,225 @@
+"""Stage 1 — normalise: prompt text -> :class:`Token` list.
+
+Lower case, numbers split from their units ("10cm"), spelled-out numbers to digits
+("forty-five", "one and a half"), spelling corrected against the domain lexicon and the
+asset's own part names (:mod:`.spelling`), multi-word expressions joined into one token
+("at the same time" -> ``at_the_same_time``), and verb / noun lemmas from ``lemminflect``.
+Every token keeps its span in the original prompt, so later stages can quote the user.
+This is the only stage that reads the raw text.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, replace
+from functools import lru_cache
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import MULTIWORD, NUMBER_WORDS
+
+_TOKEN = re.compile(
+    r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
+    r"|(?P<axis>[+-][xyz])(?![a-z])"
+    r"|(?P<num>\d+(?:\.\d+)?(?:/\d+)?|\.\d+)"
+    r"|(?P<rate>rad/s|m/s|cm/s|deg/s|rad/sec)"
+    r"|(?P<word>[a-z]+(?:['’][a-z]+)?(?:-[a-z]+)*)"
+    r"|(?P<deg>°)"
+    r"|(?P<pct>%)"
+    r"|(?P<punct>[.,;:!?])"
+)
+_UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
+
+
+@dataclass(frozen=True)
+class Token:
+    """One word, number or punctuation mark of the prompt."""
+
+    text: str
+    """Normalised form (lower case, spelling corrected, multi-word expressions joined with ``_``)."""
+    lemma: str
+    """Verb lemma for verb forms ("pressed" -> "press"), singular for plural nouns, else ``text``."""
+    start: int
+    end: int
+    """Span in the original prompt."""
+    number: float | None = None
+    plural: bool = False
+    corrected_from: str | None = None
+    """The word as typed, when spelling correction changed it."""
+
+    @property
+    def is_punct(self) -> bool:
+        return self.text in ".,;:!?"
+
+    @property
+    def is_sentence_end(self) -> bool:
+        return self.text in ".;!?"
+
+
+def _raw_tokens(prompt: str) -> list[Token]:
+    text = prompt.lower().replace("’", "'").replace("‘", "'")
+    text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", text)
+    # the substitution above only inserts spaces: map offsets back to the original prompt
+    offsets = _offset_map(prompt.lower().replace("’", "'").replace("‘", "'"), text)
+    tokens = []
+    for match in _TOKEN.finditer(text):
+        kind = match.lastgroup
+        word = match.group(0)
+        start, end = offsets[match.start()], offsets[max(match.end() - 1, match.start())] + 1
+        if kind == "num":
+            if "/" in word:
+                top, bottom = word.split("/")
+                value = float(top) / float(bottom) if float(bottom) else float(top)
+            else:
+                value = float(word)
+            tokens.append(Token(word, word, start, end, number=value))
+        elif kind == "deg":
+            tokens.append(Token("degree", "degree", start, end))
+        elif kind == "pct":
+            tokens.append(Token("percent", "percent", start, end))
+        elif kind == "axis":
+            tokens.append(Token(word, word, start, end))
+        elif word.endswith("'s") and word[:-2] not in _NOT_POSSESSIVE:
+            # "the stapler's magazine": the owner, then a possessive marker
+            tokens.append(Token(word[:-2], word[:-2], start, end - 2))
+            tokens.append(Token("'s", "'s", end - 2, end))
+        else:
+            tokens.append(Token(word, word, start, end))
+    return tokens
+
+
+_NOT_POSSESSIVE = frozenset({"it", "let", "that", "what", "there", "here", "he", "she", "who", "where", "how"})
+
+
+def _offset_map(original: str, spaced: str) -> list[int]:
+    """Index in ``spaced`` -> index in ``original`` (``spaced`` only has extra spaces)."""
+    out, i = [], 0
+    for char in spaced:
+        if i < len(original) and original[i] == char:
+            out.append(i)
+            i += 1
+        else:
+            out.append(max(i - 1, 0))
+    out.append(len(original))
+    return out
+
+
+_UNITS = {"zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
+          "eleven": 11, "twelve": 12, "thirteen": 13, "fourteen": 14, "fifteen": 15, "sixteen": 16, "seventeen": 17, "eighteen": 18,
+          "nineteen": 19}
+_TENS = {"twenty": 20, "thirty": 30, "forty": 40, "fifty": 50, "sixty": 60, "seventy": 70, "eighty": 80, "ninety": 90}
+_JOINED_TAIL = {"a_quarter": 0.25, "a_third": 1 / 3, "three_quarters": 0.75, "one_quarter": 0.25, "one_third": 1 / 3, "two_thirds": 2 / 3}
+_FRACTION_TAIL = {("a", "half"): 0.5, ("a", "quarter"): 0.25, ("three", "quarters"): 0.75, ("a", "third"): 1 / 3}
+
+
+def _number_word(word: str) -> float | None:
+    if word in _UNITS:
+        return float(_UNITS[word])
+    if word in _TENS:
+        return float(_TENS[word])
+    if "-" in word:
+        tens, _, unit = word.partition("-")
+        if tens in _TENS and unit in _UNITS and _UNITS[unit] < 10:
+            return float(_TENS[tens] + _UNITS[unit])
+    return float(NUMBER_WORDS[word]) if word in NUMBER_WORDS and " " not in word else None
+
+
+_COUNTED = frozenset({"and", "hundred", "full", "complete", "whole", "more", "quarter", "third", "half", "fifth", "second", "seconds",
+                      "sec", "s", "minute", "degree", "degrees", "deg", "turn", "turns", "revolution", "revolutions", "rotation",
+                      "rotations", "cm", "mm", "m", "meter", "meters", "metre", "metres", "inch", "inches", "foot", "feet", "ft", "radian",
+                      "radians", "rad", "centimeter", "centimeters", "centimetre", "centimetres", "millimeter", "millimeters", "time",
+                      "times", "twist", "spin", "notch", "notches", "click", "clicks", "step", "steps", "°", "percent", "%", "-"})
+
+
+def _counts(tokens: list[Token], i: int) -> bool:
+    """A number word followed by what it counts ("one full turn", "one and a half", "one second")."""
+    return i < len(tokens) and (tokens[i].text in _COUNTED or tokens[i].number is not None)
+
+
+def _join_numbers(tokens: list[Token]) -> list[Token]:
+    """Spelled-out numbers to one numeric token: "a hundred and twenty", "forty five", "one and a half"."""
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        value = _number_word(tokens[i].text) if tokens[i].number is None else None
+        if tokens[i].text == "one" and not _counts(tokens, i + 1):
+            value = None  # "the left one", "one of the doors": a pronoun, not a number
+        hundreds = tokens[i].text == "hundred" and out and out[-1].text in ("a", "one")
+        if hundreds:
+            start = out.pop().start
+            value, j = 100.0, i + 1
+        elif value is not None:
+            start, j = tokens[i].start, i + 1
+        else:
+            out.append(tokens[i])
+            i += 1
+            continue
+        if j < len(tokens) and tokens[j].text == "hundred":
+            value, j = value * 100.0, j + 1
+        if value >= 100 and j + 1 < len(tokens) and tokens[j].text == "and" and _number_word(tokens[j + 1].text) is not None:
+            value, j = value + float(_number_word(tokens[j + 1].text) or 0.0), j + 2
+        if value % 10 == 0 and 20 <= value % 100 <= 90 and j < len(tokens):
+            unit = _UNITS.get(tokens[j].text)
+            if unit is not None and 0 < unit < 10:
+                value, j = value + unit, j + 1
+        if j + 2 < len(tokens) and tokens[j].text == "and" and (tokens[j + 1].text, tokens[j + 2].text) in _FRACTION_TAIL:
+            value, j = value + _FRACTION_TAIL[(tokens[j + 1].text, tokens[j + 2].text)], j + 3
+        elif j + 1 < len(tokens) and tokens[j].text == "and" and tokens[j + 1].text in _JOINED_TAIL:
+            value, j = value + _JOINED_TAIL[tokens[j + 1].text], j + 2  # "one and a quarter" ("a quarter" is one token)
+        text = f"{value:g}"
+        out.append(Token(text, text, start, tokens[j - 1].end, number=value))
+        i = j
+    return out
+
+
+_PHRASES = sorted((tuple(p.split()) for p in MULTIWORD), key=len, reverse=True)
+
+
+def _join_phrases(tokens: list[Token]) -> list[Token]:
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        for phrase in _PHRASES:
+            n = len(phrase)
+            if tuple(t.text for t in tokens[i:i + n]) == phrase:
+                joined = "_".join(phrase)
+                out.append(Token(joined, joined, tokens[i].start, tokens[i + n - 1].end,
+                                 corrected_from=next((t.corrected_from for t in tokens[i:i + n] if t.corrected_from), None)))
+                i += n
+                break
+        else:
+            out.append(tokens[i])
+            i += 1
+    return out
+
+
+@lru_cache(maxsize=4096)
+def lemma_of(word: str) -> tuple[str, bool]:
+    """(lemma, plural): the verb lemma when ``word`` is a form of a known verb, else the noun lemma."""
+    if word in VERBS or not word.isalpha():
+        return word, False
+    from lemminflect import getLemma  # imported when first needed (data loads on first use)
+
+    nouns = getLemma(word, upos="NOUN")
+    plural = bool(nouns) and nouns[0] != word and word.endswith("s")
+    for lemma in getLemma(word, upos="VERB"):
+        if lemma in VERBS:
+            return lemma, plural
+    if nouns and nouns[0] != word:
+        return nouns[0], True
+    return word, False
+
+
+def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
+    """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
+    corrected and that misspellings may be corrected to."""
+    from app.engine.offline.reading.spelling import correct
+
+    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _raw_tokens(prompt)]
+    tokens = _join_numbers(_join_phrases(tokens))
+    out = []
+    for token in tokens:
+        if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():
+            lemma, plural = lemma_of(token.text)
+            token = replace(token, lemma=lemma, plural=plural)
+        out.append(token)
+    return out

@@ -1,0 +1,189 @@
+"""What a mention refers to in context: pronouns and "the other one" through the earlier
+clauses, kinds through the registry, and a clear refusal when the asset lacks the part or
+several similar parts fit (naming each candidate and how to ask for it).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.errors import GroundingError
+from app.engine.lexicon.kinds import PartKind, info
+from app.engine.offline.describe import name_each
+from app.engine.offline.geometry import ObjectGeometry
+from app.engine.offline.grounding import Grounding, How, Part, by_kind, by_name, narrow, position, similar
+from app.engine.offline.reading.mentions import Mention
+
+_FEATURES = frozenset({PartKind.LATCH, PartKind.HANDLE})
+"""Kinds a user may name as a feature of a part that is not movable on its own ("the door latch", "the lid handle")."""
+_NUMBER_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight", 9: "nine"}
+
+
+@dataclass
+class Referents:
+    asset: ArticulatedAsset
+    obj: ObjectGeometry
+    parts: list[Part]
+    last: list[Part] = field(default_factory=list)
+    """What "it" / "them" means now: the parts the previous clause acted on."""
+    last_controls: list[Part] = field(default_factory=list)
+    last_kind: PartKind | None = None
+    referenced: set[str] = field(default_factory=set)
+    """Joints named so far ("the other door" is one not named yet)."""
+    last_object: bool = False
+    """The previous clause moved the whole object: "it" is the object."""
+    assigned: dict[str, Part] = field(default_factory=dict)
+    """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
+
+    def refuse(self, why: str, candidates: list[Part] | None = None) -> GroundingError:
+        movable = [p.describe(self.asset) for p in self.parts]
+        if candidates:
+            names = name_each(candidates, self.asset, self.obj)
+            choice = ", ".join(names[:-1]) + f" or {names[-1]}"
+            listing = "; ".join(movable)
+            return GroundingError(f"{why}: say which — {choice}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable, candidates=names)
+        listing = "; ".join(movable) if movable else "none"
+        return GroundingError(f"{why}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable)
+
+    def of_kind(self, kind: PartKind) -> list[Part]:
+        return [p for p in self.parts if p.kind is kind]
+
+    def ground(self, mention: Mention, *, prefer: list[Part] | None = None) -> Grounding:
+        """The parts ``mention`` names (pronouns and objects are the caller's: see :meth:`pronoun`)."""
+        kind = mention.kind if not mention.anaphor else (mention.kind or self.last_kind)
+        notes: list[str] = []
+        if not _qualified(mention) and not mention.plural and mention.head in self.assigned:
+            return Grounding(parts=(self.assigned[mention.head],), how="kind")
+        if kind is None:
+            candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
+            how: How = "name" if candidates else "none"
+        else:
+            candidates, how = by_kind(self.parts, kind, self.obj.up)
+            if not candidates:
+                named = [p for p in by_name(self.parts, (mention.head,), self.asset) if p.kind is None or p.kind is kind]
+                candidates, how = (named, "name") if named else ([], "none")
+            elif how == "related":
+                shown = candidates[0].kind.value if candidates[0].kind is not None else "part"
+                notes.append(f"read '{mention.words or mention.head}' as the {shown}: the asset has no {kind.value}")
+        if not candidates:
+            return Grounding()
+        owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
+            list(self.last) if mention.owner is not None else [])
+        kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced)
+        if overflow is not None:
+            return Grounding(how=how, ordinal_overflow=overflow, ambiguous=tuple(candidates))
+        if not kept:
+            return Grounding()
+        if mention.plural or mention.collective or len(kept) == 1:
+            return Grounding(parts=tuple(kept), how=how, notes=tuple(notes))
+        if self.assigned.get(mention.head) in kept:
+            return Grounding(parts=(self.assigned[mention.head],), how=how, notes=tuple(notes))
+        if prefer:
+            preferred = [p for p in kept if p in prefer]
+            if len(preferred) == 1:
+                return Grounding(parts=(preferred[0],), how=how, notes=tuple(notes))
+        front = [p for p in kept if position(p, self.obj)[0] > 0]
+        if all(p.kind is not None and info(p.kind).control for p in kept) and len(front) == 1:
+            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one on the front ({front[0].link})")
+            return Grounding(parts=(front[0],), how=how, notes=tuple(notes))
+        if not similar(kept):
+            chosen = max(kept, key=lambda p: p.geometry.size)
+            label = kind.value if kind is not None else mention.head
+            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the largest {label} ({chosen.link})")
+            return Grounding(parts=(chosen,), how=how, notes=tuple(notes))
+        return Grounding(how=how, ambiguous=tuple(kept), notes=tuple(notes))
+
+    def plan(self, mentions: list[Mention]) -> None:
+        """Different nouns in one prompt name different parts: "spin the dial, then turn the spoked handle" on
+        a safe whose two knobs are the dial and the (large, spoked) handle. Qualified mentions take their part
+        first; a noun left with one part takes it."""
+        pools: dict[tuple[str, ...], list[Mention]] = {}
+        candidates_of: dict[tuple[str, ...], list[Part]] = {}
+        for mention in mentions:
+            if mention.pronoun or mention.is_object or mention.anaphor or mention.kind is None or mention.plural or mention.collective:
+                continue
+            candidates, _ = by_kind(self.parts, mention.kind, self.obj.up)
+            if len(candidates) < 2:
+                continue
+            key = tuple(sorted(p.joint for p in candidates))
+            pools.setdefault(key, []).append(mention)
+            candidates_of[key] = candidates
+        for key, group in pools.items():
+            heads = {m.head for m in group}
+            if len(heads) < 2:
+                continue
+            taken: dict[str, Part] = {}
+            for mention in group:
+                if _qualified(mention):
+                    kept, _ = narrow(mention, candidates_of[key], self.asset, self.obj, [], set())
+                    if len(kept) == 1:
+                        taken.setdefault(mention.head, kept[0])
+            remaining = [p for p in candidates_of[key] if p not in taken.values()]
+            unassigned = heads - set(taken)
+            if len(unassigned) == 1 and len(remaining) == 1:
+                taken[unassigned.pop()] = remaining[0]
+            self.assigned.update({head: part for head, part in taken.items() if head not in self.assigned})
+
+    def resolve(self, mention: Mention, *, prefer: list[Part] | None = None) -> tuple[list[Part], list[str]]:
+        """``ground`` or refuse: the parts and the notes; raises GroundingError when the mention names
+        nothing movable or is ambiguous."""
+        found = self.ground(mention, prefer=prefer)
+        if not found.parts and not found.ambiguous and found.ordinal_overflow is None and mention.kind in _FEATURES:
+            host = self._host(mention, prefer)
+            if host is not None:
+                return host
+        label = (mention.kind.value if mention.kind is not None else mention.head) if not mention.anaphor else (
+            self.last_kind.value if self.last_kind is not None else "part")
+        if found.ordinal_overflow is not None:
+            count = found.ordinal_overflow
+            raise self.refuse(f"'{mention.words}' asks for more than there are: {self.asset.name} has "
+                              f"{_NUMBER_WORDS.get(count, str(count))} {label}{'s' if count != 1 else ''}", list(found.ambiguous) or None)
+        if found.ambiguous:
+            raise self.refuse(f"'{mention.words or mention.head}' could mean {len(found.ambiguous)} parts", list(found.ambiguous))
+        if not found.parts:
+            if mention.kind is not None and info(mention.kind).control and self.of_kind(mention.kind) == []:
+                raise self.refuse(f"the prompt mentions a {label}, but {self.asset.name} has no movable {label}")
+            raise self.refuse(f"the prompt mentions '{mention.words or mention.head}', but {self.asset.name} has no such movable part")
+        return list(found.parts), list(found.notes)
+
+    def _host(self, mention: Mention, prefer: list[Part] | None) -> tuple[list[Part], list[str]] | None:
+        """"the door latch", "the lid catch" on an asset whose latch is not a movable part: the part it
+        belongs to, named by its modifier (with a note)."""
+        from app.engine.offline.reading.mentions import kind_of_word
+
+        for word in reversed(mention.modifiers):
+            kind = kind_of_word(word)
+            if kind is None or kind is mention.kind:
+                continue
+            found = self.ground(replace(mention, kind=kind, head=word, modifiers=()), prefer=prefer)
+            if found.parts:
+                note = f"{self.asset.name} has no movable {mention.kind.value if mention.kind else mention.head}: read '{mention.words}' as the {word}"
+                return list(found.parts), [*found.notes, note]
+        return None
+
+    def pronoun(self, *, release: bool = False) -> list[Part]:
+        """What "it" / "them" refers to now ([] when nothing was named yet)."""
+        if release and self.last_controls:
+            return list(self.last_controls)
+        return list(self.last)
+
+    def remember(self, themes: list[Part], controls: list[Part]) -> None:
+        if themes or controls:
+            self.last_object = False
+        if themes:
+            self.last = list(themes)
+            kinds = [p.kind for p in themes if p.kind is not None]
+            self.last_kind = kinds[0] if kinds else self.last_kind
+        if controls:
+            self.last_controls = list(controls)
+        self.referenced.update(p.joint for p in (*themes, *controls))
+
+    def with_kind(self, mention: Mention, kind: PartKind) -> Mention:
+        return replace(mention, kind=kind, anaphor=False)
+
+
+def _qualified(mention: Mention) -> bool:
+    """The mention says which one (a side, an ordinal, a size, a row, a name, an owner)."""
+    return bool(mention.sides or mention.ordinal is not None or mention.size or mention.row is not None or mention.column is not None
+                or mention.modifiers or mention.owner is not None or mention.other)

@@ -1,0 +1,112 @@
+"""Blind prompt probe: run every prompt of an expectations file through ``artimo animate``, judge it
+mechanically, and report the rate right by prompt type — separating wrong answers that carried a
+warning, wrong refusals, and *silent* wrong answers (exit 0, no warning).
+
+Uses the probe tools of ``../shared/tools/probe`` (``run.py`` runs each prompt as a user would, one
+``artimo animate`` process per prompt; ``judge.py`` checks each trajectory against its expectation)::
+
+    python -m benchmark.probe --expect benchmark/heldout/prompts.jsonl --out out/probe-heldout
+    python -m benchmark.probe --expect ... --out ... --cli /path/to/other/artimo   # another build, e.g. a baseline
+    python -m benchmark.probe --out out/probe-heldout --judge-only                  # re-judge existing runs
+
+The assets root is ``--assets``, else ``$ARTIMO_PARTNET_EXTRA_ROOT``, else ``../shared/assets/partnet-extra``
+beside the repository; the tools folder is ``$ARTIMO_PROBE_TOOLS``, else ``../shared/tools/probe``.
+Writes ``OUT/summary.json`` and prints a table. Exit status 0 (it measures; it does not gate).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import subprocess
+import sys
+from collections import Counter, defaultdict
+from pathlib import Path
+from typing import Any
+
+REPO = Path(__file__).resolve().parents[1]
+
+
+def _default(env: str, relative: str) -> Path:
+    value = os.environ.get(env)
+    return Path(value) if value else (REPO.parent / relative)
+
+
+def _warnings(run_dir: Path) -> list[str]:
+    report = run_dir / "report.json"
+    if not report.is_file():
+        return []
+    try:
+        data = json.loads(report.read_text())
+    except (OSError, json.JSONDecodeError):
+        return []
+    return [str(w) for w in data.get("warnings", [])]
+
+
+def summarize(out: Path, expect: Path) -> dict[str, Any]:
+    verdicts = json.loads((out / "auto_verdicts.json").read_text())
+    rows = {json.loads(line)["id"]: json.loads(line) for line in expect.read_text().splitlines() if line.strip()}
+    by_type: dict[str, Counter[str]] = defaultdict(Counter)
+    cases = []
+    for verdict in verdicts:
+        expected = rows[verdict["id"]]["expect"]
+        refused = verdict["rc"] != 0
+        warnings = _warnings(out / "runs" / verdict["id"]) if not refused else []
+        if verdict["verdict"] == "RIGHT":
+            outcome = "right"
+        elif refused:
+            outcome = "wrong_refusal"
+        elif expected.get("refuse"):
+            outcome = "wrong_not_refused" if not warnings else "wrong_warned"
+        else:
+            outcome = "wrong_warned" if warnings else "wrong_silent"
+        by_type[verdict["type"]][outcome] += 1
+        by_type["all"][outcome] += 1
+        cases.append({"id": verdict["id"], "type": verdict["type"], "outcome": outcome, "prompt": verdict["prompt"], "errors": verdict["errs"],
+                      "warnings": warnings})
+    table = {kind: {"n": sum(c.values()), "right": c["right"], "rate": round(c["right"] / max(sum(c.values()), 1), 4),
+                    "wrong_warned": c["wrong_warned"], "wrong_refusal": c["wrong_refusal"],
+                    "wrong_silent": c["wrong_silent"] + c["wrong_not_refused"]} for kind, c in sorted(by_type.items())}
+    return {"expect": str(expect), "types": table, "cases": cases}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--expect", type=Path, default=REPO / "benchmark" / "heldout" / "prompts.jsonl")
+    parser.add_argument("--out", type=Path, required=True)
+    parser.add_argument("--assets", type=Path, default=None)
+    parser.add_argument("--cli", default=None, help="the artimo executable to probe (default: this environment's)")
+    parser.add_argument("--judge-only", action="store_true", help="judge and summarise runs already in --out")
+    args = parser.parse_args(argv)
+    assets = args.assets or _default("ARTIMO_PARTNET_EXTRA_ROOT", "shared/assets/partnet-extra")
+    tools = _default("ARTIMO_PROBE_TOOLS", "shared/tools/probe")
+    for path, what in ((assets, "assets root (--assets / $ARTIMO_PARTNET_EXTRA_ROOT)"), (tools, "probe tools ($ARTIMO_PROBE_TOOLS)"),
+                       (args.expect, "expectations file (--expect)")):
+        if not path.exists():
+            sys.stderr.write(f"error: {what} not found: {path}\n")
+            return 2
+    cli = args.cli or shutil.which("artimo") or str(Path(sys.executable).with_name("artimo"))
+    args.out.mkdir(parents=True, exist_ok=True)
+    env = {**os.environ, "PYOPENGL_PLATFORM": os.environ.get("PYOPENGL_PLATFORM", "egl")}
+    if not args.judge_only:
+        subprocess.run([sys.executable, str(tools / "run.py"), cli, str(args.out), str(args.expect), str(assets)], check=True, env=env)
+    judged = subprocess.run([sys.executable, str(tools / "judge.py")], env={**env, "PROBE_DIR": str(args.out), "PROBE_EXPECT": str(args.expect),
+                                                                           "PROBE_ASSETS": str(assets)}, capture_output=True, text=True)
+    (args.out / "judge.txt").write_text(judged.stdout + judged.stderr)
+    if judged.returncode != 0:
+        sys.stderr.write(judged.stderr)
+        return 2
+    summary = summarize(args.out, args.expect)
+    (args.out / "summary.json").write_text(json.dumps(summary, indent=1))
+    lines = [f"{'type':14s} {'n':>4s} {'right':>6s} {'rate':>6s} {'warned':>7s} {'refused':>8s} {'silent':>7s}"]
+    for kind, row in summary["types"].items():
+        lines.append(f"{kind:14s} {row['n']:4d} {row['right']:6d} {row['rate']:6.1%} {row['wrong_warned']:7d} {row['wrong_refusal']:8d} {row['wrong_silent']:7d}")
+    lines.append(f"details: {args.out / 'summary.json'}, judge output: {args.out / 'judge.txt'}")
+    sys.stdout.write("\n".join(lines) + "\n")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
