@@ -13,10 +13,10 @@ from pathlib import Path
 from typing import Literal, get_args
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import ExportError
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.track import ExportTrack, build_track
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 
 ExportName = Literal["usd", "mjcf", "ros", "csv", "npz"]

@@ -18,9 +18,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import Action as CausalAction
+from app.engine.contracts.causal import CausalDocument
 from app.engine.interaction.model import Action, ActuatedPhase, ActuationKind
-from app.engine.plan.causal import Action as CausalAction
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import BaseVelocity, BaseVelocityDecay, JointPosition, JointVelocity, Plan, Segment
 
 VERB_ACTIONS: dict[str, Action] = {

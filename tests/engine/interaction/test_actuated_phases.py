@@ -10,9 +10,9 @@ import pytest
 
 from app.engine.asset.loader import load_asset
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.contracts.causal import CausalDocument
 from app.engine.interaction.model import ActuatedPhase
 from app.engine.interaction.phases import actuated_phases, driving_joint
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 
 
