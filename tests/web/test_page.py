@@ -151,10 +151,21 @@ def test_what_happened(probe: PageProbe, served: Served) -> None:
     first = bands.nth(0)
     assert first.text_content() == plan["timeline"][0]["name"]
     explain = page.locator("[data-testid=explain]")
-    assert explain.locator(".chain .node.control").first.text_content().startswith("press pedal")
-    assert "lid_hinge → lower_limit" in explain.text_content()
+    with served.client() as client:
+        causal = client.get(f"/v1/animations/{state['job_id']}/causal.json").json()
+    action = causal["causal"]["action"]
+    control = explain.locator(".chain .node.control").first.text_content()
+    assert action["target_role"] == "control" and control.startswith(f"{action['primitive']} {action['target_link']}")
+    for target in causal["causal"]["effects"]["joint_targets"]:
+        assert f"{target['joint']} → {target['to']}" in explain.text_content()
+    with served.client() as client:
+        report = client.get(f"/v1/animations/{state['job_id']}/report.json").json()
     understood = page.text_content("[data-testid=understanding]")
-    assert "no per-clause explanation in this report" in understood or page.locator("table[data-testid=understanding] tr").count() > 1
+    if report.get("understanding"):  # one row per clause, nested steps and moves as tables
+        assert page.locator("table[data-testid=understanding] > tbody > tr").count() == len(report["understanding"])
+        assert "pedal_pivot" in understood and "lid_hinge" in understood
+    else:
+        assert "no per-clause explanation in this report" in understood
     assert "accepted" in page.text_content("[data-testid=critic-rounds]")
     assert "perceive" in page.text_content("[data-testid=timings]")
     links = page.eval_on_selector_all("[data-testid=artifact-links] a", "as => as.map(a => [a.dataset.name, a.href])")

@@ -64,14 +64,23 @@ export function show(value) {
   return JSON.stringify(value);
 }
 
-/** A table with one column per key found in any row (rows are plain objects). */
+const isObject = (value) => value !== null && typeof value === "object" && !Array.isArray(value);
+
+/** A cell for any JSON value: lists of objects become nested tables, objects key: value lines. */
+function cell(value) {
+  if (Array.isArray(value) && value.length && value.every(isObject)) return genericTable(value);
+  if (isObject(value)) return Object.entries(value).map(([key, item]) => h("div", {}, h("span", { class: "muted" }, `${key}: `), cell(item)));
+  return show(value);
+}
+
+/** A table with one column per key found in any row (rows are plain objects, any nesting). */
 export function genericTable(rows, { testid, emptyText = "nothing" } = {}) {
   if (!rows || rows.length === 0) return h("p", { class: "muted", testid }, emptyText);
   const keys = [];
   for (const row of rows) for (const key of Object.keys(row || {})) if (!keys.includes(key)) keys.push(key);
   return h("table", { class: "grid", testid },
     h("thead", {}, h("tr", {}, keys.map((key) => h("th", {}, key)))),
-    h("tbody", {}, rows.map((row) => h("tr", {}, keys.map((key) => h("td", {}, show(row?.[key])))))));
+    h("tbody", {}, rows.map((row) => h("tr", {}, keys.map((key) => h("td", {}, cell(row?.[key])))))));
 }
 
 export function statusBadge(status) {
