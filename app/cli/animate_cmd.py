@@ -68,6 +68,10 @@ def _animate(args: argparse.Namespace) -> int:
         roles=roles, config=config, out_dir=args.out, observer=_Progress(),
     )
     report = result.report
+    from app.engine.offline.explain import lines
+
+    for line in lines(report.understanding):
+        out(line)
     for warning in report.warnings:
         out(f"note: {warning}")
     out(f"critic: {report.final_state}")

@@ -7,11 +7,11 @@ import logging
 import sys
 from collections.abc import Sequence
 
-from app.cli import animate_cmd, asset_cmds, bench_cmd, keys_cmd, serve_cmd, submit_cmd
+from app.cli import animate_cmd, asset_cmds, bench_cmd, keys_cmd, plan_cmd, serve_cmd, submit_cmd
 from app.cli.output import err
 from app.engine.errors import EngineError
 
-COMMAND_MODULES = (asset_cmds, animate_cmd, bench_cmd, serve_cmd, keys_cmd, submit_cmd)
+COMMAND_MODULES = (asset_cmds, animate_cmd, plan_cmd, bench_cmd, serve_cmd, keys_cmd, submit_cmd)
 
 
 def build_parser() -> argparse.ArgumentParser:

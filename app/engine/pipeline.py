@@ -17,12 +17,13 @@ from pathlib import Path
 from typing import Protocol
 
 from app.engine.agents.loop import refine
-from app.engine.agents.roles import Context, Roles
+from app.engine.agents.roles import Context, Perception, Roles
 from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.bundle import REPORT_FILE, write_animation, write_preview, write_report
 from app.engine.config import EngineConfig
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import CancelledError, EngineError, RenderError
 from app.engine.files import atomic_write_bytes
 from app.engine.report import AssetSummary, RunReport, StageClock
@@ -47,6 +48,8 @@ class PipelineRequest:
     max_critic_rounds: int | None = None
     fps: int | None = None
     """Frame rate of the output (24 or 30); ``None`` keeps the planner's."""
+    causal: CausalDocument | None = None
+    """Re-plan from this Causal.json instead of perceiving the prompt (``artimo plan``): the perceiver is skipped."""
 
 
 @dataclass
@@ -100,7 +103,12 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             images = _images(asset, config, run.out_dir) if config.render_images else {}
             context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config, images=images)
         with run.stage("perceive"):
-            perception = await roles.perceiver.perceive(context)
+            if request.causal is not None:
+                perception = perception_of(request.causal, asset, request.prompt)
+                report.models["perceiver"] = "causal.json (given)"
+                report.warnings.append("re-planned from a given causal.json: the perceiver did not run")
+            else:
+                perception = await roles.perceiver.perceive(context)
             report.role_calls.extend(perception.calls)
             report.warnings.extend(perception.intent.notes)
             report.understanding = list(perception.understanding)
@@ -139,6 +147,14 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
         write_report(run.out_dir, report)
         raise
     return PipelineResult(out_dir=run.out_dir, report=report, outputs=report.outputs)
+
+
+def perception_of(document: CausalDocument, asset: ArticulatedAsset, prompt: str = "") -> Perception:
+    """What a perceiver would have handed on, read back from a Causal.json (ours or a model's)."""
+    from app.engine.offline.contract_io import extension_of
+    from app.engine.offline.tracker import resolve_steps
+
+    return Perception(causal=document, intent=resolve_steps(extension_of(document, asset), asset, prompt))
 
 
 def run_pipeline(

@@ -21,7 +21,15 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.causal import Action as CausalAction
 from app.engine.contracts.causal import CausalDocument
 from app.engine.interaction.model import Action, ActuatedPhase, ActuationKind
-from app.engine.plan.schema import BaseVelocity, BaseVelocityDecay, JointPosition, JointVelocity, Plan, Segment
+from app.engine.plan.schema import (
+    BaseVelocity,
+    BaseVelocityDecay,
+    BaseYawRate,
+    JointPosition,
+    JointVelocity,
+    Plan,
+    Segment,
+)
 
 VERB_ACTIONS: dict[str, Action] = {
     "press": "push", "push": "push", "pull": "pull", "turn": "turn", "twist": "turn", "rotate": "turn", "spin": "turn",
@@ -35,7 +43,7 @@ def _moved_joints(segment: Segment) -> list[str]:
 
 
 def _moves_base(segment: Segment) -> bool:
-    return any(isinstance(c, BaseVelocity | BaseVelocityDecay) for c in segment.controls)
+    return any(isinstance(c, BaseVelocity | BaseVelocityDecay | BaseYawRate) for c in segment.controls)
 
 
 def driving_joint(asset: ArticulatedAsset, link: str) -> str | None:

@@ -35,6 +35,24 @@ class Outcome:
     state: str
 
 
+def replan(name: str, causal_json: str, *, collisions: bool = True) -> Plan:
+    """The final plan made from a causal.json text alone (planner + critic loop, no perceiver)."""
+    from app.engine.pipeline import perception_of
+
+    model = asset(name)
+    roles = offline_roles()
+    config = EngineConfig(check_collisions=collisions)
+    context = Context(asset=model, prompt="", joint_summary=joint_summary(model), scale=scale_context(model), config=config)
+
+    async def run() -> Plan:
+        perception = perception_of(CausalDocument.model_validate_json(causal_json), model)
+        planned = await roles.planner.plan(context, perception)
+        refined = await refine(context, perception, planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
+        return refined.plan
+
+    return asyncio.run(run())
+
+
 def animate(name: str, prompt: str, *, collisions: bool = True) -> Outcome:
     model = asset(name)
     roles = offline_roles()
