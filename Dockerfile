@@ -4,6 +4,14 @@
 #   docker build -t artimo .
 #   docker run --rm -e ARTIMO_API_KEY=... -p 8000:8000 artimo          # API (embedded SQLite unless DATABASE_URL/REDIS_URL)
 #   docker run --rm artimo celery -A workers.celery_app worker         # a worker
+# Front-end packages of the page and the API docs (three.js, Swagger UI, Redoc) from the npm
+# registry, with Debian's Node.js; only the installed folder goes into the image.
+FROM python:3.11-slim AS web
+RUN apt-get update && apt-get install -y --no-install-recommends nodejs npm && rm -rf /var/lib/apt/lists/*
+WORKDIR /web
+COPY app/web/package.json app/web/package-lock.json app/web/.npmrc ./
+RUN npm ci --no-audit --no-fund --ignore-scripts --legacy-peer-deps
+
 FROM python:3.11-slim
 
 ENV PYTHONDONTWRITEBYTECODE=1 \
@@ -40,6 +48,7 @@ COPY workers ./workers
 COPY benchmark ./benchmark
 COPY prompts ./prompts
 COPY migrations ./migrations
+COPY --from=web /web/node_modules ./app/web/node_modules
 RUN pip install --no-deps -e . && python -c "import app.engine, workers.broker"
 
 USER artimo

@@ -77,3 +77,4 @@ rm -rf "$OUT"
 "$PY" -m tests.support.gltf_validator "$OUT/animation.glb"
 stop_server
 echo "demo: job run by the embedded service, outputs in $OUT"
+echo "to look at results in the browser: $ARTIMO serve  (then open the Page: link it prints)"

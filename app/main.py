@@ -16,10 +16,11 @@ from app.api.metrics import MetricsMiddleware
 from app.core.config import Settings, get_settings
 from app.core.logging import configure_logging
 from app.db.migrate import upgrade
+from app.web.mount import install_web
 
 logger = logging.getLogger(__name__)
 
-DESCRIPTION = """Text-driven articulated mesh animation as a service.
+DESCRIPTION = """Text-driven articulated mesh animation as a service (the page at `/` shows and corrects results).
 
 Upload a URDF asset (one `.zip`, or the URDF and its meshes) with a prompt to
 `POST /v1/animations`, poll the returned `url`, download `animation.glb`.
@@ -49,10 +50,12 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     ``settings`` replaces :func:`get_settings` for this app (tests, embedding); by default
     every request reads the cached environment settings.
     """
-    app = FastAPI(title="ArtiMo", version="0.1.0", description=DESCRIPTION, lifespan=lifespan)
+    app = FastAPI(title="ArtiMo", version="0.1.0", description=DESCRIPTION, lifespan=lifespan,
+                  docs_url=None, redoc_url=None)  # local copies instead (app.web.mount): no CDN
     app.state.settings = settings  # read by app.api.deps.app_settings
     install_error_handlers(app)
     app.include_router(api_router)
+    install_web(app)
     app.add_middleware(MetricsMiddleware)
     app.add_middleware(AdmissionMiddleware, max_in_flight=(settings or get_settings()).api_max_in_flight)
     return app

@@ -44,6 +44,7 @@ from workers.celery_app import app
 from workers.lease import job_lease, probe_engine
 from workers.observer import JobObserver
 from workers.outputs import clear_outputs, fetch_asset, publish_outputs
+from workers.plan_jobs import is_plan_job, run_plan_job
 
 logger = logging.getLogger(__name__)
 
@@ -125,6 +126,9 @@ def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObse
         config = config.model_copy(update={"exports": tuple(claim.options["exports"])})
     rounds = claim.options.get("max_critic_rounds")
     try:
+        if is_plan_job(claim.options):  # a submitted plan: executor and exporters only
+            run_plan_job(claim.options, asset_zip, out_dir, observer, settings)
+            return _Result(JobStatus.succeeded, timings=_timings(out_dir))
         fps = claim.options.get("fps")
         request = PipelineRequest(asset=asset_zip, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds),
                                   fps=None if fps is None else int(fps))

@@ -15,6 +15,11 @@ import asyncio
 
 from starlette.types import ASGIApp, Receive, Scope, Send
 
+STREAM_SUFFIX = "/events"
+"""Server-sent event streams (app/api/routes/events.py) stay open for seconds while holding neither
+a thread nor a database connection between polls: they are not counted (else a few open pages
+would take every slot)."""
+
 
 class AdmissionMiddleware:
     """Pure ASGI middleware: a semaphore around every HTTP request (lifespan passes through)."""
@@ -25,7 +30,7 @@ class AdmissionMiddleware:
         self._slots: asyncio.Semaphore | None = None
 
     async def __call__(self, scope: Scope, receive: Receive, send: Send) -> None:
-        if scope["type"] != "http":
+        if scope["type"] != "http" or str(scope.get("path", "")).endswith(STREAM_SUFFIX):  # see STREAM_SUFFIX
             await self.app(scope, receive, send)
             return
         if self._slots is None:  # created inside the server's event loop

@@ -6,6 +6,7 @@ import hmac
 import logging
 import threading
 import time
+import uuid
 from collections.abc import AsyncIterator
 from functools import lru_cache
 from pathlib import Path
@@ -19,6 +20,7 @@ from sqlalchemy.orm import Session
 from app.api.errors import RateLimited, Unauthorized
 from app.api.queue import Enqueuer, celery_enqueuer
 from app.api.ratelimit import MemoryRateLimiter, RateLimiter, make_rate_limiter
+from app.api.signing import PAGE_TOKEN_PREFIX, page_token_client
 from app.core.config import Settings, get_settings
 from app.core.storage import LocalStorage, Storage
 from app.crud.clients import client_by_key, ensure_client_for_key, hash_key
@@ -129,6 +131,10 @@ def _authenticate(session: Session, settings: Settings, key: str) -> ApiClient |
 
 
 def _lookup(session: Session, settings: Settings, key: str) -> ApiClient | None:
+    if key.startswith(PAGE_TOKEN_PREFIX):  # the page's signed sign-in link (app.api.signing)
+        client_id = page_token_client(settings, key)
+        found = None if client_id is None else session.get(ApiClient, uuid.UUID(client_id))
+        return None if found is None or found.disabled else found
     client = client_by_key(session, key=key)
     if client is not None:
         return client

@@ -156,7 +156,10 @@ def _serve(args: argparse.Namespace) -> int:
     began = time.monotonic()
     try:
         out(f"ArtiMo service on http://{args.host}:{args.port}  (data: {settings.data_dir}, broker: {broker})")
-        out(_api_key(settings))
+        key_line, client_id = _api_key(settings)
+        out(key_line)
+        if settings.database_url is None:  # embedded mode: a link that opens the page signed in
+            out(f"Page: {_page_url(settings, args, client_id)}")
         sys.stdout.flush()
         return _run_api(args, received)
     finally:
@@ -198,20 +201,31 @@ def _run_api_processes(config: uvicorn.Config) -> int:
     return 0
 
 
-def _api_key(settings: Settings) -> str:
-    """The line telling the user which API key to use (a generated key is shown only once)."""
+def _api_key(settings: Settings) -> tuple[str, str]:
+    """The line telling the user which API key to use (a generated key is shown only once), and its client's id."""
     from sqlalchemy import select
 
-    from app.crud.clients import create_api_client
+    from app.crud.clients import create_api_client, ensure_client_for_key
     from app.db.models import ApiClient
     from app.db.session import session_factory
 
-    if settings.artimo_api_key is not None:
-        return f"API key: the value of $ARTIMO_API_KEY ({settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]}...)"
     with session_factory(settings.sqlalchemy_url)() as session:
+        if settings.artimo_api_key is not None:
+            client = ensure_client_for_key(session, key=settings.artimo_api_key.get_secret_value())
+            shown = settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]
+            return f"API key: the value of $ARTIMO_API_KEY ({shown}...)", str(client.id)
         existing = session.execute(select(ApiClient).where(ApiClient.name == EMBEDDED_CLIENT)).scalars().first()
         if existing is not None:
             return (f"API key: the '{EMBEDDED_CLIENT}' key printed when {settings.data_dir} was first served "
-                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME")
-        _, key = create_api_client(session, name=EMBEDDED_CLIENT)
-    return f"API key (shown once, stored hashed): {key}"
+                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME"), str(existing.id)
+        client, key = create_api_client(session, name=EMBEDDED_CLIENT)
+        return f"API key (shown once, stored hashed): {key}", str(client.id)
+
+
+def _page_url(settings: Settings, args: argparse.Namespace, client_id: str) -> str:
+    """The page's address with a signed, expiring sign-in token in its fragment (never sent to the server)."""
+    from app.api.signing import page_token
+
+    host = "127.0.0.1" if args.host in ("0.0.0.0", "::", "") else args.host
+    host = f"[{host}]" if ":" in host else host
+    return f"http://{host}:{args.port}/#login={page_token(settings, client_id, settings.page_login_ttl_s)}"

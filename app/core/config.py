@@ -31,6 +31,11 @@ class Settings(BaseSettings):
     """An accepted API key (so the embedded service works out of the box)."""
     artimo_storage_dir: Path | None = None
     """Artifacts and uploads; default ``$ARTIMO_DATA_DIR/storage``."""
+    artimo_link_secret: SecretStr | None = None
+    """Key signing share links and the page's sign-in link; default a random key kept in
+    ``$ARTIMO_DATA_DIR/link-secret`` (set it when several API hosts must accept each other's links)."""
+    page_login_ttl_s: int = Field(default=7 * 24 * 3600, gt=0)
+    """How long the sign-in link ``artimo serve`` prints stays valid."""
 
     max_upload_bytes: int = Field(default=256 * 1024 * 1024, gt=0)
     max_upload_files: int = Field(default=2000, gt=0)

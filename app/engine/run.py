@@ -17,6 +17,9 @@ from app.engine.report import AssetSummary, RunReport, StageClock
 
 logger = logging.getLogger(__name__)
 
+PLAN_STATE = "plan executed as given: executor and exporters only (no perceiver, planner or critic)"
+"""``report.json``'s ``final_state`` of a run-plan run (its ``provider`` is ``plan``)."""
+
 
 def run_plan(
     asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], out_dir: str | Path, *,
@@ -50,6 +53,7 @@ def run_plan(
     report = RunReport(
         asset=AssetSummary.of(model),
         provider="plan",
+        final_state=PLAN_STATE,
         warnings=warnings,
         events=[e for e in trajectory.events if e not in checked.warnings],
         stages=clock.stages,

@@ -5,13 +5,14 @@ from __future__ import annotations
 import uuid
 from typing import Any, Literal
 
-from pydantic import BaseModel, ConfigDict, Field, field_validator
+from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from app.db.models import JobStatus
 from app.schemas.common import Name, Text, UtcDatetime
 
 MAX_PROMPT_CHARS = 2000
 MAX_MODEL_NAME_CHARS = 200
+MAX_PLAN_CHARS = 1_000_000
 
 
 class JobOptions(BaseModel):
@@ -58,19 +59,31 @@ class JobOptions(BaseModel):
 
 
 class JobCreate(JobOptions):
-    """The text fields of ``POST /v1/animations`` (the asset comes as file(s) or ``asset_ref``)."""
+    """The text fields of ``POST /v1/animations`` (the asset comes as file(s) or ``asset_ref``).
 
-    prompt: Text = Field(min_length=1, max_length=MAX_PROMPT_CHARS)
+    ``prompt`` runs the whole pipeline; ``plan`` (a Plan.json document as JSON text) instead
+    runs only the executor and the exporters, and ``prompt`` is then an optional label.
+    """
+
+    prompt: Text | None = Field(default=None, min_length=1, max_length=MAX_PROMPT_CHARS)
+    plan: Text | None = Field(default=None, min_length=1, max_length=MAX_PLAN_CHARS,
+                              description="Plan.json (JSON text) to execute instead of a prompt")
 
     @field_validator("prompt")
     @classmethod
-    def _not_blank(cls, value: str) -> str:
-        if not value.strip():
+    def _not_blank(cls, value: str | None) -> str | None:
+        if value is not None and not value.strip():
             raise ValueError("the prompt is blank")
-        return value.strip()
+        return None if value is None else value.strip()
+
+    @model_validator(mode="after")
+    def _prompt_or_plan(self) -> JobCreate:
+        if self.prompt is None and self.plan is None:
+            raise ValueError("send a 'prompt' (or a 'plan' to execute)")
+        return self
 
     def stored(self) -> dict[str, Any]:
-        return self.model_dump(exclude_none=True, exclude={"prompt"})
+        return self.model_dump(exclude_none=True, exclude={"prompt", "plan"})
 
 
 class JobAccepted(BaseModel):

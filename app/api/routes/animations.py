@@ -5,7 +5,7 @@ from __future__ import annotations
 import logging
 import uuid
 from functools import partial
-from typing import Annotated
+from typing import Annotated, Any
 
 from fastapi import APIRouter, Query, Request, Response, status
 from fastapi.concurrency import run_in_threadpool
@@ -15,6 +15,7 @@ from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, Storag
 from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
 from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder, validate_fields
 from app.api.intake import asset_by_ref, store_upload
+from app.api.plan_jobs import PLAN_LABEL, accept_plan, take_plan_file
 from app.api.presenters import job_public, job_url
 from app.api.queue import Enqueuer, dispatch_jobs
 from app.crud import jobs as crud_jobs
@@ -26,13 +27,14 @@ logger = logging.getLogger(__name__)
 router = APIRouter(prefix="/v1/animations", tags=["animations"])
 
 MAX_OFFSET = 1_000_000_000
-JOB_FIELDS = ("prompt", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds", "preview", "exports")
+JOB_FIELDS = ("prompt", "plan", "provider", "perceiver_model", "planner_model", "critic_model", "fps", "max_critic_rounds", "preview", "exports")
 _TEXT = {"type": "string"}
 SUBMIT_BODY = multipart_openapi(
     {
         "asset": ASSET_FILES_SCHEMA,
         "asset_ref": {"type": "string", "maxLength": 100, "description": "instead of files: an asset id or sha256 from POST /v1/assets"},
         "prompt": {"type": "string", "minLength": 1, "maxLength": MAX_PROMPT_CHARS},
+        "plan": {"type": "string", "description": "instead of a prompt: a Plan.json to execute and export (text up to 64 KiB, or a file part)"},
         "provider": {**_TEXT, "description": "offline (default), openai or gemini"},
         "perceiver_model": _TEXT, "planner_model": _TEXT, "critic_model": _TEXT,
         "fps": {"type": "integer", "enum": [24, 30]},
@@ -40,13 +42,15 @@ SUBMIT_BODY = multipart_openapi(
         "preview": {"type": "boolean", "description": "also render preview.gif (an animated GIF of the result)"},
         "exports": {"type": "string", "maxLength": 100, "description": "also write these formats, comma-separated: usd, mjcf, ros, csv, npz"},
     },
-    ["prompt"],
+    [],
 )
 ERRORS = error_responses(401, 404, 429)
 
 
-def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer) -> Job:
-    job = crud_jobs.create_job(session, client=client, asset=asset, prompt=spec.prompt, options=spec.stored())
+def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer,
+               plan_options: dict[str, Any]) -> Job:
+    prompt = spec.prompt or PLAN_LABEL
+    job = crud_jobs.create_job(session, client=client, asset=asset, prompt=prompt, options={**spec.stored(), **plan_options})
     dispatch_jobs(session, [job], enqueue)
     return job
 
@@ -69,9 +73,10 @@ async def create_animation(
     request: Request, response: Response, client: ClientDep, session: SessionDep, settings: SettingsDep,
     storage: StorageDep, enqueue: EnqueuerDep,
 ) -> JobAccepted:
-    """Submit an asset (file(s) or ``asset_ref``) and a prompt; poll the returned ``url``."""
+    """Submit an asset (file(s) or ``asset_ref``) and a prompt (or a ``plan`` to execute as is); poll the returned ``url``."""
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
+        take_plan_file(form)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)
         files, ref = form.files_of("asset"), (form.value("asset_ref") or "").strip()
         if files and ref:
@@ -80,7 +85,8 @@ async def create_animation(
             asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref))
         else:
             asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client)
-    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue)
+    plan_options = {} if spec.plan is None else await run_in_threadpool(accept_plan, spec.plan, asset, storage, settings)
+    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue, plan_options)
     url = job_url(request, job.id)
     response.headers["Location"] = url
     logger.info("job %s queued for client %s", job.id, client.name)
