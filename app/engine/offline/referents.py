@@ -43,8 +43,10 @@ class Referents:
             choice = ", ".join(names[:-1]) + f" or {names[-1]}"
             listing = "; ".join(movable)
             return GroundingError(f"{why}: say which — {choice}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable, candidates=names)
-        listing = "; ".join(movable) if movable else "none"
-        return GroundingError(f"{why}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable)
+        if not movable:
+            return GroundingError(f"{why}: {self.asset.name} has no movable parts to animate (it can only move as a whole: push, lift or turn it)",
+                                  movable_parts=[])
+        return GroundingError(f"{why}. Movable parts of {self.asset.name}: {'; '.join(movable)}", movable_parts=movable)
 
     def of_kind(self, kind: PartKind) -> list[Part]:
         return [p for p in self.parts if p.kind is kind]
