@@ -217,6 +217,7 @@ class Builder:
                 self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
         self._check_motion(goal, effects_parts)
+        self._check_press(goal, sense, effects_parts)
         if elaborates(self, act, sense, effects_parts):
             return
         self.mentioned.update(p.joint for p in (*effects_parts, *(m.part for m in controls)))
@@ -248,6 +249,16 @@ class Builder:
 
     def pressed(self, part: Part) -> bool:
         return abs(self.tracker.value(part.joint) - part.geometry.rest) > REACHED
+
+    def _check_press(self, frame: Frame, sense: VerbSense, parts: list[Part]) -> None:
+        """A button that cannot go deeper into its face cannot be pressed: refuse rather than pull it out."""
+        if sense not in (VerbSense.PRESS, VerbSense.PUSH_IN, VerbSense.OPERATE):
+            return
+        for part in parts:
+            geometry = part.geometry
+            if part.kind is not None and info(part.kind).press == "into_face" and geometry.type == "prismatic" and (
+                    geometry.press_value is None or abs(geometry.press_value - self.tracker.value(part.joint)) < REACHED):
+                raise self.refs.refuse(f"'{frame.text}': the {part.kind.value} ({part.link}) cannot be pressed in any further")
 
     def _check_motion(self, frame: Frame, parts: list[Part]) -> None:
         """A verb naming a motion the part cannot make is refused, not guessed: "fold down the tray"

@@ -96,6 +96,7 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         return
     builder.append(act, sense, controls, kept, why=why)
     builder.explanation.because(notes)
+    _brief_fall(builder, act, controls, kept)
     builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or [m.part for m in controls], [m.part for m in controls])
 
 
@@ -249,6 +250,18 @@ def _hold_until_now(builder: Builder, joint: str) -> None:
         if moves != list(step.controls):
             builder.steps[index] = step.model_copy(update={"controls": moves})
             replay(builder)
+
+
+def _brief_fall(builder: Builder, act: Act, controls: list[Move], effects: list[Move]) -> None:
+    """A tap on a holding control (a pedal): what it lifted falls back once it is let go."""
+    if not (act.goal.brief or (act.means is not None and act.means.brief)):
+        return
+    if not any(mech.holds(m.part) and m.release == "self_return" for m in controls):
+        return
+    falling = [Move(m.part, "effect", Goal(state="previous"), words="") for m in effects if m.goal.state in _OPENING_STATES]
+    if falling:
+        builder.append(replace(act, means=None, results=(), wait_before_s=0.0, hold_s=0.0, parallel=False), VerbSense.RELEASE, [], falling, why="release")
+        builder.explanation.because({m.part.joint: "it falls back when the control is let go" for m in falling})
 
 
 def _let_fall(builder: Builder, controls: list[Move]) -> list[Move]:

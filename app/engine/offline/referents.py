@@ -13,6 +13,7 @@ from app.engine.lexicon.kinds import PartKind, info
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import Grounding, How, Part, by_kind, by_name, narrow, position, similar
+from app.engine.offline.naming import link_words
 from app.engine.offline.reading.mentions import Mention
 
 _FEATURES = frozenset({PartKind.LATCH, PartKind.HANDLE})
@@ -146,7 +147,8 @@ class Referents:
         if not found.parts:
             if mention.kind is not None and info(mention.kind).control and self.of_kind(mention.kind) == []:
                 raise self.refuse(f"the prompt mentions a {label}, but {self.asset.name} has no movable {label}")
-            raise self.refuse(f"the prompt mentions '{mention.words or mention.head}', but {self.asset.name} has no such movable part")
+            hint = self._did_you_mean(mention.head)
+            raise self.refuse(f"the prompt mentions '{mention.words or mention.head}', but {self.asset.name} has no such movable part{hint}")
         return list(found.parts), list(found.notes)
 
     def _host(self, mention: Mention, prefer: list[Part] | None) -> tuple[list[Part], list[str]] | None:
@@ -163,6 +165,19 @@ class Referents:
                 note = f"{self.asset.name} has no movable {mention.kind.value if mention.kind else mention.head}: read '{mention.words}' as the {word}"
                 return list(found.parts), [*found.notes, note]
         return None
+
+    def _did_you_mean(self, word: str) -> str:
+        """" (did you mean 'door'?)" when a part name of this asset is a few letters away."""
+        from rapidfuzz.distance import Levenshtein
+
+        names = {p.kind.value for p in self.parts if p.kind is not None}
+        for part in self.parts:
+            names.update(w for w in link_words(self.asset, part.link, visuals=False) if len(w) >= 3 and not w.isdigit())
+        scored = sorted((Levenshtein.distance(word, n), n) for n in names if n != word)
+        if scored and scored[0][0] <= max(2, len(word) // 3):
+            close = [n for d, n in scored if d == scored[0][0]][:2]
+            return " (did you mean " + " or ".join(f"'{n}'" for n in close) + "?)"
+        return ""
 
     def pronoun(self, *, release: bool = False) -> list[Part]:
         """What "it" / "them" refers to now ([] when nothing was named yet)."""

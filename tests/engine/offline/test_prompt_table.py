@@ -44,6 +44,8 @@ class Row:
     base: tuple[float, float, float] | None = None
     order: tuple[tuple[str, str], ...] = ()
     refuse: bool = False
+    yaw_deg: float | None = None
+    """The whole object ends turned this much about the vertical (counter-clockwise seen from above is positive)."""
 
     @property
     def id(self) -> str:
@@ -151,7 +153,8 @@ ROWS: list[Row] = [
     R("coffee_machine_103030", "lift the coffee machine lid", joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
     R("coffee_machine_103030", "turn the knob", joints={"joint_0": E(abs_end=PI / 2), "joint_2": E(still=True)}),
     R("toilet_102622", "lift the toilet lid", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
-    R("toilet_102622", "press the flush button", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
+    # the flush button rests flush and can only move outward: pressing it in is refused (not pulled out)
+    R("toilet_102622", "press the flush button", refuse=True),
     R("window_103135", "open the window", joints={"joint_0": E(end="upper")}),
     R("window_103135", "close the window", joints={"joint_0": E(end="lower")}),
     R("stapler_103099", "open the stapler", joints={"joint_0": E(end="upper")}),
@@ -353,6 +356,28 @@ ROWS: list[Row] = [
       joints={"latch_knob_turn": E(peak="lower"), "door_hinge": E(end=-PI / 2)}, order=(("latch_knob_turn", "door_hinge"),)),
     R("refrigerator_11178", "Open both fridge doors 90 degrees, left one first.",
       joints={"joint_0": E(end=PI / 2), "joint_1": E(end=PI / 2)}, order=(("joint_0", "joint_1"),)),
+    # --- agent v2: whole-object turning, reclining, spelling, ambiguity, holds, brief presses, codes, the other one ---
+    R("examples/toy_car", "turn the car around", yaw_deg=180.0),
+    R("examples/toy_car", "rotate the toy car 90 degrees clockwise on the table", yaw_deg=-90.0),
+    R("examples/pedal_bin", "spin the bin a quarter turn on the spot", yaw_deg=90.0),
+    R("laptop_10101", "recline the screen as far as it goes", joints={"joint_1": E(end="upper")}),
+    R("laptop_10101", "tilt the screen back 20 degrees", joints={"joint_1": E(end=math.radians(20))}),
+    R("laptop_10101", "open the laptop to 90 degrees", joints={"joint_1": E(end=-2.092 + PI / 2)}),
+    R("examples/microwave", "opne the microwve door all teh way", joints={"door_hinge": E(end="upper")}),
+    R("examples/oven", "pull the trey out", refuse=True),
+    R("refrigerator_11178", "open the fridge door", refuse=True),
+    R("storage_19179", "open a drawer", refuse=True),
+    R("storage_19179", "open the third drawer", refuse=True),
+    R("storage_19179", "open the top drawer, then the other one", joints={"joint_1": E(end="upper"), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("storage_19179", "open both drawers halfway", joints={"joint_0": E(end=0.5), "joint_1": E(end=0.5)}),
+    R("storage_19179", "pull the bottom drawer out 30 cm, then push it back to where it was", joints={"joint_0": E(peak=0.3)}),
+    R("trash_can_102181", "tap the pedal", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),
+    R("trash_can_102181", "keep your foot on the pedal for 2 seconds, then let go", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),
+    R("safe_101564", "press 1, 2, 3 on the keypad", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper"), "joint_2": E(peak="upper"), "joint_13": E(still=True)},
+      order=(("joint_0", "joint_1"), ("joint_1", "joint_2"))),
+    R("examples/cabinet", "open the cupboard door without touching the knob", joints={"door_hinge": E(end="lower"), "latch_knob_turn": E(still=True)}),
+    R("toilet_102622", "flush the toilet", refuse=True),
+    R("examples/toy_car", "push the car forward 20 cm, then turn it around", base=None, yaw_deg=180.0),
 ]
 
 
@@ -403,7 +428,11 @@ def test_prompt(row: Row) -> None:
     trajectory = outcome.trajectory
     for joint, expect in row.joints.items():
         _check_joint(row, joint, expect, trajectory.joint(joint))
-    if row.base is not None:
+    if row.yaw_deg is not None:
+        x, y, z, w = trajectory.base_rotation_xyzw[-1]
+        yaw = math.degrees(math.atan2(2 * (w * z + x * y), 1 - 2 * (y * y + z * z)))
+        assert yaw == pytest.approx(row.yaw_deg, abs=1.0) or abs(yaw) == pytest.approx(abs(row.yaw_deg), abs=1.0) == 180.0, f"{row.id}: yaw {yaw:.1f}"
+    elif row.base is not None:
         assert trajectory.base_translation[-1] == pytest.approx(np.array(row.base), abs=0.01), f"{row.id}: base ends at {trajectory.base_translation[-1]}"
     else:
         assert not trajectory.has_base_motion(), f"{row.id}: the object should not move as a whole"
