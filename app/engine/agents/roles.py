@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any, Protocol
 
 from app.engine.agents.critique import Critique
+from app.engine.agents.expectations import Expectations
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import JointSummary, ScaleContext
 from app.engine.config import EngineConfig
@@ -18,7 +19,7 @@ from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.intent import Intent
 from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
-from app.engine.report import RoleCall
+from app.engine.report import CoverageChoice, RoleCall
 
 
 @dataclass(frozen=True, eq=False)
@@ -32,6 +33,8 @@ class Context:
     config: EngineConfig
     images: dict[str, bytes] = field(default_factory=dict)
     """PNG images by name (reference/overlay views) when rendering is on."""
+    render: bool = False
+    """Whether to render images for the model roles (critic keyframes, coverage views)."""
 
 
 @dataclass(frozen=True)
@@ -40,18 +43,26 @@ class Perception:
     intent: Intent
     """The steps the planner schedules (decoded from ``causal`` for model providers)."""
     calls: tuple[RoleCall, ...] = ()
+    notes: tuple[str, ...] = ()
+    """Warnings for the report (e.g. a fallback to the offline perceiver)."""
 
 
 @dataclass(frozen=True)
 class Planned:
     plan: Plan
     calls: tuple[RoleCall, ...] = ()
+    notes: tuple[str, ...] = ()
 
 
 @dataclass(frozen=True)
 class Diagnosed:
     critique: Critique
     calls: tuple[RoleCall, ...] = ()
+    notes: tuple[str, ...] = ()
+    critic: str | None = None
+    """Which critic answered (``provider:model``), when it is not the role's own (a fallback)."""
+    coverage: tuple[CoverageChoice, ...] = ()
+    """The view chosen for each link the critic looked at (empty without images)."""
 
 
 class Perceiver(Protocol):
@@ -72,7 +83,7 @@ class Critic(Protocol):
     name: str
     model: str
 
-    async def critique(self, context: Context, perception: Perception, plan: Plan, trajectory: Trajectory) -> Diagnosed: ...
+    async def critique(self, context: Context, expected: Expectations, plan: Plan, trajectory: Trajectory) -> Diagnosed: ...
 
 
 @dataclass(frozen=True)
@@ -83,6 +94,8 @@ class Roles:
     critic: Critic
     closers: tuple[Any, ...] = ()
     """Model clients to close (``aclose()``) when the run ends."""
+    vision: tuple[str, ...] = ()
+    """Roles that look at images (a model perceiver or critic): rendering is on by default for them."""
 
     async def aclose(self) -> None:
         for closer in self.closers:

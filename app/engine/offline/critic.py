@@ -16,10 +16,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.engine.agents.critique import Critique, FixHint, Issue, Repairability
+from app.engine.agents.expectations import Expectations, ExpectedMotion
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.collisions import find_collisions
-from app.engine.offline.intent import Intent, JointGoal
 from app.engine.plan.schema import JointPosition, JointVelocity, Plan
 
 ANGLE_TOLERANCE = 0.02
@@ -83,14 +83,14 @@ class _Diagnosis:
         floor = LENGTH_TOLERANCE if self.asset.joints[joint].type == "prismatic" else ANGLE_TOLERANCE
         return max(floor, RELATIVE_TOLERANCE * abs(expected))
 
-    def check_target(self, goal: JointGoal, driver: _Driver) -> None:
+    def check_target(self, goal: ExpectedMotion, driver: _Driver) -> None:
         start = _value(self.trajectory, goal.joint, driver.t0)
         end = _value(self.trajectory, goal.joint, driver.t1)
         if goal.omega is not None:
             wanted = goal.omega * (driver.t1 - driver.t0)
         else:
-            assert goal.value is not None
-            wanted = goal.value - start
+            assert goal.target is not None
+            wanted = goal.target - start
         moved = end - start
         tolerance = self.tolerance(goal.joint, wanted)
         if abs(wanted) <= tolerance:
@@ -106,10 +106,10 @@ class _Diagnosis:
             code, direction = ("MOTION_TOO_SMALL", "increase") if ratio < 1 else ("EXCESSIVE_MOTION", "decrease")
             self.flag(code, driver, goal.joint, text, f"{moved:+.4g}", (kind, direction, _strength(ratio)), abs(1.0 - ratio))
 
-    def check_return(self, goal: JointGoal, drivers: list[_Driver]) -> None:
+    def check_return(self, goal: ExpectedMotion, drivers: list[_Driver]) -> None:
         rest = self.asset.joints[goal.joint].rest
         final = float(self.trajectory.joint(goal.joint)[-1])
-        if abs(final - rest) <= self.tolerance(goal.joint, goal.value - rest if goal.value is not None else 0.0):
+        if abs(final - rest) <= self.tolerance(goal.joint, goal.target - rest if goal.target is not None else 0.0):
             return
         driver = drivers[-1]
         self.flag("NO_RELEASE_RETURN", driver, goal.joint, f"back at rest {rest:.4g}", f"ends at {final:.4g}", ("adjust_timing", "increase", "extra_large"), 1.0)
@@ -128,12 +128,11 @@ class _Diagnosis:
 
     def check_limits(self, drivers: dict[str, list[_Driver]]) -> None:
         for event in self.trajectory.events:
-            if "joint_velocity" not in event or "limit" not in event:
+            if event.kind != "limit_reached" or event.mode != "joint_velocity" or event.joint is None:
                 continue
-            joint = event.split(":", 1)[0]
-            for driver in drivers.get(joint, []):
+            for driver in drivers.get(event.joint, []):
                 if driver.mode == "joint_velocity":
-                    self.flag("EXCESSIVE_MOTION", driver, joint, "stay within the joint range", event, ("adjust_joint_velocity", "decrease", "medium"), 0.5)
+                    self.flag("EXCESSIVE_MOTION", driver, event.joint, "stay within the joint range", event.message, ("adjust_joint_velocity", "decrease", "medium"), 0.5)
                     break
 
     def check_collisions(self, expected: set[str], drivers: dict[str, list[_Driver]]) -> None:
@@ -151,34 +150,29 @@ class _Diagnosis:
                       f"{hit.fraction:.0%} of it inside {hit.other_link} at t={hit.time_s:.2f} s", ("adjust_joint_target", "decrease", "medium"), hit.fraction)
 
 
-def critique(asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, intent: Intent, *, collisions: bool = True) -> Critique:
-    """Diagnose ``trajectory`` (the execution of ``plan``) against ``intent``."""
+def critique(asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, expected: Expectations, *, collisions: bool = True) -> Critique:
+    """Diagnose ``trajectory`` (the execution of ``plan``) against the ``expected`` motions."""
     diagnosis = _Diagnosis(asset, plan, trajectory)
     drivers = _drivers(plan)
     claimed: dict[str, int] = {}
-    expected: set[str] = set()
-    for step in intent.steps:
-        if step.base is not None:
-            expected.update(j for j, _ in step.base.wheels)
-        for goal in step.goals:
-            expected.add(goal.joint)
-            joint_drivers = drivers.get(goal.joint, [])
-            position = claimed.get(goal.joint, 0)
-            if position >= len(joint_drivers):
-                if joint_drivers or not diagnosis.plan.timeline:
-                    continue
-                fake = _Driver(0, plan.timeline[0].phase_type, 0.0, trajectory.duration_s, "joint_position")
-                diagnosis.flag("MOTION_TOO_SMALL", fake, goal.joint, "a control that moves it", "no control in the plan", None, 1.0)
+    for goal in expected.motions:
+        joint_drivers = drivers.get(goal.joint, [])
+        position = claimed.get(goal.joint, 0)
+        if position >= len(joint_drivers):
+            if joint_drivers or not diagnosis.plan.timeline:
                 continue
-            diagnosis.check_target(goal, joint_drivers[position])
-            claimed[goal.joint] = position + 1
-            if goal.role == "control" and goal.returns == "self_return" and not goal.sustains and goal.value is not None:
-                diagnosis.check_return(goal, joint_drivers)
-                claimed[goal.joint] = len(joint_drivers)
-    diagnosis.check_still(expected, drivers)
+            fake = _Driver(0, plan.timeline[0].phase_type, 0.0, trajectory.duration_s, "joint_position")
+            diagnosis.flag("MOTION_TOO_SMALL", fake, goal.joint, "a control that moves it", "no control in the plan", None, 1.0)
+            continue
+        diagnosis.check_target(goal, joint_drivers[position])
+        claimed[goal.joint] = position + 1
+        if goal.returns_to_rest:
+            diagnosis.check_return(goal, joint_drivers)
+            claimed[goal.joint] = len(joint_drivers)
+    diagnosis.check_still(expected.joints, drivers)
     diagnosis.check_limits(drivers)
     if collisions:
-        diagnosis.check_collisions(expected, drivers)
+        diagnosis.check_collisions(expected.joints, drivers)
     structural = any(h is None for h in diagnosis.hints) or any(i.code == "MOTION_TOO_SMALL" and i.observed == "no control in the plan" for i in diagnosis.issues)
     return Critique(
         semantic_ok=not diagnosis.issues,

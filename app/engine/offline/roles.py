@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import time
 
+from app.engine.agents.expectations import Expectations
 from app.engine.agents.roles import Context, Diagnosed, Perception, Planned, Roles
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.causal_doc import causal_from_intent, intent_from_causal
@@ -47,9 +48,9 @@ class GeometricCritic:
     name = PROVIDER
     model = RULES_VERSION
 
-    async def critique(self, context: Context, perception: Perception, plan: Plan, trajectory: Trajectory) -> Diagnosed:
+    async def critique(self, context: Context, expected: Expectations, plan: Plan, trajectory: Trajectory) -> Diagnosed:
         began = time.perf_counter()
-        result = critique(context.asset, plan, trajectory, perception.intent, collisions=context.config.check_collisions)
+        result = critique(context.asset, plan, trajectory, expected, collisions=context.config.check_collisions)
         return Diagnosed(critique=result, calls=(_call("critic", began),))
 
 
