@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from app.cli.model_options import add_model_options, engine_overrides, provider_config
 from app.cli.output import cache_dir, out
 
 
@@ -17,9 +18,7 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     run = sub.add_parser("run", help="animate every case with a provider, then evaluate")
     _common(run)
     run.add_argument("--out", type=Path, required=True, help="folder for OUT/<case_id>/ outputs, evaluation.json and report/")
-    run.add_argument("--provider", default="offline")
-    run.add_argument("--model", action="append", default=[], metavar="ROLE=NAME")
-    run.add_argument("--base-url", default=None)
+    add_model_options(run)
     run.set_defaults(handler=_run)
 
     evaluate = sub.add_parser("evaluate", help="score existing predictions PRED/<case_id>/trajectory.jsonl (or animation.glb)")
@@ -65,13 +64,12 @@ def _evaluate(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from app.cli.animate_cmd import _provider_config
     from app.engine.config import EngineConfig
     from benchmark.run import animate_cases
     from benchmark.runner import evaluate
 
-    config = EngineConfig(asset_cache_dir=cache_dir(args))
-    records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=_provider_config(args), config=config, jobs=args.jobs)
+    config = EngineConfig(asset_cache_dir=cache_dir(args), **engine_overrides(args))
+    records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=provider_config(args), config=config, jobs=args.jobs)
     failed = [r for r in records if r["status"] != "ok"]
     out(f"animated   {len(records) - len(failed)}/{len(records)} cases ({len(failed)} failed; see {args.out / 'runs.json'})")
     out_json = args.out / "evaluation.json"

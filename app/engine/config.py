@@ -26,6 +26,24 @@ class FallbackPolicy(BaseModel):
     planner: Fallback = "fail"
     critic: Fallback = "offline"
 
+    @classmethod
+    def parse(cls, text: str) -> FallbackPolicy:
+        """``"offline"``, ``"fail"`` or ``"critic=offline,planner=fail"`` (unnamed roles keep their default).
+
+        Raises
+        ------
+        ValueError
+            An unknown role or policy.
+        """
+        values: dict[str, str] = {}
+        for item in (part.strip() for part in text.split(",") if part.strip()):
+            role, sep, value = item.rpartition("=")
+            roles = [role.strip()] if sep else ["perceiver", "planner", "critic"]
+            if value.strip() not in ("offline", "fail") or any(r not in ("perceiver", "planner", "critic") for r in roles):
+                raise ValueError(f"fallback policy expects offline, fail or ROLE=offline|fail (ROLE: perceiver, planner, critic), got {item!r}")
+            values.update(dict.fromkeys(roles, value.strip()))
+        return cls(**values)  # type: ignore[arg-type]
+
 
 class EngineConfig(BaseModel):
     """Everything the pipeline may be tuned with; defaults are the documented behaviour."""

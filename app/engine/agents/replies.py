@@ -2,9 +2,9 @@
 
 Real replies wrap the object: a Markdown fence, a sentence before or after it, a
 ``<think>`` block first, comments or trailing commas inside. The first complete JSON
-object in the text (after dropping reasoning blocks) is taken: each ``{`` is tried in
-turn with the standard JSON decoder, then with the ``json5`` parser (comments, trailing
-commas, single quotes). A reply cut short has no complete object and is refused, never
+object in the text (after dropping reasoning blocks) is taken: each ``{`` in turn is read
+with the standard JSON decoder, else with the ``json5`` parser (comments, trailing commas,
+single quotes), so an outer object with a comment wins over the clean objects inside it. A reply cut short has no complete object and is refused, never
 completed by guessing. The object is then validated against the role's schema.
 """
 
@@ -60,12 +60,10 @@ def first_json_object(text: str) -> dict[str, Any]:
         try:
             value, _ = _DECODER.raw_decode(body, start)
         except json.JSONDecodeError:
-            continue
+            value, error, _ = json5.parse(body, start=start, consume_trailing=False)
+            if error:
+                continue
         if isinstance(value, dict):
-            return value
-    for start in positions:
-        value, error, _ = json5.parse(body, start=start, consume_trailing=False)
-        if not error and isinstance(value, dict):
             return value
     if not positions:
         raise NoJsonObject("the reply holds no JSON object (no '{' outside reasoning blocks)")
