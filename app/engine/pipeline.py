@@ -194,7 +194,7 @@ def run_pipeline(
         try:
             report = asyncio.run(_main(request, roles, config or EngineConfig(), _Run(staging.path, observer, should_stop)))
         except EngineError:
-            staging.publish()
+            staging.publish(only=(REPORT_FILE,))
             raise
         staging.publish()
     return PipelineResult(out_dir=target, report=report, outputs=report.outputs)

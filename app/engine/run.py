@@ -38,7 +38,7 @@ def run_plan(
             report = _run(asset, plan, staging.path, clock, cache_dir=cache_dir, preview=preview)
         except EngineError as exc:
             _failure_report(asset, exc, clock, staging.path)
-            staging.publish()
+            staging.publish(only=(REPORT_FILE,))
             raise
         staging.publish()
     return report

@@ -51,9 +51,10 @@ class Staging:
     def __exit__(self, *_: object) -> None:
         self.discard()
 
-    def publish(self) -> list[str]:
-        """Replace the previous run's outputs in ``out_dir`` with the staged ones; returns the names moved."""
-        staged = sorted(p.name for p in self.path.iterdir())
+    def publish(self, *, only: tuple[str, ...] | None = None) -> list[str]:
+        """Replace the previous run's outputs in ``out_dir`` with the staged ones (or just ``only`` of them: a
+        failed run publishes its report alone); returns the names moved."""
+        staged = sorted(p.name for p in self.path.iterdir() if only is None or p.name in only)
         stale = self.out_dir / MARKER
         if stale.exists():
             stale.unlink()
