@@ -21,6 +21,16 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     add_model_options(run)
     run.set_defaults(handler=_run)
 
+    critic = sub.add_parser("critic", help="inject known failures into correct plans; report critic detection and repair per class")
+    critic.add_argument("--cases", type=Path, required=True, help="JSON Lines, one case per line (SPEC §5)")
+    critic.add_argument("--assets", type=Path, required=True, help="folder holding the cases' asset folders")
+    critic.add_argument("--out", type=Path, default=None, help="write the results as JSON (classes, cases)")
+    critic.add_argument("--jobs", type=int, default=1, help="worker processes (results do not depend on it)")
+    critic.add_argument("--rounds", type=int, default=3, help="critic-actor repair rounds (default 3)")
+    critic.add_argument("--class", dest="classes", action="append", default=[], metavar="CODE", help="only these failure classes (repeatable)")
+    add_model_options(critic)
+    critic.set_defaults(handler=_critic)
+
     evaluate = sub.add_parser("evaluate", help="score existing predictions PRED/<case_id>/trajectory.jsonl (or animation.glb)")
     _common(evaluate)
     evaluate.add_argument("--pred", type=Path, required=True)
@@ -77,4 +87,28 @@ def _run(args: argparse.Namespace) -> int:
     _print_summary(document)
     out(f"scores     {out_json}")
     _report(args, out_json, args.out)
+    return 0
+
+
+def _critic(args: argparse.Namespace) -> int:
+    from app.engine.config import EngineConfig
+    from app.engine.errors import MetricError
+    from app.engine.files import atomic_write_text
+    from benchmark.critic_bench import critic_bench, table_lines
+    from benchmark.critic_injection import CLASSES
+
+    unknown = [c for c in args.classes if c not in CLASSES]
+    if unknown:
+        raise MetricError(f"unknown failure class(es) {', '.join(unknown)} (classes: {', '.join(CLASSES)})")
+    config = EngineConfig(asset_cache_dir=cache_dir(args), **engine_overrides(args))
+    document = critic_bench(args.cases, args.assets, provider=args.provider, provider_config=provider_config(args), config=config,
+                            max_rounds=args.rounds, classes=tuple(args.classes) or CLASSES, jobs=args.jobs)
+    for line in table_lines(document):
+        out(line)
+    errors = [c for c in document["cases"] if c.get("class") == "case_error"]
+    if errors:
+        out(f"{len(errors)} case(s) could not be run: " + "; ".join(f"{c['case_id']}: {c['error']}" for c in errors[:3]))
+    if args.out is not None:
+        atomic_write_text(args.out, json.dumps(document, indent=2) + "\n")
+        out(f"results    {args.out}")
     return 0

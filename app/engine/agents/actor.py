@@ -1,7 +1,8 @@
 """The actor: apply a critic's bounded hints to a plan, deterministically, parameters only.
 
 One explicit decision per (segment, joint): the hint's type and direction map to one
-numeric change (strength factors 1.10 / 1.20 / 1.35 / 2.00). Targets are resolved to
+numeric change (strength factors 1.10 / 1.20 / 1.35 / 2.00, or the hint's measured
+``factor`` when the critic gives one, at most 2). Targets are resolved to
 numbers (the expression is dropped once the number changes), so every target can be
 increased, decreased, flipped or zeroed; results are clamped to the URDF limits. Joint
 identity, control mode and the phase graph never change. The plan stays a typed
@@ -28,7 +29,7 @@ def _value_at(trajectory: Trajectory | None, joint: str, time: float, rest: floa
 
 
 def _factor(hint: FixHint) -> float:
-    return STRENGTH_FACTOR[hint.strength or "medium"]
+    return hint.factor if hint.factor is not None else STRENGTH_FACTOR[hint.strength or "medium"]
 
 
 def _new_target(control: JointPosition, hint: FixHint, asset: ArticulatedAsset, start: float) -> tuple[float, float]:

@@ -21,6 +21,8 @@ ChangeKind = Literal["target", "velocity", "timing"]
 UNDO_TOLERANCE = 1e-6
 """Relative difference under which a patched value equals an earlier one."""
 STRENGTH_FACTOR: dict[str, float] = {"small": 1.10, "medium": 1.20, "large": 1.35, "extra_large": 2.00}
+MAX_FACTOR = 2.0
+"""Largest change one hint may make (the extra_large strength)."""
 ISSUE_SEVERITY: dict[str, float] = {
     "WRONG_DIRECTION": 3.0, "MOTION_TOO_SMALL": 2.0, "EXCESSIVE_MOTION": 2.0, "UNEXPECTED_EXTRA_MOTION": 2.0, "NO_RELEASE_RETURN": 1.0,
 }
@@ -50,6 +52,9 @@ class FixHint(_Model):
     direction: HintDirection
     strength: Strength | None = None
     why: str = ""
+    factor: Annotated[float, Field(ge=1.0, le=MAX_FACTOR)] | None = None
+    """Our addition: the exact factor for increase/decrease (the geometric critic measures it); the
+    actor uses it instead of the strength's factor. Model critics give the strength only."""
 
 
 class Repairability(_Model):
