@@ -21,7 +21,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from app.engine.agents.expectations import ExpectedMotion, Expectations
+from app.engine.agents.expectations import Expectations, ExpectedMotion
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.metrics.annotation import Case
