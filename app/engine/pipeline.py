@@ -78,20 +78,12 @@ class _Run:
 
 
 def _images(asset: ArticulatedAsset, config: EngineConfig, out_dir: Path) -> dict[str, bytes]:
-    """Reference and overlay renders (PNG bytes), also written under ``out_dir/images``."""
-    import io
+    """Reference and overlay renders (PNG bytes, cached per asset), also written under ``out_dir/images``."""
+    from app.engine.render.perceiver_images import perceiver_images
 
-    from app.engine.render.views import render_overlay_views, render_reference_views
-
-    images: dict[str, bytes] = {}
-    size = config.image_size
-    for prefix, renders in (("reference", render_reference_views(asset, size=size)), ("overlay", render_overlay_views(asset, size=size))):
-        for index, image in enumerate(renders, start=1):
-            buffer = io.BytesIO()
-            image.save(buffer, format="PNG")
-            name = f"{prefix}_view_{index:02d}.png"
-            images[name] = buffer.getvalue()
-            atomic_write_bytes(out_dir / "images" / name, images[name])
+    images = perceiver_images(asset, config.image_size, config.asset_cache_dir)
+    for name, data in images.items():
+        atomic_write_bytes(out_dir / "images" / name, data)
     return images
 
 

@@ -21,7 +21,6 @@ from app.engine.agents.replies import NoJsonObject, parse_reply
 from app.engine.errors import ExpressionError, PlanValidationError, ProviderError, ReplyTruncated, RoleOutputError
 from app.engine.plan.checks import pydantic_issues
 from app.engine.providers.base import ChatModel, Image, Message, ModelRequest, ModelResponse
-from app.engine.providers.schemas import gemini_schema, json_schema
 from app.engine.report import RoleCall, TokenUsage, TransportAttempt
 
 M = TypeVar("M", bound=BaseModel)
@@ -90,8 +89,7 @@ async def ask(
     limit = model.profile.max_output_tokens
     problems: list[str] = []
     for attempt in range(1, attempts + 1):
-        request = ModelRequest(system=prompt.system, messages=tuple(messages), schema=json_schema(schema), schema_name=schema.__name__,
-                               gemini_schema=gemini_schema(schema), max_output_tokens=limit)
+        request = ModelRequest(system=prompt.system, messages=tuple(messages), reply_model=schema, max_output_tokens=limit)
         try:
             response = await model.complete(request)
         except ReplyTruncated as exc:

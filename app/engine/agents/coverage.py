@@ -41,6 +41,7 @@ from app.engine.types import Transforms
 
 VIEW_SIZE = (800, 600)
 MAX_PROPOSALS = 4
+PNG_COMPRESS_LEVEL = 3
 
 
 class CameraView(BaseModel):
@@ -94,25 +95,34 @@ def check_reply(reply: CoverageReply, required: list[str], current: list[ViewSpe
         raise PlanValidationError("coverage reply does not fit the scene", issues=problems)
 
 
-def _annotated_views(asset: ArticulatedAsset, links: list[str], views: list[ViewSpec]) -> list[Image]:
-    """Textured renders at rest with boxes and labels on ``links`` only (EGL)."""
-    from app.engine.render.annotate import annotate_links, draw_axis_legend
+def _annotated_views(asset: ArticulatedAsset, links: list[str], views: list[ViewSpec], rendered: list[bytes] | None = None) -> list[Image]:
+    """Textured renders at rest with boxes and labels on ``links`` only; ``rendered`` reuses the perceiver's reference PNGs."""
+    from PIL import Image as PILImage
+
+    from app.engine.asset.kinematics import rest_poses
+    from app.engine.render.annotate import annotate_links, legend_box
     from app.engine.render.palette import link_colors, link_labels
     from app.engine.render.views import render_reference_views, view_cameras
 
     colors = {link: color for link, color in link_colors(asset).items() if link in links}
+    cameras = view_cameras(asset, views=views, size=VIEW_SIZE)
+    pictures = [PILImage.open(io.BytesIO(data)).convert("RGB") for data in rendered] if rendered else render_reference_views(asset, views=views, size=VIEW_SIZE)
+    poses, labels = rest_poses(asset), link_labels(asset)
     images = []
-    for index, (picture, camera) in enumerate(zip(render_reference_views(asset, views=views, size=VIEW_SIZE),
-                                                  view_cameras(asset, views=views, size=VIEW_SIZE), strict=True), start=1):
-        occupied = [draw_axis_legend(picture, camera)]
-        from app.engine.asset.kinematics import rest_poses
-
-        annotate_links(picture, asset, rest_poses(asset), camera, colors, link_labels(asset), occupied)
+    for index, (picture, camera, view) in enumerate(zip(pictures, cameras, views, strict=True), start=1):
+        annotate_links(picture, asset, poses, camera, colors, labels, [legend_box(VIEW_SIZE)])
         buffer = io.BytesIO()
-        picture.save(buffer, format="PNG")
-        images.append(Image(name=f"COVERAGE_VIEW_{index}_AZ{views[index - 1].azimuth_deg:g}_EL{views[index - 1].elevation_deg:g}.png",
-                            png=buffer.getvalue()))
+        picture.save(buffer, format="PNG", compress_level=PNG_COMPRESS_LEVEL)
+        images.append(Image(name=f"COVERAGE_VIEW_{index}_AZ{view.azimuth_deg:g}_EL{view.elevation_deg:g}.png", png=buffer.getvalue()))
     return images
+
+
+def _reference_pngs(context: Context) -> list[bytes] | None:
+    """The perceiver's reference views (canonical cameras, rest pose) when they were rendered at the coverage size."""
+    names = [f"reference_view_{index:02d}.png" for index in range(1, 5)]
+    if tuple(context.config.image_size) != VIEW_SIZE or not all(name in context.images for name in names):
+        return None
+    return [context.images[name] for name in names]
 
 
 def _confirm(asset: ArticulatedAsset, poses: dict[str, Transforms], link: str, reply: CoverageReply) -> ViewChoice | None:
@@ -146,7 +156,7 @@ async def select_views(
     required = list(windows)
     current = list(canonical_views())
     labels = link_labels(context.asset)
-    images = await render_off_loop(_annotated_views, context.asset, required, current)
+    images = await render_off_loop(_annotated_views, context.asset, required, current, _reference_pngs(context))
     prompt = prompts.render("coverage", prompt=context.prompt, views=", ".join(i.name for i in images),
                             links=[{"name": link, "label": labels.get(link, link), "motion": expected.describe(_joint(context, link))} for link in required],
                             azimuths=list(AZIMUTH_SET), elevations=list(ELEVATION_SET), distances=list(DISTANCE_SCALE_SET), fovs=list(FOV_SET))

@@ -24,6 +24,7 @@ from app.engine.render.camera import ViewSpec
 from app.engine.types import Transforms
 
 KEYFRAME_SIZE = (640, 480)
+PNG_COMPRESS_LEVEL = 3
 T = TypeVar("T")
 
 
@@ -50,6 +51,6 @@ def critic_keyframes(asset: ArticulatedAsset, trajectory: Trajectory, case: Crit
     images = []
     for tag, picture in zip(("HEAD", "TAIL"), render_keyframes(asset, trajectory, case.link, head, tail, camera), strict=True):
         buffer = io.BytesIO()
-        picture.save(buffer, format="PNG")
+        picture.save(buffer, format="PNG", compress_level=PNG_COMPRESS_LEVEL)
         images.append(Image(name=f"TIMELINE_SAMPLE_{tag}_seg{case.segment_index}_{case.joint}.png", png=buffer.getvalue()))
     return images

@@ -3,7 +3,9 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Protocol
+
+from pydantic import BaseModel
 
 from app.engine.providers.profiles import ModelProfile, OutputMode
 from app.engine.report import TokenUsage, TransportAttempt
@@ -27,11 +29,8 @@ class Message:
 class ModelRequest:
     system: str
     messages: tuple[Message, ...]
-    schema: dict[str, Any] | None = None
-    """JSON Schema of the expected reply (structured output); None for free text."""
-    schema_name: str = "reply"
-    gemini_schema: dict[str, Any] | None = None
-    """The same schema in Gemini's ``responseSchema`` dialect."""
+    reply_model: type[BaseModel] | None = None
+    """Pydantic model of the expected reply (structured output: each provider writes its schema dialect); None for free text."""
     max_output_tokens: int | None = None
     """Output limit; None takes the model profile's."""
 

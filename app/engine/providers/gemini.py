@@ -20,6 +20,7 @@ from app.engine.errors import ProviderBlocked, ProviderError, ProviderResponseEr
 from app.engine.providers.base import Message, ModelRequest, ModelResponse
 from app.engine.providers.http import Exchange, Timeouts, make_client, post_json
 from app.engine.providers.profiles import OUTPUT_MODES, ModelProfile, OutputMode
+from app.engine.providers.schemas import gemini_schema
 from app.engine.report import TokenUsage
 
 logger = logging.getLogger(__name__)
@@ -76,8 +77,8 @@ class GeminiModel:
             config["thinkingConfig"] = {"thinkingBudget": self.profile.thinking_budget}
         if mode in ("json_schema", "json_object"):
             config["responseMimeType"] = "application/json"
-        if mode == "json_schema" and request.gemini_schema is not None:
-            config["responseSchema"] = request.gemini_schema
+        if mode == "json_schema" and request.reply_model is not None:
+            config["responseSchema"] = gemini_schema(request.reply_model)
         return {
             "systemInstruction": {"parts": [{"text": request.system}]},
             "contents": [{"role": "model" if m.role == "assistant" else "user", "parts": _parts(m)} for m in request.messages],

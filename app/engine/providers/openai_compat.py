@@ -20,6 +20,7 @@ from app.engine.errors import ProviderBlocked, ProviderError, ProviderResponseEr
 from app.engine.providers.base import Message, ModelRequest, ModelResponse
 from app.engine.providers.http import Exchange, Timeouts, make_client, post_json
 from app.engine.providers.profiles import OUTPUT_MODES, ModelProfile, OutputMode
+from app.engine.providers.schemas import json_schema
 from app.engine.report import TokenUsage
 
 logger = logging.getLogger(__name__)
@@ -81,8 +82,9 @@ class OpenAICompatibleModel:
                                    self._token_param: request.max_output_tokens or self.profile.max_output_tokens}
         if self._temperature is not None:
             payload["temperature"] = self._temperature
-        if mode == "json_schema" and request.schema is not None:
-            payload["response_format"] = {"type": "json_schema", "json_schema": {"name": request.schema_name, "schema": request.schema, "strict": False}}
+        if mode == "json_schema" and request.reply_model is not None:
+            payload["response_format"] = {"type": "json_schema", "json_schema": {"name": request.reply_model.__name__,
+                                                                                "schema": json_schema(request.reply_model), "strict": False}}
         elif mode in ("json_schema", "json_object"):
             payload["response_format"] = {"type": "json_object"}
         return payload

@@ -95,7 +95,12 @@ def _convert(node: Any, defs: dict[str, Any], depth: int) -> dict[str, Any]:
     return out
 
 
-def gemini_schema(model: type[BaseModel]) -> dict[str, Any]:
-    """``model``'s schema in Gemini's ``responseSchema`` dialect."""
-    schema = json_schema(model)
+@lru_cache(maxsize=32)
+def _gemini_cached(model: type[BaseModel]) -> dict[str, Any]:
+    schema = _cached(model)
     return _convert(schema, schema.get("$defs", {}), 0)
+
+
+def gemini_schema(model: type[BaseModel]) -> dict[str, Any]:
+    """``model``'s schema in Gemini's ``responseSchema`` dialect (a fresh copy)."""
+    return _copy(_gemini_cached(model))
