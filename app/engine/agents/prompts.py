@@ -44,27 +44,31 @@ def _compile(source: str) -> Template:
     return _ENV.from_string(source)
 
 
+@lru_cache(maxsize=64)
+def _load_template(path: Path) -> _Template:
+    """Read, check and compile one template file (once per process: templates are immutable files)."""
+    try:
+        text = path.read_text(encoding="utf-8")
+        data = yaml.safe_load(text)
+    except (OSError, yaml.YAMLError) as exc:
+        raise PromptError(f"cannot read prompt template {path}: {exc}") from exc
+    if not isinstance(data, dict) or not all(isinstance(data.get(k), str) for k in ("version", "system", "user")):
+        raise PromptError(f"prompt template {path} needs string keys version, system, user")
+    try:
+        system, user = _compile(data["system"]), _compile(data["user"])
+    except TemplateError as exc:
+        raise PromptError(f"prompt template {path}: {exc}") from exc
+    return _Template(version=data["version"], system=system, user=user, sha256=hashlib.sha256(text.encode()).hexdigest())
+
+
 class PromptStore:
     """Loads and renders the role templates under ``root``."""
 
     def __init__(self, root: Path) -> None:
         self.root = root
 
-    @lru_cache(maxsize=16)  # noqa: B019 - one store per process, templates are immutable files
     def _load(self, role: str) -> _Template:
-        path = self.root / f"{role}.yaml"
-        try:
-            text = path.read_text(encoding="utf-8")
-            data = yaml.safe_load(text)
-        except (OSError, yaml.YAMLError) as exc:
-            raise PromptError(f"cannot read prompt template {path}: {exc}") from exc
-        if not isinstance(data, dict) or not all(isinstance(data.get(k), str) for k in ("version", "system", "user")):
-            raise PromptError(f"prompt template {path} needs string keys version, system, user")
-        try:
-            system, user = _compile(data["system"]), _compile(data["user"])
-        except TemplateError as exc:
-            raise PromptError(f"prompt template {path}: {exc}") from exc
-        return _Template(version=data["version"], system=system, user=user, sha256=hashlib.sha256(text.encode()).hexdigest())
+        return _load_template(self.root / f"{role}.yaml")
 
     def render(self, role: str, **variables: Any) -> RenderedPrompt:
         """Render ``role``'s template.

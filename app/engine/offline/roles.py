@@ -19,7 +19,8 @@ RULES_VERSION = "offline-rules-1"
 
 
 def _call(role: str, began: float) -> RoleCall:
-    return RoleCall(role=role, provider=PROVIDER, model=RULES_VERSION, seconds=round(time.perf_counter() - began, 6))
+    return RoleCall(role=role, provider=PROVIDER, model=RULES_VERSION, prompt_version=RULES_VERSION, seconds=round(time.perf_counter() - began, 6),
+                    est_cost_usd=0.0)
 
 
 class OfflinePerceiver:

@@ -131,3 +131,23 @@ def test_non_ascii_key_is_a_clear_error() -> None:
         make_roles("openai", ProviderConfig(api_key="sk-abc\u2013def", base_url="http://127.0.0.1:9/v1"))
     message = str(info.value)
     assert "non-ASCII character at position 7 of 10" in message and "abc" not in message
+
+
+def test_coverage_reply_is_checked_against_links_and_the_camera_bank(tmp_path: Path, examples_dir: Path) -> None:
+    replies = recorded("pedal_bin")
+    good = json.loads(replies["coverage"][0])
+    bad = {**good, "selected_views_by_link": {**good["selected_views_by_link"], "lid_panel": good["selected_views_by_link"]["lid"]},
+           "proposed_views": [{"azimuth_deg": 15, "elevation_deg": 20, "distance_scale": 1.0, "fov_deg": 35}]}
+    replies["coverage"] = [json.dumps(bad), json.dumps(good)]
+    run = run_model(examples_dir, tmp_path, replies)
+    feedback = run.script.of("coverage")[1]["payload"]["messages"][-1]["content"]
+    assert "selected_views_by_link.lid_panel: not a required link" in feedback and "proposed_views[0]: values must come from" in feedback
+    assert {c["source"] for c in run.report["coverage"]} == {"model"}
+
+
+def test_failed_coverage_falls_back_to_the_geometric_choice(tmp_path: Path, examples_dir: Path) -> None:
+    replies = recorded("pedal_bin")
+    replies["coverage"] = ["no idea"]
+    run = run_model(examples_dir, tmp_path, replies)
+    assert {c["source"] for c in run.report["coverage"]} == {"geometric"}
+    assert any("coverage selection failed" in w for w in run.report["warnings"]) and run.report["final_state"].startswith("accepted")
