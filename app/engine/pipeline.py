@@ -101,7 +101,12 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
     report.asset = AssetSummary.of(asset)
     with run.stage("preprocess"):
         render = _render_choice(roles, config, report)
-        images = await asyncio.to_thread(_images, asset, config, run.out_dir) if render else {}
+        try:
+            images = await asyncio.to_thread(_images, asset, config, run.out_dir) if render else {}
+        except RenderError as exc:
+            if not roles.vision:
+                raise
+            raise RenderError(f"{exc}; the {' and '.join(roles.vision)} model(s) need images: fix rendering or pass --no-render") from exc
         report.images = bool(images)
         context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config,
                           images=images, render=render and bool(roles.vision))

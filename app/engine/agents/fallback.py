@@ -14,13 +14,14 @@ import logging
 
 from app.engine.agents.expectations import Expectations
 from app.engine.agents.roles import Context, Critic, Diagnosed, Perceiver, Perception, Planned, Planner
-from app.engine.errors import ProviderError, RoleOutputError
+from app.engine.errors import ProviderError, RenderError, RoleOutputError
 from app.engine.execute.trajectory import Trajectory
 from app.engine.plan.schema import Plan
 from app.engine.report import RoleCall
 
 logger = logging.getLogger(__name__)
-RoleFailure = (RoleOutputError, ProviderError)
+RoleFailure = (RoleOutputError, ProviderError, RenderError)
+"""What makes a model role give no usable answer (a critic's keyframes that cannot be rendered included)."""
 
 
 def _failure(role: str, exc: Exception) -> tuple[tuple[RoleCall, ...], str]:

@@ -17,7 +17,7 @@ from app.engine.agents.actor import repair
 from app.engine.agents.critique import Critique, Patch
 from app.engine.agents.expectations import Expectations
 from app.engine.agents.roles import Context, Critic
-from app.engine.errors import CancelledError, ProviderError, RoleOutputError
+from app.engine.errors import CancelledError, ProviderError, RenderError, RoleOutputError
 from app.engine.execute.executor import execute
 from app.engine.execute.trajectory import Trajectory
 from app.engine.plan.schema import Plan
@@ -79,7 +79,7 @@ async def refine(
             raise CancelledError("cancelled during the critic-actor loop")
         try:
             diagnosed = await critic.critique(context, expected, current, trajectory)
-        except (RoleOutputError, ProviderError) as exc:
+        except (RoleOutputError, ProviderError, RenderError) as exc:
             calls.extend(getattr(exc, "calls", ()))
             rounds.append(CriticRound(index=index, critic=f"{critic.name}:{critic.model}", error=str(exc)))
             notes.append(f"critic failed in round {index} ({type(exc).__name__}: {exc}); kept the best plan so far (round {best.best_round})")
