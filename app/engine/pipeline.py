@@ -109,7 +109,7 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
             raise RenderError(f"{exc}; the {' and '.join(roles.vision)} model(s) need images: fix rendering or pass --no-render") from exc
         report.images = bool(images)
         context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config,
-                          images=images, render=render and bool(roles.vision))
+                          images=images, render=render and bool(roles.vision), keyframe_dir=run.out_dir / "keyframes")
     with run.stage("perceive"):
         perception = await roles.perceiver.perceive(context)
         report.add_calls(perception.calls)

@@ -22,6 +22,7 @@ from app.engine.agents.summaries import CriticCase, critic_cases
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import EngineError, PlanValidationError
 from app.engine.execute.trajectory import Trajectory
+from app.engine.files import atomic_write_bytes
 from app.engine.plan.schema import Plan
 from app.engine.providers.base import ChatModel, Image
 from app.engine.render.camera import ViewSpec
@@ -83,6 +84,7 @@ class ModelCritic:
         self.coverage_model = coverage
         """Model of the coverage role; None selects views geometrically."""
         self.views: dict[str, CoverageChoice] = {}
+        self.rounds = 0
 
     async def _select(self, context: Context, expected: Expectations, trajectory: Trajectory, cases: list[CriticCase]) -> tuple[list[RoleCall], list[str]]:
         windows: dict[str, dict[str, Transforms]] = {}
@@ -105,6 +107,7 @@ class ModelCritic:
     async def critique(self, context: Context, expected: Expectations, plan: Plan, trajectory: Trajectory) -> Diagnosed:
         cases = critic_cases(context.asset, plan, trajectory, expected)[:MAX_CRITIC_CASES]
         limit = asyncio.Semaphore(context.config.max_concurrent_calls)
+        round_index, self.rounds = self.rounds, self.rounds + 1
         calls: list[RoleCall] = []
         notes: list[str] = []
         if context.render:
@@ -114,6 +117,9 @@ class ModelCritic:
             images: list[Image] = []
             if context.render:
                 images = await render_off_loop(critic_keyframes, context.asset, trajectory, case, self._view(case.link))
+                if context.keyframe_dir is not None:
+                    for image in images:
+                        atomic_write_bytes(context.keyframe_dir / f"round_{round_index:02d}_{image.name}", image.png)
             prompt = self.prompts.render("critic", prompt=context.prompt, images=[i.name for i in images], **case.variables())
             async with limit:
                 return await ask(self.chat, prompt, Critique, attempts=context.config.role_attempts, images=images,

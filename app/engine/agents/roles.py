@@ -8,6 +8,7 @@ the model calls it made (none for the offline agent's rules).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any, Protocol
 
 from app.engine.agents.critique import Critique
@@ -35,6 +36,8 @@ class Context:
     """PNG images by name (reference/overlay views) when rendering is on."""
     render: bool = False
     """Whether to render images for the model roles (critic keyframes, coverage views)."""
+    keyframe_dir: Path | None = None
+    """Where the critic's keyframes are saved (``round_NN_<name>.png``); None keeps them in memory only."""
 
 
 @dataclass(frozen=True)

@@ -41,6 +41,8 @@ def test_recorded_replies_drive_the_whole_pipeline_with_images_by_default(tmp_pa
     assert angles["lid_hinge"] == pytest.approx(-1.4, abs=1e-6) and angles["pedal_pivot"] == pytest.approx(0.35, abs=1e-6)
     assert run.result is not None and run.result.outputs["glb"] == "animation.glb"
     assert len(list((tmp_path / "images").glob("*.png"))) == 8
+    keyframes = sorted(p.name for p in (tmp_path / "keyframes").glob("*.png"))
+    assert keyframes and all(name.startswith("round_00_TIMELINE_SAMPLE_") for name in keyframes) and len(keyframes) == 2 * len(run.script.of("critic"))
 
 
 def test_no_render_is_a_warning(tmp_path: Path, examples_dir: Path) -> None:
