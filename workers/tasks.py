@@ -112,7 +112,7 @@ def _roles(options: dict[str, Any], settings: Settings, config: EngineConfig) ->
         "gemini": (settings.gemini_api_key, settings.gemini_base_url),
     }.get(provider, (None, None))
     api_key = None if secret is None else secret.get_secret_value()
-    return make_roles(provider, ProviderConfig(api_key=api_key, base_url=base_url, models=models), config)
+    return make_roles(provider, ProviderConfig(api_key=api_key, base_url=base_url, models=models, profile=settings.model_profile), config)
 
 
 def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObserver, settings: Settings) -> _Result:

@@ -7,6 +7,7 @@ import json
 from pathlib import Path
 from typing import Any
 
+from app.cli.model_options import add_model_options, engine_overrides, provider_config
 from app.cli.output import cache_dir, out
 
 
@@ -17,10 +18,18 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
     run = sub.add_parser("run", help="animate every case with a provider, then evaluate")
     _common(run)
     run.add_argument("--out", type=Path, required=True, help="folder for OUT/<case_id>/ outputs, evaluation.json and report/")
-    run.add_argument("--provider", default="offline")
-    run.add_argument("--model", action="append", default=[], metavar="ROLE=NAME")
-    run.add_argument("--base-url", default=None)
+    add_model_options(run)
     run.set_defaults(handler=_run)
+
+    critic = sub.add_parser("critic", help="inject known failures into correct plans; report critic detection and repair per class")
+    critic.add_argument("--cases", type=Path, required=True, help="JSON Lines, one case per line (SPEC §5)")
+    critic.add_argument("--assets", type=Path, required=True, help="folder holding the cases' asset folders")
+    critic.add_argument("--out", type=Path, default=None, help="write the results as JSON (classes, cases)")
+    critic.add_argument("--jobs", type=int, default=1, help="worker processes (results do not depend on it)")
+    critic.add_argument("--rounds", type=int, default=3, help="critic-actor repair rounds (default 3)")
+    critic.add_argument("--class", dest="classes", action="append", default=[], metavar="CODE", help="only these failure classes (repeatable)")
+    add_model_options(critic)
+    critic.set_defaults(handler=_critic)
 
     evaluate = sub.add_parser("evaluate", help="score existing predictions PRED/<case_id>/trajectory.jsonl (or animation.glb)")
     _common(evaluate)
@@ -65,13 +74,12 @@ def _evaluate(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from app.cli.animate_cmd import _provider_config
     from app.engine.config import EngineConfig
     from benchmark.run import animate_cases
     from benchmark.runner import evaluate
 
-    config = EngineConfig(asset_cache_dir=cache_dir(args))
-    records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=_provider_config(args), config=config, jobs=args.jobs)
+    config = EngineConfig(asset_cache_dir=cache_dir(args), **engine_overrides(args))
+    records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=provider_config(args), config=config, jobs=args.jobs)
     failed = [r for r in records if r["status"] != "ok"]
     out(f"animated   {len(records) - len(failed)}/{len(records)} cases ({len(failed)} failed; see {args.out / 'runs.json'})")
     out_json = args.out / "evaluation.json"
@@ -79,4 +87,28 @@ def _run(args: argparse.Namespace) -> int:
     _print_summary(document)
     out(f"scores     {out_json}")
     _report(args, out_json, args.out)
+    return 0
+
+
+def _critic(args: argparse.Namespace) -> int:
+    from app.engine.config import EngineConfig
+    from app.engine.errors import MetricError
+    from app.engine.files import atomic_write_text
+    from benchmark.critic_bench import critic_bench, table_lines
+    from benchmark.critic_injection import CLASSES
+
+    unknown = [c for c in args.classes if c not in CLASSES]
+    if unknown:
+        raise MetricError(f"unknown failure class(es) {', '.join(unknown)} (classes: {', '.join(CLASSES)})")
+    config = EngineConfig(asset_cache_dir=cache_dir(args), **engine_overrides(args))
+    document = critic_bench(args.cases, args.assets, provider=args.provider, provider_config=provider_config(args), config=config,
+                            max_rounds=args.rounds, classes=tuple(args.classes) or CLASSES, jobs=args.jobs)
+    for line in table_lines(document):
+        out(line)
+    errors = [c for c in document["cases"] if c.get("class") == "case_error"]
+    if errors:
+        out(f"{len(errors)} case(s) could not be run: " + "; ".join(f"{c['case_id']}: {c['error']}" for c in errors[:3]))
+    if args.out is not None:
+        atomic_write_text(args.out, json.dumps(document, indent=2) + "\n")
+        out(f"results    {args.out}")
     return 0

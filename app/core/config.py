@@ -5,10 +5,10 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from pydantic import Field, SecretStr
+from pydantic import Field, SecretStr, field_validator
 from pydantic_settings import BaseSettings, SettingsConfigDict
 
-from app.engine.config import EngineConfig
+from app.engine.config import EngineConfig, FallbackPolicy
 
 DEFAULT_DATA_DIR = Path.home() / ".local" / "share" / "artimo"
 
@@ -71,6 +71,16 @@ class Settings(BaseSettings):
     gemini_api_key: SecretStr | None = None
     gemini_base_url: str = "https://generativelanguage.googleapis.com/v1beta"
     default_provider: str = "offline"
+    artimo_render_images: bool | None = None
+    """Render images for the model roles; unset: on whenever a role is a model that looks at images."""
+    artimo_connect_timeout_s: float = Field(default=10.0, gt=0)
+    artimo_read_timeout_s: float = Field(default=60.0, gt=0)
+    artimo_call_timeout_s: float = Field(default=240.0, gt=0)
+    """Limit per model call, retries included (keep it well under the job time limits)."""
+    artimo_fallback: str = ""
+    """Per-role fallback, e.g. ``critic=offline,perceiver=fail`` (default: critic offline, others fail)."""
+    artimo_model_profile: str = ""
+    """Model-profile overrides ``KEY=VALUE,...`` (e.g. ``token_param=max_completion_tokens,temperature=none``)."""
 
     @property
     def data_dir(self) -> Path:
@@ -92,9 +102,22 @@ class Settings(BaseSettings):
     def storage_dir(self) -> Path:
         return (self.artimo_storage_dir or self.data_dir / "storage").expanduser()
 
+    @field_validator("artimo_fallback")
+    @classmethod
+    def _fallback(cls, value: str) -> str:
+        FallbackPolicy.parse(value)  # a ValueError names the bad item
+        return value
+
+    @property
+    def model_profile(self) -> tuple[tuple[str, str], ...]:
+        pairs = (item.partition("=") for item in self.artimo_model_profile.split(",") if item.strip())
+        return tuple((key.strip(), value.strip()) for key, _, value in pairs)
+
     def engine_config(self) -> EngineConfig:
         """The engine's tunables for one job (API keys never reach the engine this way)."""
-        return EngineConfig(asset_cache_dir=self.data_dir / "asset-cache")
+        return EngineConfig(asset_cache_dir=self.data_dir / "asset-cache", render_images=self.artimo_render_images,
+                            connect_timeout_s=self.artimo_connect_timeout_s, request_timeout_s=self.artimo_read_timeout_s,
+                            call_timeout_s=self.artimo_call_timeout_s, fallback=FallbackPolicy.parse(self.artimo_fallback))
 
 
 @lru_cache(maxsize=1)

@@ -9,7 +9,13 @@ from __future__ import annotations
 
 
 class EngineError(Exception):
-    """Root of every deliberate engine failure."""
+    """Root of every deliberate engine failure.
+
+    ``calls`` holds the model role calls made before the failure (``RoleCall`` records),
+    so the report still lists them.
+    """
+
+    calls: tuple[object, ...] = ()
 
     def __init__(self, message: str, **context: object) -> None:
         super().__init__(message)
@@ -56,7 +62,15 @@ class RenderError(EngineError):
 
 
 class ProviderError(EngineError):
-    """A model provider call failed."""
+    """A model provider call failed.
+
+    ``transport`` (when set) lists the HTTP attempts made (``TransportAttempt`` records)
+    and ``calls`` the role calls recorded before the failure, so the report keeps them.
+    """
+
+    transport: tuple[object, ...] = ()
+    usage: object | None = None
+    """Tokens of a reply that came back but could not be used (truncated, blocked)."""
 
 
 class ProviderRateLimited(ProviderError):
@@ -70,15 +84,40 @@ class ProviderTimeout(ProviderError):
     """The provider did not answer in time."""
 
 
+class ProviderQuotaExceeded(ProviderError):
+    """The account's quota or credit is used up (e.g. OpenAI ``insufficient_quota``): retrying cannot help."""
+
+
 class ProviderResponseError(ProviderError):
     """The provider answered with an error or an unreadable body (``retriable`` for 5xx / network)."""
 
-    def __init__(self, message: str, *, retriable: bool = False, status: int | None = None) -> None:
-        super().__init__(message, retriable=retriable, status=status)
+    def __init__(self, message: str, *, retriable: bool = False, status: int | None = None, param: str | None = None) -> None:
+        super().__init__(message, retriable=retriable, status=status, param=param)
+        self.status = status
+        self.param = param
+
+
+class ProviderBlocked(ProviderResponseError):
+    """The provider refused to answer (content filter, safety block, refusal); ``reason`` says why."""
+
+    def __init__(self, message: str, *, reason: str) -> None:
+        super().__init__(message)
+        self.context["reason"] = reason
+        self.reason = reason
+
+
+class ReplyTruncated(ProviderResponseError):
+    """The reply stopped at the output-token limit (``finish_reason: length`` / ``MAX_TOKENS``)."""
+
+    def __init__(self, message: str, *, limit: int, partial: str = "") -> None:
+        super().__init__(message)
+        self.context["limit"] = limit
+        self.limit = limit
+        self.partial = partial
 
 
 class RoleOutputError(EngineError):
-    """A role (perceiver, planner, critic) produced no valid output within its attempts."""
+    """A role (perceiver, planner, critic) produced no valid output within its attempts (``calls``: each attempt)."""
 
 
 class GroundingError(EngineError):

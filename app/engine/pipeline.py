@@ -4,7 +4,9 @@ asset + prompt -> preprocess (joint summary, scale context, optional renders) ->
 perceiver (Causal.json) -> planner (Plan.json) -> execute -> critic-actor loop ->
 export (trajectory.jsonl, animation.glb) -> report.json. The engine knows nothing
 about jobs or URLs: progress goes to an ``observer``, cancellation comes from
-``should_stop`` (checked between stages).
+``should_stop`` (checked between stages). Outputs are written into a hidden folder and
+moved into ``out_dir`` when the run ends (:mod:`staging`): a failed run leaves its
+report.json there and no output of an earlier run.
 """
 
 from __future__ import annotations
@@ -16,6 +18,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol
 
+from app.engine.agents.expectations import expectations_of
+from app.engine.agents.fallback import fallbacks_used
 from app.engine.agents.loop import refine
 from app.engine.agents.roles import Context, Perception, Roles
 from app.engine.asset.cache import load_asset_cached
@@ -27,6 +31,7 @@ from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import CancelledError, EngineError, RenderError
 from app.engine.files import atomic_write_bytes
 from app.engine.report import AssetSummary, RunReport, StageClock
+from app.engine.staging import Staging
 
 logger = logging.getLogger(__name__)
 
@@ -76,77 +81,75 @@ class _Run:
 
 
 def _images(asset: ArticulatedAsset, config: EngineConfig, out_dir: Path) -> dict[str, bytes]:
-    """Reference and overlay renders (PNG bytes), also written under ``out_dir/images``."""
-    import io
+    """Reference and overlay renders (PNG bytes, cached per asset), also written under ``out_dir/images``."""
+    from app.engine.render.perceiver_images import perceiver_images
 
-    from app.engine.render.views import render_overlay_views, render_reference_views
-
-    images: dict[str, bytes] = {}
-    size = config.image_size
-    for prefix, renders in (("reference", render_reference_views(asset, size=size)), ("overlay", render_overlay_views(asset, size=size))):
-        for index, image in enumerate(renders, start=1):
-            buffer = io.BytesIO()
-            image.save(buffer, format="PNG")
-            name = f"{prefix}_view_{index:02d}.png"
-            images[name] = buffer.getvalue()
-            atomic_write_bytes(out_dir / "images" / name, images[name])
+    images = perceiver_images(asset, config.image_size, config.asset_cache_dir)
+    for name, data in images.items():
+        atomic_write_bytes(out_dir / "images" / name, data)
     return images
 
 
-async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run) -> PipelineResult:
+def _render_choice(roles: Roles, config: EngineConfig, report: RunReport) -> bool:
+    """Whether to render (config, else on for roles that look at images); warns when model roles go without."""
+    render = config.render_images if config.render_images is not None else bool(roles.vision)
+    if roles.vision and not render:
+        report.warnings.append(f"rendering is off (--no-render): the {' and '.join(roles.vision)} model(s) see no images")
+    return render
+
+
+async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run, report: RunReport) -> dict[str, str]:
     with run.stage("load_asset"):
         asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_asset_cached(request.asset, config.asset_cache_dir)
-    report = RunReport(asset=AssetSummary.of(asset), prompt=request.prompt, provider=roles.provider)
-    report.models = {"perceiver": roles.perceiver.model, "planner": roles.planner.model, "critic": roles.critic.model}
-    try:
-        with run.stage("preprocess"):
-            images = _images(asset, config, run.out_dir) if config.render_images else {}
-            context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config, images=images)
-        with run.stage("perceive"):
-            if request.causal is not None:
-                perception = perception_of(request.causal, asset, request.prompt)
-                report.models["perceiver"] = "causal.json (given)"
-                report.warnings.append("re-planned from a given causal.json: the perceiver did not run")
-            else:
-                perception = await roles.perceiver.perceive(context)
-            report.role_calls.extend(perception.calls)
-            report.warnings.extend(perception.intent.notes)
-            report.understanding = list(perception.understanding)
-        with run.stage("plan"):
-            planned = await roles.planner.plan(context, perception)
-            report.role_calls.extend(planned.calls)
-            plan = planned.plan
-            if request.fps is not None and request.fps != plan.meta.fps:
-                plan = plan.model_copy(update={"meta": plan.meta.model_copy(update={"fps": request.fps})})
-        with run.stage("refine"):
-            rounds = config.max_critic_rounds if request.max_critic_rounds is None else request.max_critic_rounds
-            refined = await refine(context, perception, plan, roles.critic, max_rounds=rounds, should_stop=run.should_stop)
-            report.role_calls.extend(refined.calls)
-            report.critic_rounds = refined.rounds
-            report.final_state = f"{refined.state} (best round {refined.best_round})"
-            report.events.extend(refined.trajectory.events)
-        with run.stage("export"):
-            outputs = write_animation(run.out_dir, asset, refined.plan, refined.trajectory, perception.causal, config.exports)
-        if config.preview:
-            with run.stage("preview"):
-                try:
-                    outputs["preview"] = write_preview(run.out_dir, asset, refined.trajectory)
-                except RenderError as exc:  # the animation itself is complete: say why there is no preview
-                    report.warnings.append(f"no preview.gif: {exc}")
-        with run.stage("report"):
-            report.stages = run.clock.stages
-            report.total_s = run.clock.total
-            report.outputs = {**outputs, "report": REPORT_FILE}
-            write_report(run.out_dir, report)
-    except EngineError as exc:
-        report.final_state = f"failed: {type(exc).__name__}"
-        report.warnings.append(str(exc))
-        report.stages = run.clock.stages
-        report.total_s = run.clock.total
-        report.outputs = {"report": REPORT_FILE}
-        write_report(run.out_dir, report)
-        raise
-    return PipelineResult(out_dir=run.out_dir, report=report, outputs=report.outputs)
+    report.asset = AssetSummary.of(asset)
+    with run.stage("preprocess"):
+        render = _render_choice(roles, config, report)
+        try:
+            images = await asyncio.to_thread(_images, asset, config, run.out_dir) if render else {}
+        except RenderError as exc:
+            if not roles.vision:
+                raise
+            raise RenderError(f"{exc}; the {' and '.join(roles.vision)} model(s) need images: fix rendering or pass --no-render") from exc
+        report.images = bool(images)
+        context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config,
+                          images=images, render=render and bool(roles.vision), keyframe_dir=run.out_dir / "keyframes")
+    with run.stage("perceive"):
+        if request.causal is not None:
+            perception = perception_of(request.causal, asset, request.prompt)
+            report.models["perceiver"] = "causal.json (given)"
+            report.warnings.append("re-planned from a given causal.json: the perceiver did not run")
+        else:
+            perception = await roles.perceiver.perceive(context)
+        report.add_calls(perception.calls)
+        report.warnings.extend([*perception.intent.notes, *perception.notes])
+        report.understanding = list(perception.understanding)
+    with run.stage("plan"):
+        planned = await roles.planner.plan(context, perception)
+        report.add_calls(planned.calls)
+        report.warnings.extend(planned.notes)
+        plan = planned.plan
+        if request.fps is not None and request.fps != plan.meta.fps:
+            plan = plan.model_copy(update={"meta": plan.meta.model_copy(update={"fps": request.fps})})
+    with run.stage("refine"):
+        rounds = config.max_critic_rounds if request.max_critic_rounds is None else request.max_critic_rounds
+        refined = await refine(context, expectations_of(perception), plan, roles.critic, max_rounds=rounds, should_stop=run.should_stop)
+        report.add_calls(refined.calls)
+        report.warnings.extend(refined.notes)
+        report.critic_rounds = refined.rounds
+        report.coverage = refined.coverage
+        report.final_state = f"{refined.state} (best round {refined.best_round})"
+        report.events.extend(refined.trajectory.event_messages)
+        report.execution_events.extend(refined.trajectory.events)
+        report.fallbacks = fallbacks_used(roles.perceiver, roles.planner, roles.critic)
+    with run.stage("export"):
+        outputs = write_animation(run.out_dir, asset, refined.plan, refined.trajectory, perception.causal, config.exports)
+    if config.preview:
+        with run.stage("preview"):
+            try:
+                outputs["preview"] = await asyncio.to_thread(write_preview, run.out_dir, asset, refined.trajectory)
+            except RenderError as exc:  # the animation itself is complete: say why there is no preview
+                report.warnings.append(f"no preview.gif: {exc}")
+    return outputs
 
 
 def perception_of(document: CausalDocument, asset: ArticulatedAsset, prompt: str = "") -> Perception:
@@ -155,6 +158,33 @@ def perception_of(document: CausalDocument, asset: ArticulatedAsset, prompt: str
     from app.engine.offline.tracker import resolve_steps
 
     return Perception(causal=document, intent=resolve_steps(extension_of(document, asset), asset, prompt))
+
+
+def _finish(report: RunReport, run: _Run, outputs: dict[str, str]) -> None:
+    report.stages = run.clock.stages
+    report.total_s = run.clock.total
+    report.outputs = {**outputs, "report": REPORT_FILE}
+    write_report(run.out_dir, report)
+
+
+async def _main(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run) -> RunReport:
+    report = RunReport(prompt=request.prompt, provider=roles.provider)
+    report.models = {"perceiver": roles.perceiver.model, "planner": roles.planner.model, "critic": roles.critic.model}
+    try:
+        outputs = await _run(request, roles, config, run, report)
+        with run.stage("report"):
+            _finish(report, run, outputs)
+    except EngineError as exc:
+        report.add_calls([c for c in getattr(exc, "calls", ()) if c not in report.role_calls])
+        report.final_state = f"failed: {type(exc).__name__}"
+        report.error, report.error_kind = str(exc), type(exc).__name__
+        report.warnings.append(str(exc))
+        report.fallbacks = fallbacks_used(roles.perceiver, roles.planner, roles.critic)
+        _finish(report, run, {})
+        raise
+    finally:
+        await roles.aclose()
+    return report
 
 
 def run_pipeline(
@@ -170,15 +200,15 @@ def run_pipeline(
 
     Raises
     ------
-    AssetError, GroundingError, PlanValidationError, RoleOutputError, ProviderError, CancelledError
-        report.json is still written, with the failure.
+    AssetError, GroundingError, PlanValidationError, RoleOutputError, ProviderError, RenderError, CancelledError
+        report.json is still written, with the failure (and nothing else is left in ``out_dir``).
     """
     target = Path(out_dir)
-    target.mkdir(parents=True, exist_ok=True)
-    async def main() -> PipelineResult:
+    with Staging(target) as staging:
         try:
-            return await _run(request, roles, config or EngineConfig(), _Run(target, observer, should_stop))
-        finally:
-            await roles.aclose()
-
-    return asyncio.run(main())
+            report = asyncio.run(_main(request, roles, config or EngineConfig(), _Run(staging.path, observer, should_stop)))
+        except EngineError:
+            staging.publish(only=(REPORT_FILE,))
+            raise
+        staging.publish()
+    return PipelineResult(out_dir=target, report=report, outputs=report.outputs)

@@ -1,59 +1,56 @@
-"""HEAD/TAIL keyframes with motion cues for one critic case, from the view that shows it best.
+"""HEAD/TAIL keyframes with motion cues for one critic case, from the view chosen for its link.
 
-The view is chosen among the four canonical ones (azimuth 0/90/180/270, elevation 20): the
-one where the moving link is visible at the tail and its tracked motion projects longest.
+The view comes from coverage-view selection (:mod:`app.engine.render.coverage`, or the
+model's choice); the camera frames the object over the whole motion window, so the
+tracked point's start (hollow circle) and end (filled circle) are both inside the image.
+Rendering runs in a worker thread (:func:`render_off_loop`) so model calls in flight are
+not held up by it.
 """
 
 from __future__ import annotations
 
+import asyncio
 import io
-from typing import Any
+from collections.abc import Callable
+from typing import TypeVar
 
 import numpy as np
 
-from app.engine.asset.kinematics import base_transforms, link_poses
+from app.engine.agents.summaries import CriticCase
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.providers.base import Image
+from app.engine.render.camera import ViewSpec
+from app.engine.types import Transforms
 
 KEYFRAME_SIZE = (640, 480)
+PNG_COMPRESS_LEVEL = 3
+T = TypeVar("T")
 
 
-def _poses_at(asset: ArticulatedAsset, trajectory: Trajectory, frame: int) -> dict[str, np.ndarray]:
-    values = {name: trajectory.joint(name)[frame : frame + 1] for name in trajectory.joint_names}
-    poses = link_poses(asset, values, base_transforms(trajectory.base_translation[frame : frame + 1]))
-    return {name: pose[0] for name, pose in poses.items()}
+async def render_off_loop(function: Callable[..., T], *args: object) -> T:
+    """Run a render function in a thread (the GL backend serialises GL work with its own lock)."""
+    return await asyncio.to_thread(function, *args)
 
 
-def _best_camera(asset: ArticulatedAsset, trajectory: Trajectory, link: str, head: int, tail: int) -> Any:
-    from app.engine.render import gl_backend
-    from app.engine.render.camera import canonical_views, view_camera
+def window_poses(asset: ArticulatedAsset, trajectory: Trajectory, head: int, tail: int) -> dict[str, Transforms]:
+    """{link: (k, 4, 4)} world poses at the sampled frames of ``[head, tail]`` (head, middle, tail)."""
+    from app.engine.render.coverage import window_frames
+    from app.engine.render.cues import window_poses as poses_at
 
-    head_poses, tail_poses = _poses_at(asset, trajectory, head), _poses_at(asset, trajectory, tail)
-    vertices = asset.links[link].vertices()
-    best, best_score = None, -1.0
-    for view in canonical_views():
-        camera = view_camera(asset, view, *KEYFRAME_SIZE)
-        ids, names = gl_backend.render_link_ids(asset, tail_poses, camera)
-        visible = float(np.count_nonzero(ids == names.index(link))) if link in names else 0.0
-        start = vertices @ head_poses[link][:3, :3].T + head_poses[link][:3, 3]
-        end = vertices @ tail_poses[link][:3, :3].T + tail_poses[link][:3, 3]
-        moved = float(np.linalg.norm(camera.project(end)[0] - camera.project(start)[0], axis=1).mean()) if vertices.shape[0] else 0.0
-        score = np.sqrt(visible) + moved
-        if score > best_score:
-            best, best_score = camera, score
-    return best
+    return poses_at(asset, trajectory, np.asarray(window_frames(head, tail)))
 
 
-def critic_keyframes(asset: ArticulatedAsset, trajectory: Trajectory, case: dict[str, Any]) -> list[Image]:
-    """[HEAD, TAIL] PNGs for ``case`` (needs EGL; raises RenderError without it)."""
+def critic_keyframes(asset: ArticulatedAsset, trajectory: Trajectory, case: CriticCase, view: ViewSpec) -> list[Image]:
+    """[HEAD, TAIL] PNGs for ``case`` seen from ``view`` (needs EGL; raises RenderError without it)."""
+    from app.engine.render.coverage import framing_camera
     from app.engine.render.cues import render_keyframes
 
-    link, head, tail = case["link"], int(case["head_frame"]), int(case["tail_frame"])
-    camera = _best_camera(asset, trajectory, link, head, tail)
+    head, tail = case.head_frame, case.tail_frame
+    camera = framing_camera(asset, window_poses(asset, trajectory, head, tail), view, KEYFRAME_SIZE)
     images = []
-    for tag, picture in zip(("HEAD", "TAIL"), render_keyframes(asset, trajectory, link, head, tail, camera), strict=True):
+    for tag, picture in zip(("HEAD", "TAIL"), render_keyframes(asset, trajectory, case.link, head, tail, camera), strict=True):
         buffer = io.BytesIO()
-        picture.save(buffer, format="PNG")
-        images.append(Image(name=f"TIMELINE_SAMPLE_{tag}_seg{case['segment_index']}_{case['joint']}.png", png=buffer.getvalue()))
+        picture.save(buffer, format="PNG", compress_level=PNG_COMPRESS_LEVEL)
+        images.append(Image(name=f"TIMELINE_SAMPLE_{tag}_seg{case.segment_index}_{case.joint}.png", png=buffer.getvalue()))
     return images

@@ -1,4 +1,10 @@
-"""The critic-actor refinement loop: bounded, recorded, keeps the best iteration."""
+"""The critic-actor refinement loop: bounded, recorded, keeps the best iteration.
+
+Ends in one explicit state: ``accepted`` (no issue left), ``max_iterations``, ``no_patch``
+(the actor could not change anything), ``oscillation`` (a patch would undo an earlier one:
+the loop would go round in circles), ``critic_failed`` (the critic gave no usable answer:
+the best plan so far is kept and every output is still written) or ``no_critic``.
+"""
 
 from __future__ import annotations
 
@@ -8,17 +14,18 @@ from dataclasses import dataclass, field
 from typing import Literal
 
 from app.engine.agents.actor import repair
-from app.engine.agents.critique import Critique
-from app.engine.agents.roles import Context, Critic, Perception
-from app.engine.errors import CancelledError
+from app.engine.agents.critique import Critique, Patch
+from app.engine.agents.expectations import Expectations
+from app.engine.agents.roles import Context, Critic
+from app.engine.errors import CancelledError, ProviderError, RenderError, RoleOutputError
 from app.engine.execute.executor import execute
 from app.engine.execute.trajectory import Trajectory
 from app.engine.plan.schema import Plan
-from app.engine.report import CriticRound, RoleCall
+from app.engine.report import CoverageChoice, CriticRound, RoleCall
 
 logger = logging.getLogger(__name__)
 
-FinalState = Literal["accepted", "max_iterations", "no_patch", "no_critic"]
+FinalState = Literal["accepted", "max_iterations", "no_patch", "oscillation", "critic_failed", "no_critic"]
 
 
 @dataclass
@@ -30,11 +37,18 @@ class Refined:
     state: FinalState
     rounds: list[CriticRound] = field(default_factory=list)
     calls: list[RoleCall] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    """Warnings for the report (critic failures, fallbacks, oscillation)."""
+    coverage: list[CoverageChoice] = field(default_factory=list)
+
+
+def _undoing(patches: list[Patch], history: list[Patch]) -> Patch | None:
+    return next((p for p in patches for earlier in history if p.undoes(earlier)), None)
 
 
 async def refine(
     context: Context,
-    perception: Perception,
+    expected: Expectations,
     plan: Plan,
     critic: Critic | None,
     *,
@@ -51,24 +65,37 @@ async def refine(
     """
     current = plan
     trajectory = execute(current, context.asset)
+    best = Refined(plan=current, trajectory=trajectory, critique=None, best_round=0, state="no_critic")
     if critic is None:
-        return Refined(plan=current, trajectory=trajectory, critique=None, best_round=0, state="no_critic")
-    best: Refined | None = None
+        return best
     rounds: list[CriticRound] = []
     calls: list[RoleCall] = []
+    notes: list[str] = []
+    history: list[Patch] = []
+    coverage: dict[str, CoverageChoice] = {}
     state: FinalState = "max_iterations"
     for index in range(max_rounds + 1):
         if should_stop is not None and should_stop():
             raise CancelledError("cancelled during the critic-actor loop")
-        diagnosed = await critic.critique(context, perception, current, trajectory)
+        try:
+            diagnosed = await critic.critique(context, expected, current, trajectory)
+        except (RoleOutputError, ProviderError, RenderError) as exc:
+            calls.extend(getattr(exc, "calls", ()))
+            rounds.append(CriticRound(index=index, critic=f"{critic.name}:{critic.model}", error=str(exc)))
+            notes.append(f"critic failed in round {index} ({type(exc).__name__}: {exc}); kept the best plan so far (round {best.best_round})")
+            state = "critic_failed"
+            break
         calls.extend(diagnosed.calls)
+        notes.extend(diagnosed.notes)
+        coverage.update((choice.link, choice) for choice in diagnosed.coverage)
         verdict = diagnosed.critique
         score = verdict.score()
-        record = CriticRound(index=index, issues=[i.model_dump() for i in verdict.issues], score=round(score, 6), accepted=verdict.ok)
+        record = CriticRound(index=index, critic=diagnosed.critic or f"{critic.name}:{critic.model}", issues=list(verdict.issues),
+                             score=round(score, 6), accepted=verdict.ok)
         rounds.append(record)
         if on_round is not None:
             on_round(index, verdict)
-        if best is None or score < (best.critique.score() if best.critique else float("inf")):
+        if best.critique is None or score < best.critique.score():
             best = Refined(plan=current, trajectory=trajectory, critique=verdict, best_round=index, state=state)
         if verdict.ok:
             state = "accepted"
@@ -76,15 +103,24 @@ async def refine(
         if index == max_rounds:
             break
         repaired, patches = repair(current, verdict, context.asset, trajectory)
-        record.patches = patches
         if not patches:
             state = "no_patch"
             break
+        undoing = _undoing(patches, history)
+        if undoing is not None:
+            record.rejected_patches = patches
+            notes.append(f"critic round {index}: the repair of segment {undoing.segment_index} ({undoing.joint or 'timing'}) would undo an "
+                         f"earlier patch; stopped with the best plan (round {best.best_round})")
+            state = "oscillation"
+            break
+        record.patches = patches
+        history.extend(patches)
         logger.info("critic round %d: %d issues, %d patches", index, len(verdict.issues), len(patches))
         current = repaired
         trajectory = execute(current, context.asset)
-    assert best is not None
     best.state = state
     best.rounds = rounds
     best.calls = calls
+    best.notes = notes
+    best.coverage = list(coverage.values())
     return best

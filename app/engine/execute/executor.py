@@ -8,6 +8,7 @@ import numpy as np
 
 from app.engine.asset.kinematics import resolve_joint_values
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.execute.events import ExecutionEvent
 from app.engine.execute.joint_track import JointContext, TimedControl, track_joint
 from app.engine.execute.trajectory import Trajectory
 from app.engine.plan.checks import resolve_target, validate_plan
@@ -52,7 +53,7 @@ def _contexts(plan: Plan, asset: ArticulatedAsset) -> dict[str, JointContext]:
     return contexts
 
 
-def _joint_controls(plan: Plan, asset: ArticulatedAsset, events: list[str]) -> dict[str, list[TimedControl]]:
+def _joint_controls(plan: Plan, asset: ArticulatedAsset, events: list[ExecutionEvent]) -> dict[str, list[TimedControl]]:
     per_joint: dict[str, list[TimedControl]] = {}
     for s_index, segment in enumerate(plan.timeline):
         for c_index, control in enumerate(segment.controls):
@@ -64,7 +65,9 @@ def _joint_controls(plan: Plan, asset: ArticulatedAsset, events: list[str]) -> d
                 raw = resolve_target(control, asset)
                 target = asset.joints[control.joint].clamp(raw)
                 if abs(target - raw) > 1e-12:
-                    events.append(f"{control.joint}: target {raw:.6g} at {where} clamped to the limit {target:.6g}")
+                    message = f"{control.joint}: target {raw:.6g} at {where} clamped to the limit {target:.6g}"
+                    events.append(ExecutionEvent(kind="target_clamped", message=message, joint=control.joint, mode=control.mode, where=where,
+                                                 time_s=segment.t0, value=target))
             timed = TimedControl(t0=segment.t0, t1=segment.t1, control=control, where=where, target=target)
             per_joint.setdefault(control.joint, []).append(timed)
     return per_joint
@@ -146,7 +149,7 @@ def execute(plan: Plan, asset: ArticulatedAsset) -> Trajectory:
         If the plan names unknown or fixed joints or has unusable targets.
     """
     warnings = validate_plan(plan, asset).warnings
-    events: list[str] = list(warnings)
+    events = [ExecutionEvent(kind="plan_warning", message=warning) for warning in warnings]
     times = frame_times(plan)
     contexts = _contexts(plan, asset)
     per_joint = _joint_controls(plan, asset, events)
@@ -155,7 +158,7 @@ def execute(plan: Plan, asset: ArticulatedAsset) -> Trajectory:
     q = np.stack([values[name] for name in asset.movable_joints], axis=1) if asset.movable_joints else np.zeros((times.shape[0], 0))
     rotation, pivot_shift = base_yaw(plan, times, events)
     for note in events:
-        logger.debug("execute %s: %s", asset.name, note)
+        logger.debug("execute %s: %s", asset.name, note.message)
     return Trajectory(
         fps=plan.meta.fps,
         times=times,

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from app.engine.execute.ease import CURVES
+from app.engine.execute.events import ExecutionEvent
 from app.engine.plan.schema import HoldPosition, JointPosition, JointVelocity, SpringReturn
 from app.engine.types import FloatArray
 
@@ -85,9 +86,11 @@ def _fine_grid(a: float, b: float, times: FloatArray) -> tuple[FloatArray, Float
     return mids, widths, offsets[wanted]
 
 
-def _limit_note(ctx: JointContext, timed: TimedControl, value: float, when: float) -> str:
+def _limit_note(ctx: JointContext, timed: TimedControl, value: float, when: float) -> ExecutionEvent:
     side = "upper" if ctx.upper is not None and value >= ctx.upper - LIMIT_EPS else "lower"
-    return f"{ctx.name}: {timed.control.mode} at {timed.where} reached the {side} limit {value:.6g} at t={when:.3f} s and stopped there"
+    message = f"{ctx.name}: {timed.control.mode} at {timed.where} reached the {side} limit {value:.6g} at t={when:.3f} s and stopped there"
+    return ExecutionEvent(kind="limit_reached", message=message, joint=ctx.name, mode=timed.control.mode, where=timed.where,
+                          time_s=round(when, 6), value=value)
 
 
 def _clipped_path(start: float, increments: FloatArray, ctx: JointContext) -> tuple[FloatArray, int | None]:
@@ -121,7 +124,7 @@ def _omega(control: JointVelocity, t0: float, t1: float, t: FloatArray) -> Float
     return np.where(np.abs(decayed) < floor, np.sign(omega) * floor, decayed)
 
 
-def _position(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:
+def _position(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[ExecutionEvent]) -> tuple[FloatArray, float]:
     control = timed.control
     assert isinstance(control, JointPosition) and timed.target is not None
     ease = CURVES[control.curve]
@@ -130,7 +133,8 @@ def _position(piece: _Piece, timed: TimedControl, ctx: JointContext, events: lis
     if abs(piece.a - timed.t0) <= TIME_EPS and control.q_start_rad is not None:
         start = float(ctx.clamp(np.array(control.q_start_rad)))
         if abs(start - piece.q_a) > 1e-6:
-            events.append(f"{ctx.name}: q_start_rad {start:.6g} at {timed.where} differs from the current value {piece.q_a:.6g}; the joint jumps at t={timed.t0:.3f} s")
+            message = f"{ctx.name}: q_start_rad {start:.6g} at {timed.where} differs from the current value {piece.q_a:.6g}; the joint jumps at t={timed.t0:.3f} s"
+            events.append(ExecutionEvent(kind="start_jump", message=message, joint=ctx.name, mode=control.mode, where=timed.where, time_s=timed.t0, value=start))
     e_a = float(ease(np.array((piece.a - timed.t0) / span)))
     scale = 1.0 / (1.0 - e_a)
 
@@ -141,7 +145,7 @@ def _position(piece: _Piece, timed: TimedControl, ctx: JointContext, events: lis
     return ctx.clamp(at(piece.times)), float(ctx.clamp(at(np.array(piece.b))))
 
 
-def _velocity(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:
+def _velocity(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[ExecutionEvent]) -> tuple[FloatArray, float]:
     control = timed.control
     assert isinstance(control, JointVelocity)
     mids, widths, knots = _fine_grid(piece.a, piece.b, piece.times)
@@ -159,7 +163,7 @@ def _spring_parameters(control: SpringReturn, ctx: JointContext) -> tuple[float,
     return float(k), float(c), float(ctx.clamp(np.array(rest)))
 
 
-def _spring(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
+def _spring(piece: _Piece, timed: TimedControl, ctx: JointContext, events: list[ExecutionEvent]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
     control = timed.control
     assert isinstance(control, SpringReturn)
     k, c, rest = _spring_parameters(control, ctx)
@@ -195,11 +199,11 @@ def _critically_damped(piece: _Piece, timed: TimedControl, ctx: JointContext, re
     return ctx.clamp(at(piece.times)), float(ctx.clamp(at(np.array(piece.b))))
 
 
-def _hold(piece: _Piece, timed: TimedControl | None, ctx: JointContext, events: list[str]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
+def _hold(piece: _Piece, timed: TimedControl | None, ctx: JointContext, events: list[ExecutionEvent]) -> tuple[FloatArray, float]:  # noqa: ARG001 - handler signature
     return np.full(piece.times.shape[0], piece.q_a), piece.q_a
 
 
-_HANDLERS: dict[str, Callable[[_Piece, TimedControl, JointContext, list[str]], tuple[FloatArray, float]]] = {
+_HANDLERS: dict[str, Callable[[_Piece, TimedControl, JointContext, list[ExecutionEvent]], tuple[FloatArray, float]]] = {
     "joint_position": _position,
     "joint_velocity": _velocity,
     "spring_return": _spring,
@@ -207,19 +211,18 @@ _HANDLERS: dict[str, Callable[[_Piece, TimedControl, JointContext, list[str]], t
 }
 
 
-def overlap_notes(ctx: JointContext, controls: list[TimedControl]) -> list[str]:
+def overlap_notes(ctx: JointContext, controls: list[TimedControl]) -> list[ExecutionEvent]:
     notes = []
     for i, first in enumerate(controls):
         for second in controls[i + 1 :]:
             start, end = max(first.t0, second.t0), min(first.t1, second.t1)
             if end - start > TIME_EPS:
-                notes.append(
-                    f"{ctx.name}: {first.where} and {second.where} overlap on [{start:.3f}, {end:.3f}] s; {second.where} wins"
-                )
+                message = f"{ctx.name}: {first.where} and {second.where} overlap on [{start:.3f}, {end:.3f}] s; {second.where} wins"
+                notes.append(ExecutionEvent(kind="overlap", message=message, joint=ctx.name, mode=second.control.mode, where=second.where, time_s=start))
     return notes
 
 
-def track_joint(ctx: JointContext, controls: list[TimedControl], times: FloatArray, events: list[str]) -> FloatArray:
+def track_joint(ctx: JointContext, controls: list[TimedControl], times: FloatArray, events: list[ExecutionEvent]) -> FloatArray:
     """(f,) values of one joint at ``times`` under ``controls`` (given in timeline order)."""
     values = np.full(times.shape[0], ctx.rest)
     if not controls:

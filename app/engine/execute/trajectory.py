@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from app.engine.execute.events import ExecutionEvent
 from app.engine.types import FloatArray, JointMatrix
 
 
@@ -23,7 +24,7 @@ class Trajectory:
     base_translation : (f, 3) float, metres, world frame
     base_rotation_xyzw : (f, 4) float, unit quaternions
     modes : per-frame ``{name: set}`` flags from ``mode_set`` controls
-    events : notes from execution (overlaps, limits reached, clamped targets)
+    events : typed notes from execution (plan warnings, overlaps, limits reached, clamped targets)
     """
 
     fps: int
@@ -33,7 +34,7 @@ class Trajectory:
     base_translation: FloatArray
     base_rotation_xyzw: FloatArray
     modes: tuple[Mapping[str, bool], ...] = ()
-    events: tuple[str, ...] = field(default_factory=tuple)
+    events: tuple[ExecutionEvent, ...] = field(default_factory=tuple)
 
     def __post_init__(self) -> None:
         for array in (self.times, self.q, self.base_translation, self.base_rotation_xyzw):
@@ -46,6 +47,11 @@ class Trajectory:
     @property
     def duration_s(self) -> float:
         return float(self.times[-1]) if self.frame_count else 0.0
+
+    @property
+    def event_messages(self) -> list[str]:
+        """The readable sentences of :attr:`events` (what report.json lists under ``events``)."""
+        return [event.message for event in self.events]
 
     def joint(self, name: str) -> FloatArray:
         """(f,) values of one joint."""

@@ -299,7 +299,7 @@ def compile_case(case: Case, asset: ArticulatedAsset) -> GroundTruth:
         trajectory = execute(plan, asset)
     except (PlanValidationError, ExecutionError) as exc:
         raise MetricError(f"case {case.case_id}: the ground-truth plan does not execute: {exc.message}") from exc
-    notes.extend(trajectory.events)
+    notes.extend(trajectory.event_messages)
     states = _key_states(asset, timings, work)
     return GroundTruth(
         case_id=case.case_id,

@@ -15,11 +15,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from app.engine.agents.critique import Critique, FixHint, Issue, Repairability
+from app.engine.agents.critique import MAX_FACTOR, STRENGTH_FACTOR, Critique, FixHint, Issue, Repairability
+from app.engine.agents.expectations import Expectations, ExpectedMotion
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.collisions import find_collisions
-from app.engine.offline.intent import Intent, JointGoal
 from app.engine.plan.schema import JointPosition, JointVelocity, Plan
 
 ANGLE_TOLERANCE = 0.02
@@ -55,9 +55,14 @@ def _value(trajectory: Trajectory, joint: str, time: float) -> float:
     return float(trajectory.joint(joint)[_frame_index(trajectory, time)])
 
 
+def _needed(ratio: float) -> float:
+    """The factor that undoes ``ratio`` (moved / wanted), capped at the largest one a hint may make."""
+    return min(MAX_FACTOR, 1.0 / max(ratio, 1e-9) if ratio < 1.0 else ratio)
+
+
 def _strength(ratio: float) -> str:
-    gap = abs(1.0 - ratio)
-    return "small" if gap <= 0.15 else "medium" if gap <= 0.3 else "large" if gap <= 0.6 else "extra_large"
+    """The strength whose factor best undoes ``ratio``: nearest on a log scale."""
+    return min(STRENGTH_FACTOR, key=lambda name: abs(math.log(STRENGTH_FACTOR[name]) - math.log(_needed(ratio))))
 
 
 class _Diagnosis:
@@ -69,28 +74,30 @@ class _Diagnosis:
         self.hints: list[FixHint] = []
         self.notes: list[str] = []
 
-    def flag(self, code: str, driver: _Driver, joint: str, expected: str, observed: str, hint: tuple[str, str, str | None] | None, severity: float) -> None:
+    def flag(self, code: str, driver: _Driver, joint: str, expected: str, observed: str, hint: tuple[str, str, str | None] | None, severity: float,
+             factor: float | None = None) -> None:
         link = self.asset.joints[joint].child
         self.issues.append(Issue(code=code, expected=expected, observed=observed, segment_index=driver.segment_index, phase_type=driver.phase_type,  # type: ignore[arg-type]
                                  joint=joint, link=link, severity=round(min(max(severity, 0.0), 1.0), 4)))
         if hint is not None:
             kind, direction, strength = hint
             self.hints.append(FixHint(type=kind, joint=joint, segment_index=driver.segment_index, phase_type=driver.phase_type,  # type: ignore[arg-type]
-                                      direction=direction, strength=strength, why=f"{code}: expected {expected}, observed {observed}"))  # type: ignore[arg-type]
+                                      direction=direction, strength=strength, why=f"{code}: expected {expected}, observed {observed}",  # type: ignore[arg-type]
+                                      factor=factor if factor is not None and factor > 1.0 else None))
         self.notes.append(f"[{code}] {joint} in segment {driver.segment_index}: expected {expected}; observed {observed}")
 
     def tolerance(self, joint: str, expected: float) -> float:
         floor = LENGTH_TOLERANCE if self.asset.joints[joint].type == "prismatic" else ANGLE_TOLERANCE
         return max(floor, RELATIVE_TOLERANCE * abs(expected))
 
-    def check_target(self, goal: JointGoal, driver: _Driver) -> None:
+    def check_target(self, goal: ExpectedMotion, driver: _Driver) -> None:
         start = _value(self.trajectory, goal.joint, driver.t0)
         end = _value(self.trajectory, goal.joint, driver.t1)
         if goal.omega is not None:
             wanted = goal.omega * (driver.t1 - driver.t0)
         else:
-            assert goal.value is not None
-            wanted = goal.value - start
+            assert goal.target is not None
+            wanted = goal.target - start
         moved = end - start
         tolerance = self.tolerance(goal.joint, wanted)
         if abs(wanted) <= tolerance:
@@ -104,15 +111,27 @@ class _Diagnosis:
         elif abs(moved - wanted) > tolerance:
             ratio = moved / wanted
             code, direction = ("MOTION_TOO_SMALL", "increase") if ratio < 1 else ("EXCESSIVE_MOTION", "decrease")
-            self.flag(code, driver, goal.joint, text, f"{moved:+.4g}", (kind, direction, _strength(ratio)), abs(1.0 - ratio))
+            self.flag(code, driver, goal.joint, text, f"{moved:+.4g}", (kind, direction, _strength(ratio)), abs(1.0 - ratio), _needed(ratio))
 
-    def check_return(self, goal: JointGoal, drivers: list[_Driver]) -> None:
+    def check_return(self, goal: ExpectedMotion, drivers: list[_Driver], returns: list[_Driver]) -> None:
+        """A self-returning control must be back at rest at the end; ``returns`` are its drivers after the press."""
         rest = self.asset.joints[goal.joint].rest
         final = float(self.trajectory.joint(goal.joint)[-1])
-        if abs(final - rest) <= self.tolerance(goal.joint, goal.value - rest if goal.value is not None else 0.0):
+        if abs(final - rest) <= self.tolerance(goal.joint, goal.target - rest if goal.target is not None else 0.0):
             return
-        driver = drivers[-1]
-        self.flag("NO_RELEASE_RETURN", driver, goal.joint, f"back at rest {rest:.4g}", f"ends at {final:.4g}", ("adjust_timing", "increase", "extra_large"), 1.0)
+        expected, observed = f"back at rest {rest:.4g}", f"ends at {final:.4g}"
+        last = returns[-1] if returns else None
+        if last is not None and last.mode == "joint_position":  # a return that falls short (or overshoots): scale it
+            start = _value(self.trajectory, goal.joint, last.t0)
+            wanted, moved = rest - start, _value(self.trajectory, goal.joint, last.t1) - start
+            if abs(wanted) > 1e-9:
+                ratio = moved / wanted
+                direction = "flip" if ratio < -1e-9 else "increase" if ratio < 1.0 else "decrease"
+                strength = None if direction == "flip" else _strength(max(abs(ratio), 0.05))
+                factor = None if direction == "flip" else _needed(max(abs(ratio), 0.05))
+                self.flag("NO_RELEASE_RETURN", last, goal.joint, expected, observed, ("adjust_joint_target", direction, strength), min(1.0, abs(1.0 - ratio)), factor)
+                return
+        self.flag("NO_RELEASE_RETURN", drivers[-1], goal.joint, expected, observed, ("adjust_timing", "increase", "extra_large"), 1.0)
 
     def check_still(self, expected: set[str], drivers: dict[str, list[_Driver]]) -> None:
         for index, joint in enumerate(self.trajectory.joint_names):
@@ -128,19 +147,21 @@ class _Diagnosis:
 
     def check_limits(self, drivers: dict[str, list[_Driver]]) -> None:
         for event in self.trajectory.events:
-            if "joint_velocity" not in event or "limit" not in event:
+            if event.kind != "limit_reached" or event.mode != "joint_velocity" or event.joint is None:
                 continue
-            joint = event.split(":", 1)[0]
-            for driver in drivers.get(joint, []):
+            for driver in drivers.get(event.joint, []):
                 if driver.mode == "joint_velocity":
-                    self.flag("EXCESSIVE_MOTION", driver, joint, "stay within the joint range", event, ("adjust_joint_velocity", "decrease", "medium"), 0.5)
+                    self.flag("EXCESSIVE_MOTION", driver, event.joint, "stay within the joint range", event.message, ("adjust_joint_velocity", "decrease", "medium"), 0.5)
                     break
 
     def check_collisions(self, expected: set[str], drivers: dict[str, list[_Driver]]) -> None:
         """Parts resting inside others where a motion ends (a passing graze of a quirky asset is tolerated)."""
         moving = {link for joint in expected if joint in self.asset.joints for link in self.asset.moving_links(joint)}
         ends = [_frame_index(self.trajectory, d.t1) for joint in expected for d in drivers.get(joint, [])] + [self.trajectory.frame_count - 1]
+        off_target = {i.joint for i in self.issues if i.code in ("MOTION_TOO_SMALL", "WRONG_DIRECTION")}
         for hit in find_collisions(self.asset, self.trajectory, moving, frames=ends)[:3]:
+            if any(hit.other_link in self.asset.moving_links(j) or hit.moving_link in self.asset.moving_links(j) for j in off_target):
+                continue  # a part that has not moved out of the way yet (a door not opened far enough): that part is flagged already
             owners = [j for j in sorted(expected) if j in self.asset.joints and drivers.get(j)]
             movers = [j for j in owners if hit.moving_link in self.asset.moving_links(j)] + [j for j in owners if hit.other_link in self.asset.moving_links(j)]
             if not movers:
@@ -151,34 +172,29 @@ class _Diagnosis:
                       f"{hit.fraction:.0%} of it inside {hit.other_link} at t={hit.time_s:.2f} s", ("adjust_joint_target", "decrease", "medium"), hit.fraction)
 
 
-def critique(asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, intent: Intent, *, collisions: bool = True) -> Critique:
-    """Diagnose ``trajectory`` (the execution of ``plan``) against ``intent``."""
+def critique(asset: ArticulatedAsset, plan: Plan, trajectory: Trajectory, expected: Expectations, *, collisions: bool = True) -> Critique:
+    """Diagnose ``trajectory`` (the execution of ``plan``) against the ``expected`` motions."""
     diagnosis = _Diagnosis(asset, plan, trajectory)
     drivers = _drivers(plan)
     claimed: dict[str, int] = {}
-    expected: set[str] = set()
-    for step in intent.steps:
-        if step.base is not None:
-            expected.update(j for j, _ in step.base.wheels)
-        for goal in step.goals:
-            expected.add(goal.joint)
-            joint_drivers = drivers.get(goal.joint, [])
-            position = claimed.get(goal.joint, 0)
-            if position >= len(joint_drivers):
-                if joint_drivers or not diagnosis.plan.timeline:
-                    continue
-                fake = _Driver(0, plan.timeline[0].phase_type, 0.0, trajectory.duration_s, "joint_position")
-                diagnosis.flag("MOTION_TOO_SMALL", fake, goal.joint, "a control that moves it", "no control in the plan", None, 1.0)
+    for goal in expected.motions:
+        joint_drivers = drivers.get(goal.joint, [])
+        position = claimed.get(goal.joint, 0)
+        if position >= len(joint_drivers):
+            if joint_drivers or not diagnosis.plan.timeline:
                 continue
-            diagnosis.check_target(goal, joint_drivers[position])
-            claimed[goal.joint] = position + 1
-            if goal.role == "control" and goal.returns == "self_return" and not goal.sustains and goal.value is not None:
-                diagnosis.check_return(goal, joint_drivers)
-                claimed[goal.joint] = len(joint_drivers)
-    diagnosis.check_still(expected, drivers)
+            fake = _Driver(0, plan.timeline[0].phase_type, 0.0, trajectory.duration_s, "joint_position")
+            diagnosis.flag("MOTION_TOO_SMALL", fake, goal.joint, "a control that moves it", "no control in the plan", None, 1.0)
+            continue
+        diagnosis.check_target(goal, joint_drivers[position])
+        claimed[goal.joint] = position + 1
+        if goal.returns_to_rest:
+            diagnosis.check_return(goal, joint_drivers, joint_drivers[position + 1 :])
+            claimed[goal.joint] = len(joint_drivers)
+    diagnosis.check_still(expected.joints, drivers)
     diagnosis.check_limits(drivers)
     if collisions:
-        diagnosis.check_collisions(expected, drivers)
+        diagnosis.check_collisions(expected.joints, drivers)
     structural = any(h is None for h in diagnosis.hints) or any(i.code == "MOTION_TOO_SMALL" and i.observed == "no control in the plan" for i in diagnosis.issues)
     return Critique(
         semantic_ok=not diagnosis.issues,

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import time
 
+from app.engine.agents.expectations import Expectations
 from app.engine.agents.roles import Context, Diagnosed, Perception, Planned, Roles
 from app.engine.execute.trajectory import Trajectory
 from app.engine.offline.contract_io import causal_document, extension_of
@@ -19,7 +20,8 @@ RULES_VERSION = "offline-rules-2"
 
 
 def _call(role: str, began: float) -> RoleCall:
-    return RoleCall(role=role, provider=PROVIDER, model=RULES_VERSION, seconds=round(time.perf_counter() - began, 6))
+    return RoleCall(role=role, provider=PROVIDER, model=RULES_VERSION, prompt_version=RULES_VERSION, seconds=round(time.perf_counter() - began, 6),
+                    est_cost_usd=0.0)
 
 
 class OfflinePerceiver:
@@ -49,9 +51,9 @@ class GeometricCritic:
     name = PROVIDER
     model = RULES_VERSION
 
-    async def critique(self, context: Context, perception: Perception, plan: Plan, trajectory: Trajectory) -> Diagnosed:
+    async def critique(self, context: Context, expected: Expectations, plan: Plan, trajectory: Trajectory) -> Diagnosed:
         began = time.perf_counter()
-        result = critique(context.asset, plan, trajectory, perception.intent, collisions=context.config.check_collisions)
+        result = critique(context.asset, plan, trajectory, expected, collisions=context.config.check_collisions)
         return Diagnosed(critique=result, calls=(_call("critic", began),))
 
 

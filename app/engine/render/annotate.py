@@ -94,13 +94,20 @@ def draw_axis_marker(
         draw.line([(cx - arm, cy + arm), (cx + arm, cy - arm)], fill=color, width=width)
 
 
+def legend_box(size: tuple[int, int]) -> Box:
+    """Where :func:`draw_axis_legend` puts the legend on an image of ``size`` (top-right corner)."""
+    scale = ui_scale(size)
+    width, height = round(130 * scale), round(110 * scale)
+    x1 = size[0] - LEGEND_MARGIN_PX
+    return (float(x1 - width), float(LEGEND_MARGIN_PX), float(x1), float(LEGEND_MARGIN_PX + height))
+
+
 def draw_axis_legend(image: Image.Image, camera: Camera) -> Box:
     """Draw the world-axis legend in the top-right corner; returns its box."""
     scale = ui_scale(image.size)
-    width, height = round(130 * scale), round(110 * scale)
-    x1 = image.size[0] - LEGEND_MARGIN_PX
-    x0, y0 = x1 - width, LEGEND_MARGIN_PX
-    box = (float(x0), float(y0), float(x1), float(y0 + height))
+    box = legend_box(image.size)
+    x0, y0 = round(box[0]), round(box[1])
+    width, height = round(box[2] - box[0]), round(box[3] - box[1])
     draw = ImageDraw.Draw(image)
     draw.rounded_rectangle(box, radius=round(8 * scale), fill=(255, 255, 255), outline=(90, 90, 90), width=1)
     origin = (x0 + 0.42 * width, y0 + 0.55 * height)

@@ -76,7 +76,7 @@ def test_q_start_rad_is_honoured(rig: ArticulatedAsset) -> None:
     assert q[at(t, 1.0)] == pytest.approx(0.4, abs=EXACT)  # jumps to q_start_rad at t0
     assert q[at(t, 1.5)] == pytest.approx(0.2, abs=EXACT)
     assert q[at(t, 2.0)] == 0.0
-    assert any("q_start_rad 0.4" in e and "jumps" in e for e in trajectory.events)
+    assert any("q_start_rad 0.4" in e and "jumps" in e for e in trajectory.event_messages)
 
 
 def test_without_q_start_the_phase_starts_from_the_current_value(rig: ArticulatedAsset) -> None:
@@ -90,7 +90,7 @@ def test_position_target_beyond_a_limit_is_clamped(rig: ArticulatedAsset) -> Non
     trajectory = run(rig, seg(0.0, 1.0, position("door", 3.0), position("slide", -1.0)))
     assert trajectory.joint("door")[-1] == 1.5 and trajectory.joint("door").max() == 1.5
     assert trajectory.joint("slide").min() == 0.0
-    assert any("door: target 3" in e and "clamped to the limit 1.5" in e for e in trajectory.events)
+    assert any("door: target 3" in e and "clamped to the limit 1.5" in e for e in trajectory.event_messages)
 
 
 # --- joint_velocity -------------------------------------------------------------------------
@@ -139,9 +139,9 @@ def test_velocity_stops_at_a_limit_and_says_so(rig: ArticulatedAsset) -> None:
     assert q[at(t, 1.5)] == pytest.approx(1.5, abs=INTEGRATION)
     assert np.all(q[at(t, 1.5) + 1 :] == 1.5)  # stays exactly at the limit
     assert np.all(trajectory.joint("slide") == 0.0)
-    door = [e for e in trajectory.events if e.startswith("door:")]
+    door = [e for e in trajectory.event_messages if e.startswith("door:")]
     assert len(door) == 1 and "reached the upper limit 1.5 at t=1.50" in door[0]
-    assert any(e.startswith("slide:") and "lower limit 0" in e for e in trajectory.events)
+    assert any(e.startswith("slide:") and "lower limit 0" in e for e in trajectory.event_messages)
 
 
 def test_continuous_joint_winds_freely(rig: ArticulatedAsset) -> None:
@@ -222,7 +222,7 @@ def test_later_overlapping_control_wins_and_is_reported(rig: ArticulatedAsset) -
     q, t = trajectory.joint("hinge"), trajectory.times
     expected = np.where(t < 0.5, t, np.where(t < 1.5, 0.5 + 1.5 * (t - 0.5), 2.0 + (t - 1.5)))
     assert np.allclose(q, expected, atol=INTEGRATION)
-    notes = [e for e in trajectory.events if "overlap" in e]
+    notes = [e for e in trajectory.event_messages if "overlap" in e]
     assert notes == [
         "hinge: timeline[0].controls[0] and timeline[1].controls[0] overlap on [0.500, 1.500] s; timeline[1].controls[0] wins"
     ]
@@ -231,7 +231,7 @@ def test_later_overlapping_control_wins_and_is_reported(rig: ArticulatedAsset) -
 def test_order_in_the_timeline_decides_not_start_time(rig: ArticulatedAsset) -> None:
     trajectory = run(rig, seg(0.5, 1.5, position("hinge", 2.0)), seg(0.0, 2.0, velocity("hinge", 1.0)))
     assert np.allclose(trajectory.joint("hinge"), trajectory.times, atol=INTEGRATION)  # the velocity always wins
-    assert any("timeline[1].controls[0] wins" in e for e in trajectory.events)
+    assert any("timeline[1].controls[0] wins" in e for e in trajectory.event_messages)
 
 
 def test_uncontrolled_joint_keeps_its_value_between_phases(rig: ArticulatedAsset) -> None:

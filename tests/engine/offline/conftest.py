@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
+from app.engine.agents.expectations import expectations_of
 from app.engine.agents.loop import refine
 from app.engine.agents.roles import Context
 from app.engine.asset.loader import load_asset
@@ -62,7 +63,7 @@ def animate(name: str, prompt: str, *, collisions: bool = True) -> Outcome:
     async def run() -> Outcome:
         perception = await roles.perceiver.perceive(context)
         planned = await roles.planner.plan(context, perception)
-        refined = await refine(context, perception, planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
+        refined = await refine(context, expectations_of(perception), planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
         return Outcome(perception.causal, refined.plan, refined.trajectory, refined.state)
 
     return asyncio.run(run())
