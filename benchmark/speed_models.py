@@ -33,8 +33,8 @@ from typing import Any
 from app.engine.asset.cache import load_asset_cached
 from app.engine.config import EngineConfig
 from app.engine.errors import EngineError
-from app.engine.offline.causal_doc import causal_from_intent
-from app.engine.offline.perceiver import read_intent
+from app.engine.offline.contract_io import causal_document
+from app.engine.offline.perceiver import read_prompt
 from app.engine.offline.planner import plan_intent
 from app.engine.pipeline import PipelineRequest, run_pipeline
 from app.engine.providers.registry import ProviderConfig, make_roles
@@ -50,10 +50,11 @@ TARGET_S = 0.5
 def _replies(asset_dir: Path, prompt: str, cache: Path) -> dict[str, str]:
     """What a good model would answer for this case (the offline agent's reading), per role."""
     asset = load_asset_cached(asset_dir, cache)
-    intent = read_intent(prompt, asset)
+    reading = read_prompt(prompt, asset)
+    intent = reading.intent
     links = {goal.link for step in intent.steps for goal in step.goals}
     view = {"azimuth_deg": 0, "elevation_deg": 20, "distance_scale": 1.0, "fov_deg": 35}
-    return {"perceiver": causal_from_intent(intent, asset).dumps(), "planner": plan_intent(intent, asset).dumps(),
+    return {"perceiver": causal_document(reading.extension, intent, asset).dumps(), "planner": plan_intent(intent, asset).dumps(),
             "critic": json.dumps(OK_VERDICT), "coverage": json.dumps({"selected_views_by_link": dict.fromkeys(sorted(links), view)})}
 
 

@@ -40,7 +40,7 @@ def run_plan(
     clock = StageClock()
     with Staging(out_dir) as staging:
         try:
-            report = _run(asset, plan, staging.path, clock, cache_dir=cache_dir, preview=preview)
+            report = _run(asset, plan, staging.path, clock, cache_dir=cache_dir, preview=preview, exports=exports)
         except EngineError as exc:
             _failure_report(asset, exc, clock, staging.path)
             staging.publish(only=(REPORT_FILE,))
@@ -51,7 +51,7 @@ def run_plan(
 
 def _run(
     asset: ArticulatedAsset | str | Path, plan: Plan | str | bytes | dict[str, object], target: Path, clock: StageClock, *,
-    cache_dir: Path | None, preview: bool,
+    cache_dir: Path | None, preview: bool, exports: Iterable[str],
 ) -> RunReport:
     with clock.stage("load_asset"):
         model = asset if isinstance(asset, ArticulatedAsset) else load_asset_cached(asset, cache_dir)
@@ -78,7 +78,6 @@ def _run(
         stages=clock.stages,
         total_s=clock.total,
         outputs={**outputs, "report": REPORT_FILE},
-        final_state="executed",
     )
     write_report(target, report)
     return report

@@ -19,7 +19,8 @@ from pathlib import Path
 logger = logging.getLogger(__name__)
 
 PARTIAL_PREFIX = ".artimo-partial-"
-RUN_OUTPUTS = ("causal.json", "plan.json", "trajectory.jsonl", "animation.glb", "preview.gif", "images", "keyframes", "report.json")
+RUN_OUTPUTS = ("causal.json", "plan.json", "trajectory.jsonl", "animation.glb", "interaction.json", "animation.usda", "usd_textures", "scene.xml",
+               "joint_trajectory.json", "trajectory.csv", "trajectory.npz", "preview.gif", "images", "keyframes", "report.json")
 """Every entry a run may write into its output folder (``report.json`` last: it marks a complete set)."""
 MARKER = "report.json"
 

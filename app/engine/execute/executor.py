@@ -92,7 +92,7 @@ def base_translation(plan: Plan, times: FloatArray) -> FloatArray:
     return out
 
 
-def base_yaw(plan: Plan, times: FloatArray, events: list[str]) -> tuple[FloatArray, FloatArray]:
+def base_yaw(plan: Plan, times: FloatArray, events: list[ExecutionEvent]) -> tuple[FloatArray, FloatArray]:
     """((f, 4) rotation quaternions xyzw, (f, 3) translation that keeps the pivot in place) of every
     ``base_yaw_rate`` control: the yaw is the exact integral of the rates."""
     angle = np.zeros(times.shape[0])
@@ -106,7 +106,7 @@ def base_yaw(plan: Plan, times: FloatArray, events: list[str]) -> tuple[FloatArr
                 if pivot is None:
                     pivot = here
                 elif np.linalg.norm(here - pivot) > 1e-9:
-                    events.append(f"base_yaw_rate pivots differ; turning about the first one {pivot.tolist()}")
+                    events.append(ExecutionEvent(kind="plan_warning", message=f"base_yaw_rate pivots differ; turning about the first one {pivot.tolist()}"))
     rotation = np.zeros((times.shape[0], 4))
     rotation[:, 2] = np.sin(angle / 2.0)
     rotation[:, 3] = np.cos(angle / 2.0)

@@ -48,7 +48,7 @@ def replan(name: str, causal_json: str, *, collisions: bool = True) -> Plan:
     async def run() -> Plan:
         perception = perception_of(CausalDocument.model_validate_json(causal_json), model)
         planned = await roles.planner.plan(context, perception)
-        refined = await refine(context, perception, planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
+        refined = await refine(context, expectations_of(perception), planned.plan, roles.critic, max_rounds=config.max_critic_rounds)
         return refined.plan
 
     return asyncio.run(run())

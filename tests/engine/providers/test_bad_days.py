@@ -45,7 +45,7 @@ def test_critic_content_filter_falls_back_to_the_geometric_critic(tmp_path: Path
     report = run.report
     assert report["final_state"].startswith("accepted") and "critic" in report["fallbacks"]
     assert any("critic: the model gave no usable answer (ProviderBlocked" in w for w in report["warnings"])
-    assert report["critic_rounds"][0]["critic"] == "offline:offline-rules-1 (fallback)"
+    assert report["critic_rounds"][0]["critic"] == "offline:offline-rules-2 (fallback)"
     assert (tmp_path / "animation.glb").is_file()
     assert len(run.script.of("critic")) >= 1 and all(c["error"] for c in run.calls("critic") if c["provider"] == "openai")
 

@@ -8,8 +8,8 @@ import json
 import pytest
 
 from app.engine.agents.critique import Critique
+from app.engine.contracts.causal import CausalDocument
 from app.engine.errors import ProviderError, ProviderRateLimited
-from app.engine.plan.causal import CausalDocument
 from app.engine.plan.schema import Plan
 from app.engine.providers.http import Exchange, Timeouts, is_quota, make_client, post_json
 from app.engine.providers.keys import clean_key, mask
