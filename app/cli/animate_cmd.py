@@ -14,6 +14,7 @@ from app.engine.errors import ProviderError
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser("animate", help="animate an asset from a text prompt")
     parser.add_argument("asset", type=Path, help="asset folder or .zip")
+    parser.add_argument("--urdf", default=None, metavar="NAME", help="which URDF to use when the folder or zip holds several")
     parser.add_argument("--prompt", required=True, help='what should happen, e.g. "press the pedal to open the bin"')
     parser.add_argument("--out", type=Path, required=True, help="output folder")
     parser.add_argument("--provider", default="offline", help="offline (default, no API key), openai (any OpenAI-compatible server) or gemini")
@@ -62,7 +63,7 @@ def _animate(args: argparse.Namespace) -> int:
                           asset_cache_dir=cache_dir(args))
     roles = make_roles(args.provider, _provider_config(args), config)
     result = run_pipeline(
-        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps),
+        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps, urdf=args.urdf),
         roles=roles, config=config, out_dir=args.out, observer=_Progress(),
     )
     report = result.report

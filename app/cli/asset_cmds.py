@@ -18,20 +18,28 @@ from app.engine.plan.checks import load_json_file, validate_plan
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     inspect = commands.add_parser("inspect", help="show joints, limits, links, semantics and scale of an asset")
     inspect.add_argument("asset", type=Path, help="asset folder or .zip")
+    _urdf_option(inspect)
     inspect.add_argument("--json", action="store_true", help="print the joint summary and scale context as JSON")
     inspect.set_defaults(handler=_inspect)
 
     validate = commands.add_parser("validate-plan", help="check a Plan.json against an asset")
     validate.add_argument("asset", type=Path)
+    _urdf_option(validate)
     validate.add_argument("--plan", type=Path, required=True)
     validate.set_defaults(handler=_validate)
 
     run = commands.add_parser("run-plan", help="execute a Plan.json and export trajectory.jsonl + animation.glb")
     run.add_argument("asset", type=Path)
+    _urdf_option(run)
     run.add_argument("--plan", type=Path, required=True)
     run.add_argument("--out", type=Path, required=True, help="output folder")
     run.add_argument("--preview", action="store_true", help="also render OUT/preview.gif (needs EGL)")
     run.set_defaults(handler=_run)
+
+
+def _urdf_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--urdf", default=None, metavar="NAME",
+                        help="which URDF to use when the folder or zip holds several (its path inside, or its file name)")
 
 
 def _fmt(value: float | None) -> str:
@@ -39,7 +47,7 @@ def _fmt(value: float | None) -> str:
 
 
 def _inspect(args: argparse.Namespace) -> int:
-    asset = load_asset_cached(args.asset, cache_dir(args))
+    asset = load_asset_cached(args.asset, cache_dir(args), urdf=args.urdf)
     scale = scale_context(asset)
     if args.json:
         out_json({"joints": [j.model_dump() for j in joint_summary(asset)], "scale": scale.model_dump()})
@@ -75,7 +83,7 @@ def _read_plan(path: Path) -> dict[str, Any]:
 
 
 def _load(args: argparse.Namespace) -> tuple[ArticulatedAsset, dict[str, Any]]:
-    return load_asset_cached(args.asset, cache_dir(args)), _read_plan(args.plan)
+    return load_asset_cached(args.asset, cache_dir(args), urdf=args.urdf), _read_plan(args.plan)
 
 
 def _validate(args: argparse.Namespace) -> int:

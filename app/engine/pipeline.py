@@ -18,9 +18,8 @@ from typing import Protocol
 
 from app.engine.agents.loop import refine
 from app.engine.agents.roles import Context, Roles
-from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.asset.summary import joint_summary, scale_context
+from app.engine.asset.stored import StoredAsset, load_stored, summaries
 from app.engine.bundle import REPORT_FILE, write_animation, write_preview, write_report
 from app.engine.config import EngineConfig
 from app.engine.errors import CancelledError, EngineError, RenderError
@@ -47,6 +46,10 @@ class PipelineRequest:
     max_critic_rounds: int | None = None
     fps: int | None = None
     """Frame rate of the output (24 or 30); ``None`` keeps the planner's."""
+    urdf: str | None = None
+    """Which URDF to load when the asset folder/zip holds several."""
+    stored: StoredAsset | None = None
+    """What the caller already knows of ``asset`` (hash, name, summaries): nothing is computed twice."""
 
 
 @dataclass
@@ -92,13 +95,14 @@ def _images(asset: ArticulatedAsset, config: EngineConfig, out_dir: Path) -> dic
 
 async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run) -> PipelineResult:
     with run.stage("load_asset"):
-        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_asset_cached(request.asset, config.asset_cache_dir)
+        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_stored(request.asset, config.asset_cache_dir, request.urdf, request.stored)
     report = RunReport(asset=AssetSummary.of(asset), prompt=request.prompt, provider=roles.provider)
     report.models = {"perceiver": roles.perceiver.model, "planner": roles.planner.model, "critic": roles.critic.model}
     try:
         with run.stage("preprocess"):
             images = _images(asset, config, run.out_dir) if config.render_images else {}
-            context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config, images=images)
+            joints, scale = summaries(asset, request.stored)
+            context = Context(asset=asset, prompt=request.prompt, joint_summary=joints, scale=scale, config=config, images=images)
         with run.stage("perceive"):
             perception = await roles.perceiver.perceive(context)
             report.role_calls.extend(perception.calls)
@@ -136,6 +140,7 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
         report.total_s = run.clock.total
         report.outputs = {"report": REPORT_FILE}
         write_report(run.out_dir, report)
+        exc.report = report  # the caller gets the failed run's report without reading report.json
         raise
     return PipelineResult(out_dir=run.out_dir, report=report, outputs=report.outputs)
 

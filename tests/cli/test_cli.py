@@ -61,3 +61,33 @@ def test_animate_and_refusal(capsys: pytest.CaptureFixture[str], tmp_path: Path,
 def test_missing_asset_is_a_clear_error(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     assert main(["--no-cache", "inspect", str(tmp_path / "nothing")]) == 1
     assert "does not exist" in capsys.readouterr().err
+
+
+def _two_assets(tmp_path: Path, examples_dir: Path) -> Path:
+    """A folder holding two assets (like pointing at a whole PartNet folder)."""
+    import shutil
+
+    folder = tmp_path / "many"
+    shutil.copytree(examples_dir / "microwave", folder / "microwave")
+    shutil.copytree(examples_dir / "pedal_bin", folder / "pedal_bin")
+    return folder
+
+
+def test_a_folder_of_several_assets_is_refused_and_lists_them(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    folder = _two_assets(tmp_path, examples_dir)
+    assert main(["--no-cache", "animate", str(folder), "--prompt", "open the door", "--out", str(tmp_path / "out")]) == 1
+    message = capsys.readouterr().err
+    assert "microwave/microwave.urdf, pedal_bin/pedal_bin.urdf" in message and "--urdf" in message
+    assert not (tmp_path / "out" / "animation.glb").exists()
+
+
+def test_urdf_option_chooses_one_asset(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    folder = _two_assets(tmp_path, examples_dir)
+    assert main(["--no-cache", "inspect", str(folder), "--urdf", "pedal_bin/pedal_bin.urdf"]) == 0
+    assert "pedal" in capsys.readouterr().out
+    out = tmp_path / "out"
+    assert main(["--no-cache", "animate", str(folder), "--urdf", "microwave.urdf", "--prompt", "open the door", "--out", str(out)]) == 0
+    assert json.loads((out / "report.json").read_text())["asset"]["urdf_file"] == "microwave/microwave.urdf"
+    plan = examples_dir / "pedal_bin" / "plan.json"
+    assert main(["--no-cache", "run-plan", str(folder), "--urdf", "pedal_bin.urdf", "--plan", str(plan), "--out", str(tmp_path / "rp")]) == 0
+    assert main(["--no-cache", "validate-plan", str(folder), "--urdf", "pedal_bin.urdf", "--plan", str(plan)]) == 0

@@ -1,13 +1,15 @@
 """A disk cache of loaded assets, so a repeated run skips URDF parsing and mesh decoding.
 
 Entries are keyed by the asset's files (name, size, modification time of every file in a
-folder; the bytes of a zip) and stored as one ``.npz`` (arrays plus a JSON header, read with
+folder; the bytes of a zip) or by a content hash the caller already knows (the service's
+stored sha256), plus the chosen URDF, and stored as one ``.npz`` (arrays plus a JSON header, read with
 ``allow_pickle=False``). Reading an entry imports neither yourdfpy nor trimesh, which is
 most of a cold process's time.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import io
 import json
@@ -23,13 +25,17 @@ from app.engine.files import atomic_write_bytes
 
 logger = logging.getLogger(__name__)
 
-CACHE_VERSION = 1
+CACHE_VERSION = 2
 HEADER = "header"
 
 
-def cache_key(path: Path, name: str | None = None) -> str:
-    """Fingerprint of an asset folder (file names, sizes, mtimes) or zip (its bytes)."""
-    digest = hashlib.sha256(f"artimo-asset-cache:{CACHE_VERSION}:{name or ''}".encode())
+def cache_key(path: Path, urdf: str | None = None, content_hash: str | None = None) -> str:
+    """Fingerprint of an asset folder (file names, sizes, mtimes) or zip (its bytes), or of
+    ``content_hash`` when the caller knows it (then nothing is read); plus the chosen URDF."""
+    digest = hashlib.sha256(f"artimo-asset-cache:{CACHE_VERSION}:{urdf or ''}".encode())
+    if content_hash is not None:
+        digest.update(f"content:{content_hash}".encode())
+        return digest.hexdigest()
     source = path.resolve()
     if source.is_file():
         digest.update(source.read_bytes())
@@ -118,14 +124,25 @@ def _load(data: np.lib.npyio.NpzFile) -> ArticulatedAsset:
                             warnings=tuple(header["warnings"]), content_hash=header["content_hash"])
 
 
-def _fresh(source: Path, limits: AssetLimits | None, name: str | None) -> ArticulatedAsset:
-    from app.engine.asset.loader import load_asset  # imports yourdfpy and trimesh: only on a miss
+def _fresh(source: Path, limits: AssetLimits | None, name: str | None, urdf: str | None) -> ArticulatedAsset:
+    from app.engine.asset.loader import load_asset  # imports the mesh readers: only on a miss
 
-    return load_asset(source, limits=limits, name=name)
+    return load_asset(source, limits=limits, name=name, urdf=urdf)
 
 
-def load_asset_cached(path: str | Path, cache_dir: Path | None, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+def _default_name(source: Path) -> str:
+    """The name :func:`load_asset` gives an asset when none is passed."""
+    return source.stem if source.is_file() else source.resolve().name
+
+
+def load_asset_cached(
+    path: str | Path, cache_dir: Path | None, *, limits: AssetLimits | None = None, name: str | None = None,
+    urdf: str | None = None, content_hash: str | None = None,
+) -> ArticulatedAsset:
     """``load_asset`` through the cache in ``cache_dir`` (no cache when ``None``).
+
+    ``content_hash``: the sha256 of ``path`` when the caller knows it (the entry is then found
+    without reading the file). The entry does not depend on ``name``: a hit is renamed.
 
     Raises
     ------
@@ -134,15 +151,17 @@ def load_asset_cached(path: str | Path, cache_dir: Path | None, *, limits: Asset
     """
     source = Path(path)
     if cache_dir is None or not source.exists():
-        return _fresh(source, limits, name)
-    entry = cache_dir / f"{cache_key(source, name)}.npz"
+        return _fresh(source, limits, name, urdf)
+    entry = cache_dir / f"{cache_key(source, urdf, content_hash)}.npz"
+    wanted = name or _default_name(source)
     if entry.is_file():
         try:
             with np.load(entry, allow_pickle=False) as data:
-                return _load(data)
+                cached = _load(data)
+            return cached if cached.name == wanted else dataclasses.replace(cached, name=wanted)
         except (OSError, ValueError, KeyError, json.JSONDecodeError) as exc:
             logger.warning("ignoring unreadable asset cache entry %s: %s", entry.name, exc)
-    asset = _fresh(source, limits, name)
+    asset = _fresh(source, limits, name, urdf)
     try:
         atomic_write_bytes(entry, _dump(asset))
     except OSError as exc:

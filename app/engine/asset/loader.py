@@ -19,24 +19,27 @@ from app.engine.errors import AssetError
 
 logger = logging.getLogger(__name__)
 
-PREFERRED_URDF = "mobility.urdf"
 SEMANTICS_FILE = "semantics.txt"
 MACOS_METADATA_DIR = "__MACOSX"
 _VISUAL_SUFFIX = re.compile(r"[-_]?\d+$")
 
 
-def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+def load_asset(
+    path: str | Path, *, limits: AssetLimits | None = None, name: str | None = None, urdf: str | None = None
+) -> ArticulatedAsset:
     """Load an asset directory or ``.zip`` archive.
 
     Parameters
     ----------
     path
-        Directory holding one ``.urdf`` (``mobility.urdf`` preferred) and its meshes,
-        or a ``.zip`` of such a directory.
+        Directory holding one ``.urdf`` and its meshes, or a ``.zip`` of such a directory.
     limits
         Size caps; defaults to :class:`AssetLimits`.
     name
         Asset name; defaults to the directory name or zip stem.
+    urdf
+        Which ``.urdf`` to load when the folder holds several (its path inside the asset,
+        or its file name when that is unique); see :func:`find_urdf`.
 
     Raises
     ------
@@ -52,8 +55,8 @@ def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str
             raise AssetError("an asset must be a directory or a .zip archive", file=source.name)
         with tempfile.TemporaryDirectory(prefix="artimo-asset-") as tmp:
             extract_zip(source, Path(tmp), limits)
-            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=source.name)
-    return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name)
+            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=source.name, urdf=urdf)
+    return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name, urdf=urdf)
 
 
 def _archive_root(extracted: Path) -> Path:
@@ -69,33 +72,67 @@ def _archive_root(extracted: Path) -> Path:
     return extracted
 
 
-def find_urdf(root: Path, *, shown: str | None = None) -> Path:
-    """The asset's URDF: the only ``.urdf`` under ``root``, or the shallowest ``mobility.urdf``.
+def find_urdf(root: Path, *, shown: str | None = None, requested: str | None = None) -> Path:
+    """The asset's URDF: the only ``.urdf`` under ``root``, or the one ``requested``.
 
-    ``shown`` names the asset in error messages (the upload's name; default ``root.name``).
+    ``requested`` is a path relative to ``root`` (``cap/mobility.urdf``), or a file name or
+    path ending that matches exactly one URDF. ``shown`` names the asset in error messages
+    (the upload's name; default ``root.name``).
 
     Raises
     ------
     AssetError
-        No URDF, or several without a ``mobility.urdf`` among them.
+        No URDF; several and none requested (the message lists them); a requested one
+        that matches none or several.
     """
     found = sorted((p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file()), key=lambda p: (len(p.parts), str(p)))
-    found = [p for p in found if not p.is_symlink()]
+    found = [p for p in found if not p.is_symlink() and MACOS_METADATA_DIR not in p.relative_to(root).parts]
+    shown = shown or root.name
     if not found:
-        raise AssetError("no .urdf file in the asset", file=shown or root.name, element="*.urdf")
+        raise AssetError("no .urdf file in the asset", file=shown, element="*.urdf")
+    names = [p.relative_to(root).as_posix() for p in found]
+    if requested is not None:
+        return found[names.index(_match_urdf(names, requested, shown))]
     if len(found) == 1:
         return found[0]
-    preferred = [p for p in found if p.name == PREFERRED_URDF]
-    if preferred:
-        return preferred[0]
-    names = ", ".join(str(p.relative_to(root)) for p in found)
-    raise AssetError(f"the asset holds several URDF files ({names}); keep one or name it {PREFERRED_URDF}", file=shown or root.name, element=names)
+    raise AssetError(
+        f"the asset holds {len(names)} URDF files ({urdf_list(names)}); choose one with --urdf NAME "
+        "(artimo) or the 'urdf' field (API), or upload one asset at a time",
+        file=shown, element=urdf_list(names),
+    )
 
 
-def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str) -> ArticulatedAsset:
+MAX_LISTED_URDFS = 12
+
+
+def urdf_list(names: list[str]) -> str:
+    """``a.urdf, b.urdf`` (the first :data:`MAX_LISTED_URDFS`, then how many more)."""
+    shown = ", ".join(names[:MAX_LISTED_URDFS])
+    return shown if len(names) <= MAX_LISTED_URDFS else f"{shown} and {len(names) - MAX_LISTED_URDFS} more"
+
+
+def _match_urdf(names: list[str], requested: str, shown: str) -> str:
+    wanted = requested.strip().replace("\\", "/").strip("/")
+    while wanted.startswith("./"):
+        wanted = wanted[2:]
+    if wanted in names:
+        return wanted
+    ending = [n for n in names if n.endswith("/" + wanted)]
+    if len(ending) == 1:
+        return ending[0]
+    # the asset's own top folder named too (``bin/mobility.urdf`` for a zip of the folder ``bin``)
+    inner = [n for n in names if wanted.endswith("/" + n)]
+    if len(inner) == 1:
+        return inner[0]
+    problem = "matches several" if len(ending) > 1 or len(inner) > 1 else "matches none"
+    raise AssetError(f"the requested URDF {requested!r} {problem} of the asset's URDF files ({urdf_list(names)})",
+                     file=shown, element=requested[:200])
+
+
+def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str, urdf: str | None = None) -> ArticulatedAsset:
     root = root.resolve()
-    urdf_path = find_urdf(root, shown=shown)
-    urdf_name = str(urdf_path.relative_to(root))
+    urdf_path = find_urdf(root, shown=shown, requested=urdf)
+    urdf_name = urdf_path.relative_to(root).as_posix()
     data = urdf_path.read_bytes()
     check_urdf_xml(data, urdf_name, limits)
     parsed = parse_urdf(data, urdf_name)

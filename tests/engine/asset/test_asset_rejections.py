@@ -20,10 +20,12 @@ URDF = "mobility.urdf"
 HINGE = two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)))
 
 
-def rejected(path: Path, file: str, element: str, *, limits: AssetLimits | None = None, says: str = "") -> AssetError:
+def rejected(
+    path: Path, file: str, element: str, *, limits: AssetLimits | None = None, says: str = "", urdf: str | None = None
+) -> AssetError:
     """Load ``path``, expect an AssetError whose message names ``file`` and ``element``."""
     with pytest.raises(AssetError) as caught:
-        load_asset(path, limits=limits)
+        load_asset(path, limits=limits, urdf=urdf)
     error = caught.value
     message = str(error)
     assert error.file == file, message
@@ -308,12 +310,12 @@ def test_duplicate_joint_names(tmp_path: Path) -> None:
 
 def test_several_urdfs_without_mobility(tmp_path: Path) -> None:
     asset = write_asset(tmp_path / "asset", HINGE, {"b.urdf": HINGE}, urdf_name="a.urdf")
-    rejected(asset, "asset", "a.urdf, b.urdf", says="several URDF files")
+    rejected(asset, "asset", "a.urdf, b.urdf", says="holds 2 URDF files")
 
 
 def test_several_urdfs_in_a_zip_name_the_upload(tmp_path: Path) -> None:
     archive = make_zip(tmp_path, [("a.urdf", HINGE), ("b.urdf", HINGE)])
-    rejected(archive, "upload.zip", "a.urdf, b.urdf", says="several URDF files")
+    rejected(archive, "upload.zip", "a.urdf, b.urdf", says="holds 2 URDF files")
 
 
 def test_no_urdf(tmp_path: Path) -> None:
@@ -321,7 +323,37 @@ def test_no_urdf(tmp_path: Path) -> None:
     rejected(asset, "asset", "*.urdf", says="no .urdf file")
 
 
-def test_mobility_urdf_is_preferred_among_several(tmp_path: Path) -> None:
+def test_several_urdfs_are_an_error_even_with_a_mobility_urdf(tmp_path: Path) -> None:
+    """A folder of assets (or a zip of two) must not pick one silently."""
     other = robot(link("only", BOX))
     asset = write_asset(tmp_path / "asset", HINGE, {"extra/other.urdf": other, "zz.urdf": other})
-    assert load_asset(asset).joint_order == ("hinge",)
+    error = rejected(asset, "asset", "mobility.urdf, zz.urdf, extra/other.urdf", says="holds 3 URDF files")
+    assert "--urdf" in str(error) and "'urdf' field" in str(error)
+
+
+def test_a_zip_of_two_assets_is_an_error(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    rejected(archive, "upload.zip", "bin/mobility.urdf, cap/mobility.urdf", says="holds 2 URDF files")
+
+
+def test_the_chosen_urdf_is_loaded(tmp_path: Path) -> None:
+    other = robot(link("only", BOX))
+    asset = write_asset(tmp_path / "asset", HINGE, {"extra/other.urdf": other, "zz.urdf": other})
+    assert load_asset(asset, urdf="mobility.urdf").joint_order == ("hinge",)
+    chosen = load_asset(asset, urdf="extra/other.urdf")
+    assert chosen.urdf_file == "extra/other.urdf" and chosen.joint_order == ()
+    assert load_asset(asset, urdf="other.urdf").urdf_file == "extra/other.urdf"  # a unique file name is enough
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    assert load_asset(archive, urdf="bin/mobility.urdf").joint_order == ("hinge",)
+
+
+def test_a_chosen_urdf_that_is_not_there_lists_the_ones_that_are(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    rejected(archive, "upload.zip", "lid.urdf", urdf="lid.urdf",
+             says="matches none of the asset's URDF files (bin/mobility.urdf, cap/mobility.urdf)")
+    rejected(archive, "upload.zip", "mobility.urdf", urdf="mobility.urdf", says="matches several")
+
+
+def test_a_single_urdf_may_be_named_with_its_folder(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("bin/mobility.urdf", HINGE)])  # the zip of a folder: the folder is the asset root
+    assert load_asset(archive, urdf="bin/mobility.urdf").urdf_file == "mobility.urdf"
