@@ -18,6 +18,7 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from sqlalchemy.exc import DataError, OperationalError
 
+from app.core.storage import StorageError
 from app.engine.errors import AssetError, EngineError, PlanValidationError, ProviderError
 from app.schemas.common import ErrorPublic
 
@@ -135,6 +136,13 @@ async def _database_refused_value(_request: Request, exc: Exception) -> JSONResp
     return ErrorResponse(_body("a value in the request cannot be stored", "InvalidValue", {}), status_code=422)
 
 
+async def _storage_error(_request: Request, exc: Exception) -> JSONResponse:
+    """Stored bytes missing or damaged: the server's fault, not the caller's input."""
+    logger.error("storage: %s", exc)
+    detail = f"{exc}; if it is an asset, upload the same file again to restore it"
+    return ErrorResponse(_body(detail, "StorageError", {}), status_code=500)
+
+
 async def _invalid_request(_request: Request, exc: Exception) -> JSONResponse:
     """FastAPI's 422 body (``detail`` = list of errors), rendered safely."""
     assert isinstance(exc, RequestValidationError)
@@ -147,3 +155,4 @@ def install_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(EngineError, _engine_error)
     app.add_exception_handler(OperationalError, _database_unavailable)
     app.add_exception_handler(DataError, _database_refused_value)
+    app.add_exception_handler(StorageError, _storage_error)

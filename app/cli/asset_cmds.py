@@ -9,6 +9,7 @@ from typing import Any
 
 from app.cli.output import cache_dir, out, out_json
 from app.engine.asset.cache import load_asset_cached
+from app.engine.asset.layout import JointEnds, asset_layout, direction_name
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.errors import PlanValidationError
@@ -46,14 +47,33 @@ def _fmt(value: float | None) -> str:
     return "-" if value is None else f"{value:.4g}"
 
 
+def _ends(ends: JointEnds) -> str:
+    """"closed/rest at lower (0), open at upper (1.57)" from the geometry's reading of a joint's range."""
+    def at(end: str | None, value: float | None) -> str:
+        return f"at {end} ({_fmt(value)})" if end not in (None, "between") else f"at {_fmt(value)}"
+
+    if ends.closed is None or ends.open is None:
+        if ends.type == "continuous":
+            return f"rest {_fmt(ends.rest)}, turns freely"
+        return f"rest {at(ends.rest_end, ends.rest)}; the geometry does not tell closed from open"
+    if abs(ends.rest - ends.closed) < 1e-9:
+        return f"closed/rest {at(ends.closed_end, ends.closed)}, open {at(ends.open_end, ends.open)}"
+    if abs(ends.rest - ends.open) < 1e-9:
+        return f"open/rest {at(ends.open_end, ends.open)}, closed {at(ends.closed_end, ends.closed)}"
+    return f"rest {at(ends.rest_end, ends.rest)}, closed {at(ends.closed_end, ends.closed)}, open {at(ends.open_end, ends.open)}"
+
+
 def _inspect(args: argparse.Namespace) -> int:
     asset = load_asset_cached(args.asset, cache_dir(args), urdf=args.urdf)
     scale = scale_context(asset)
+    layout = asset_layout(asset)
     if args.json:
-        out_json({"joints": [j.model_dump() for j in joint_summary(asset)], "scale": scale.model_dump()})
+        out_json({"joints": [j.model_dump() for j in joint_summary(asset)], "scale": scale.model_dump(), "layout": layout.model_dump()})
         return 0
     out(f"asset {asset.name}  ({asset.urdf_file}, root link {asset.root_link})")
-    out(f"size {' x '.join(f'{v:.3f}' for v in scale.object_bbox_extents_m)} m, diagonal {scale.object_diag_m:.3f} m")
+    out(f"size {' x '.join(f'{v:.3f}' for v in scale.object_bbox_extents_m)} m, diagonal {scale.object_diag_m:.3f} m; "
+        f"front faces {direction_name(layout.front)} (left/right below are as seen from the front)")
+    ends = {e.joint: e for e in layout.joints}
     out("\njoints:")
     for name in asset.joint_order:
         joint = asset.joints[name]
@@ -61,14 +81,19 @@ def _inspect(args: argparse.Namespace) -> int:
         axis = "" if not joint.movable else " axis " + " ".join(f"{v:+.3f}" for v in joint.axis)
         mimic = f" mimics {joint.mimic.joint} x{joint.mimic.multiplier:g}{joint.mimic.offset:+g}" if joint.mimic else ""
         out(f"  {name:<20} {joint.type:<10} {joint.parent} -> {joint.child}{axis} {limits}{mimic}")
+        if name in ends:
+            out(f"  {'':<20} {_ends(ends[name])}")
+    places = {p.link: p for p in layout.parts}
     out("\nlinks:")
     for name in asset.link_order:
         link = asset.links[name]
         faces = sum(len(p.faces) for p in link.parts)
-        label = link.semantics.label or "-"
         size = scale.link_bbox_extents_m.get(name)
         dims = " x ".join(f"{v:.3f}" for v in size) if size else "no geometry"
-        out(f"  {name:<20} label {label:<18} ({link.semantics.source}) {len(link.parts)} parts, {faces} faces, {dims}")
+        place = places.get(name)
+        where = f"  {place.vertical}, {place.side}, {place.depth}" if place else ""
+        shown = place.name if place else name
+        out(f"  {shown:<32} ({link.semantics.source}) {len(link.parts)} parts, {faces} faces, {dims}{where}")
     for warning in asset.warnings:
         out(f"warning: {warning}")
     return 0

@@ -91,3 +91,25 @@ def test_urdf_option_chooses_one_asset(capsys: pytest.CaptureFixture[str], tmp_p
     plan = examples_dir / "pedal_bin" / "plan.json"
     assert main(["--no-cache", "run-plan", str(folder), "--urdf", "pedal_bin.urdf", "--plan", str(plan), "--out", str(tmp_path / "rp")]) == 0
     assert main(["--no-cache", "validate-plan", str(folder), "--urdf", "pedal_bin.urdf", "--plan", str(plan)]) == 0
+
+
+def test_inspect_says_which_end_is_closed_and_where_parts_sit(capsys: pytest.CaptureFixture[str], examples_dir: Path) -> None:
+    assert main(["--no-cache", "inspect", str(examples_dir / "cabinet")]) == 0
+    text = capsys.readouterr().out
+    assert "front faces +X" in text
+    lines = text.splitlines()
+    bottom = lines.index(next(line for line in lines if line.strip().startswith("drawer_bottom_slide")))
+    assert "closed/rest at upper (0), open at lower (-0.35)" in lines[bottom + 1]  # the limit's sign says nothing
+    assert any("drawer (upper, drawer_top)" in line and "top, center, middle" in line for line in lines)
+    assert any("drawer (lower, drawer_bottom)" in line and "bottom, center, middle" in line for line in lines)
+    assert any(line.strip().startswith("door ") and line.endswith("front") for line in lines)
+
+
+def test_inspect_json_has_the_layout(capsys: pytest.CaptureFixture[str], partnet: Path) -> None:
+    assert main(["--no-cache", "inspect", "--json", str(partnet / "refrigerator_11178")]) == 0
+    layout = json.loads(capsys.readouterr().out)["layout"]
+    assert layout["front"] == [-1.0, 0.0, 0.0]
+    names = {p["link"]: p["name"] for p in layout["parts"]}
+    assert (names["link_0"], names["link_1"]) == ("door (left, link_0)", "door (right, link_1)")
+    ends = {j["joint"]: j for j in layout["joints"]}
+    assert (ends["joint_0"]["closed_end"], ends["joint_0"]["open_end"], ends["joint_0"]["rest_end"]) == ("lower", "upper", "lower")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import uuid
+from pathlib import Path
 
 import pytest
 from celery.exceptions import SoftTimeLimitExceeded, TimeLimitExceeded
@@ -13,7 +14,7 @@ from app.core.storage import LocalStorage
 from app.crud import jobs as crud_jobs
 from app.db.models import Job, JobStatus
 from app.db.session import session_factory
-from tests.workers.jobs import load_job, make_job
+from tests.workers.jobs import PEDAL_BIN, load_job, make_job
 from workers import tasks
 from workers.lease import job_lease
 from workers.observer import JobObserver
@@ -135,26 +136,30 @@ def test_unexpected_engine_error_fails_the_job(settings: Settings, monkeypatch: 
     assert job.error_kind == "InternalError" and job.error == "internal error: ZeroDivisionError: engine bug"
 
 
-def test_missing_asset_object_fails_the_job(settings: Settings) -> None:
-    job_id = make_job(settings)
-    job = load_job(settings, job_id)
-    with session_factory(settings.sqlalchemy_url)() as session:
-        from app.db.models import Asset
+@pytest.mark.parametrize("damage", ["delete", "truncate", "alter"])
+def test_a_missing_or_damaged_stored_asset_fails_the_job_as_a_storage_error(settings: Settings, tmp_path: Path, damage: str) -> None:
+    """Not the user's AssetError: the server lost the bytes (and says how to restore them)."""
+    import hashlib
+    import shutil
 
-        asset = session.get(Asset, job.asset_id)
-        assert asset is not None
-        original_key, asset.storage_key = asset.storage_key, "assets/missing.zip"
-        session.commit()
-    try:
-        assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
-        failed = load_job(settings, job_id)
-        assert failed.error_kind == "StorageError" and "assets/missing.zip" in (failed.error or "")
-    finally:
-        with session_factory(settings.sqlalchemy_url)() as session:
-            asset = session.get(Asset, job.asset_id)
-            assert asset is not None
-            asset.storage_key = original_key
-            session.commit()
+    from tests.workers import stack
+
+    folder = tmp_path / "bin"
+    shutil.copytree(PEDAL_BIN, folder)
+    (folder / "note.txt").write_text(f"{damage} {uuid.uuid4()}")  # content of its own: nothing shared with other tests
+    job_id = make_job(settings, folder=folder)
+    stored = settings.storage_dir / "assets" / f"{hashlib.sha256(stack.zip_folder(folder)).hexdigest()}.zip"
+    data = stored.read_bytes()
+    if damage == "delete":
+        stored.unlink()
+    elif damage == "truncate":
+        stored.write_bytes(data[: len(data) // 2])
+    else:
+        stored.write_bytes(data[:-40] + bytes(40))  # same size, other bytes
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    failed = load_job(settings, job_id)
+    assert failed.error_kind == "StorageError", failed.error
+    assert "upload the asset again" in (failed.error or "")
 
 
 def test_duplicate_delivery_while_leased_is_dropped(settings: Settings) -> None:

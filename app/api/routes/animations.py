@@ -13,8 +13,16 @@ from sqlalchemy.orm import Session
 
 from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep
 from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
-from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder, validate_fields
-from app.api.intake import asset_by_ref, store_upload
+from app.api.forms import (
+    ASSET_FILES_SCHEMA,
+    URDF_FIELD_SCHEMA,
+    multipart_openapi,
+    read_form,
+    upload_folder,
+    urdf_field,
+    validate_fields,
+)
+from app.api.intake import asset_by_ref, asset_with_urdf, store_upload
 from app.api.presenters import job_public, job_url
 from app.api.queue import Enqueuer, dispatch_jobs
 from app.crud import jobs as crud_jobs
@@ -32,6 +40,7 @@ SUBMIT_BODY = multipart_openapi(
     {
         "asset": ASSET_FILES_SCHEMA,
         "asset_ref": {"type": "string", "maxLength": 100, "description": "instead of files: an asset id or sha256 from POST /v1/assets"},
+        "urdf": URDF_FIELD_SCHEMA,
         "prompt": {"type": "string", "minLength": 1, "maxLength": MAX_PROMPT_CHARS},
         "provider": {**_TEXT, "description": "offline (default), openai or gemini"},
         "perceiver_model": _TEXT, "planner_model": _TEXT, "critic_model": _TEXT,
@@ -61,7 +70,7 @@ def _job_or_404(session: Session, job_id: uuid.UUID, client: ApiClient) -> Job:
     "",
     status_code=status.HTTP_202_ACCEPTED,
     response_model=JobAccepted,
-    responses=error_responses(401, 404, 413, 415, 422, 429, 503),
+    responses=error_responses(401, 404, 409, 413, 415, 422, 429, 503),
     openapi_extra=SUBMIT_BODY,
 )
 async def create_animation(
@@ -72,13 +81,16 @@ async def create_animation(
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)
-        files, ref = form.files_of("asset"), (form.value("asset_ref") or "").strip()
+        files, ref, urdf = form.files_of("asset"), (form.value("asset_ref") or "").strip(), urdf_field(form)
         if files and ref:
             raise Unprocessable("send either asset file(s) or 'asset_ref', not both")
         if ref:
-            asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref))
+            asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref, any_urdf=urdf is not None))
+            if urdf is not None:
+                asset = await asset_with_urdf(asset, urdf, session=session, storage=storage, client=client, settings=settings)
         else:
-            asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client)
+            asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client,
+                                          settings=settings, urdf=urdf)
     job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue)
     url = job_url(request, job.id)
     response.headers["Location"] = url

@@ -6,6 +6,7 @@ import hashlib
 import logging
 import re
 import tempfile
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -36,7 +37,8 @@ def load_asset(
     limits
         Size caps; defaults to :class:`AssetLimits`.
     name
-        Asset name; defaults to the directory name or zip stem.
+        Asset name; defaults to the directory name or zip stem. A zip is called ``<name>.zip``
+        in error messages (the service passes the client's name for its stored file).
     urdf
         Which ``.urdf`` to load when the folder holds several (its path inside the asset,
         or its file name when that is unique); see :func:`find_urdf`.
@@ -51,11 +53,12 @@ def load_asset(
     if not source.exists():
         raise AssetError("asset path does not exist", file=str(source))
     if source.is_file():
-        if source.suffix.lower() != ".zip":
-            raise AssetError("an asset must be a directory or a .zip archive", file=source.name)
+        shown = source.name if name is None else f"{name}.zip"
+        if source.suffix.lower() != ".zip" and not zipfile.is_zipfile(source):
+            raise AssetError("an asset must be a directory or a .zip archive", file=shown)
         with tempfile.TemporaryDirectory(prefix="artimo-asset-") as tmp:
-            extract_zip(source, Path(tmp), limits)
-            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=source.name, urdf=urdf)
+            extract_zip(source, Path(tmp), limits, shown=shown)
+            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=shown, urdf=urdf)
     return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name, urdf=urdf)
 
 
@@ -85,16 +88,40 @@ def find_urdf(root: Path, *, shown: str | None = None, requested: str | None = N
         No URDF; several and none requested (the message lists them); a requested one
         that matches none or several.
     """
-    found = sorted((p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file()), key=lambda p: (len(p.parts), str(p)))
-    found = [p for p in found if not p.is_symlink() and MACOS_METADATA_DIR not in p.relative_to(root).parts]
-    shown = shown or root.name
-    if not found:
-        raise AssetError("no .urdf file in the asset", file=shown, element="*.urdf")
+    found = [p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file() and not p.is_symlink()]
     names = [p.relative_to(root).as_posix() for p in found]
+    return root / choose_urdf(names, requested, shown or root.name)
+
+
+def urdf_in_zip(archive: Path, requested: str | None = None) -> str:
+    """:func:`find_urdf` on a zip's member list (nothing extracted): the chosen URDF's path inside the asset.
+
+    Raises
+    ------
+    AssetError
+        As :func:`find_urdf`, or an unreadable zip.
+    """
+    try:
+        with zipfile.ZipFile(archive) as zf:
+            members = [i.filename.replace("\\", "/") for i in zf.infolist() if not i.is_dir()]
+    except (zipfile.BadZipFile, OSError) as exc:
+        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name, element="central directory") from exc
+    members = [m.lstrip("/") for m in members if m.split("/", 1)[0] != MACOS_METADATA_DIR]
+    tops = {m.split("/", 1)[0] for m in members}
+    if len(tops) == 1 and all("/" in m for m in members):  # a zip of one folder: the folder is the asset root
+        members = [m.split("/", 1)[1] for m in members]
+    return choose_urdf([m for m in members if m.lower().endswith(".urdf")], requested, archive.name)
+
+
+def choose_urdf(names: list[str], requested: str | None, shown: str) -> str:
+    """One of ``names`` (URDF paths relative to the asset root): the only one, or the one ``requested``."""
+    names = sorted((n for n in names if MACOS_METADATA_DIR not in n.split("/")), key=lambda n: (n.count("/"), n))
+    if not names:
+        raise AssetError("no .urdf file in the asset", file=shown, element="*.urdf")
     if requested is not None:
-        return found[names.index(_match_urdf(names, requested, shown))]
-    if len(found) == 1:
-        return found[0]
+        return _match_urdf(names, requested, shown)
+    if len(names) == 1:
+        return names[0]
     raise AssetError(
         f"the asset holds {len(names)} URDF files ({urdf_list(names)}); choose one with --urdf NAME "
         "(artimo) or the 'urdf' field (API), or upload one asset at a time",

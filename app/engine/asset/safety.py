@@ -42,8 +42,10 @@ def _member_problem(info: zipfile.ZipInfo) -> str | None:
     return None
 
 
-def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
+def extract_zip(archive: Path, target: Path, limits: AssetLimits, *, shown: str | None = None) -> None:
     """Extract ``archive`` into the empty directory ``target`` after checking every member.
+
+    ``shown`` names the archive in error messages (default: its file name).
 
     Raises
     ------
@@ -51,35 +53,36 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
         Broken zip, zip slip (``..``, absolute paths, symlinks), too many files,
         too large in total or a member with an implausible compression ratio.
     """
+    shown = shown or archive.name
     try:
         zf = zipfile.ZipFile(archive)
     except (zipfile.BadZipFile, OSError) as exc:
-        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name, element="central directory") from exc
+        raise AssetError(f"not a readable zip archive: {exc}", file=shown, element="central directory") from exc
     with zf:
         infos = zf.infolist()
         if len(infos) > limits.max_files:
             raise AssetError(
                 f"zip holds {len(infos)} members, more than the limit of {limits.max_files}",
-                file=archive.name,
+                file=shown,
                 element=infos[limits.max_files].filename,
             )
         total = 0
         for info in infos:
             problem = _member_problem(info)
             if problem:
-                raise AssetError(f"unsafe zip member: {problem}", file=archive.name, element=info.filename)
+                raise AssetError(f"unsafe zip member: {problem}", file=shown, element=info.filename)
             total += info.file_size
             if total > limits.max_total_bytes:
                 raise AssetError(
                     f"zip expands to more than the limit of {limits.max_total_bytes} bytes",
-                    file=archive.name,
+                    file=shown,
                     element=info.filename,
                 )
             if info.compress_size > 0 and info.file_size / info.compress_size > limits.max_compression_ratio:
                 raise AssetError(
                     "zip member expands more than "
                     f"{limits.max_compression_ratio:.0f}x (zip bomb?)",
-                    file=archive.name,
+                    file=shown,
                     element=info.filename,
                 )
         root = target.resolve()
@@ -87,7 +90,7 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
         for info in infos:
             dest = (root / info.filename).resolve()
             if not dest.is_relative_to(root):
-                raise AssetError("unsafe zip member: path escapes the archive root", file=archive.name, element=info.filename)
+                raise AssetError("unsafe zip member: path escapes the archive root", file=shown, element=info.filename)
             if info.is_dir():
                 dest.mkdir(parents=True, exist_ok=True)
                 continue
@@ -97,10 +100,10 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
                     while chunk := src.read(1 << 20):
                         written += len(chunk)
                         if written > limits.max_total_bytes:
-                            raise AssetError("zip expands beyond its declared size", file=archive.name, element=info.filename)
+                            raise AssetError("zip expands beyond its declared size", file=shown, element=info.filename)
                         out.write(chunk)
             except (zipfile.BadZipFile, OSError, EOFError) as exc:
-                raise AssetError(f"corrupt zip member: {exc}", file=archive.name, element=info.filename) from exc
+                raise AssetError(f"corrupt zip member: {exc}", file=shown, element=info.filename) from exc
 
 
 def check_urdf_xml(data: bytes, file_name: str, limits: AssetLimits) -> None:

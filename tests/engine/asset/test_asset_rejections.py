@@ -357,3 +357,15 @@ def test_a_chosen_urdf_that_is_not_there_lists_the_ones_that_are(tmp_path: Path)
 def test_a_single_urdf_may_be_named_with_its_folder(tmp_path: Path) -> None:
     archive = make_zip(tmp_path, [("bin/mobility.urdf", HINGE)])  # the zip of a folder: the folder is the asset root
     assert load_asset(archive, urdf="bin/mobility.urdf").urdf_file == "mobility.urdf"
+
+
+def test_urdf_in_zip_agrees_with_the_loader_without_extracting(tmp_path: Path) -> None:
+    from app.engine.asset.loader import urdf_in_zip
+
+    two = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    assert urdf_in_zip(two, "bin/mobility.urdf") == load_asset(two, urdf="bin/mobility.urdf").urdf_file == "bin/mobility.urdf"
+    with pytest.raises(AssetError, match="holds 2 URDF files"):
+        urdf_in_zip(two)
+    (tmp_path / "one").mkdir()
+    one = make_zip(tmp_path / "one", [("bin/mobility.urdf", HINGE), ("__MACOSX/bin/._mobility.urdf", "junk")])
+    assert urdf_in_zip(one) == load_asset(one).urdf_file == "mobility.urdf"
