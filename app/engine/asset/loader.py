@@ -15,8 +15,9 @@ import yourdfpy
 from app.engine.asset.meshes import GeometryBudget, load_mesh_file, primitive_parts, resolve_mesh_path
 from app.engine.asset.model import ArticulatedAsset, LinkSemantics, LinkSpec, MeshPart
 from app.engine.asset.safety import AssetLimits, check_urdf_xml, extract_zip
-from app.engine.asset.urdf import parse_urdf
+from app.engine.asset.urdf import check_transform, finite_numbers, parse_urdf
 from app.engine.errors import AssetError
+from app.engine.types import FloatArray
 
 logger = logging.getLogger(__name__)
 
@@ -217,7 +218,7 @@ def _link_parts(
     parts: list[MeshPart] = []
     for index, visual in enumerate(link.visuals):
         element = f"link {link.name} visual {visual.name or index}"
-        origin = np.eye(4) if visual.origin is None else np.asarray(visual.origin, dtype=np.float64)
+        origin = np.eye(4) if visual.origin is None else check_transform(visual.origin, "origin", file=urdf_name, element=element)
         rgba = _visual_rgba(visual, robot)
         geometry = visual.geometry
         label = f"{link.name}_{index}"
@@ -225,22 +226,37 @@ def _link_parts(
             raise AssetError("visual has no geometry", file=urdf_name, element=element)
         if geometry.mesh is not None:
             mesh_path = resolve_mesh_path(geometry.mesh.filename or "", urdf_dir, root, urdf_name=urdf_name, element=element)
-            scale = np.ones(3) if geometry.mesh.scale is None else np.broadcast_to(np.asarray(geometry.mesh.scale, dtype=np.float64), (3,))
+            scale = _mesh_scale(geometry.mesh.scale, urdf_name, element)
             transform = origin @ np.diag([*scale, 1.0])
             digest.update(str(mesh_path.relative_to(root)).encode())
             digest.update(mesh_path.read_bytes())
             parts.extend(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label))
         elif geometry.box is not None:
-            parts.extend(primitive_parts("box", np.asarray(geometry.box.size, dtype=np.float64), origin, rgba, budget, label=label, urdf_name=urdf_name))
+            size = finite_numbers(geometry.box.size, 3, "box size", file=urdf_name, element=element)
+            parts.extend(primitive_parts("box", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
         elif geometry.cylinder is not None:
-            size = np.array([geometry.cylinder.radius, geometry.cylinder.length], dtype=np.float64)
+            size = finite_numbers([geometry.cylinder.radius, geometry.cylinder.length], 2, "cylinder radius/length", file=urdf_name, element=element)
             parts.extend(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
         elif geometry.sphere is not None:
-            size = np.array([geometry.sphere.radius], dtype=np.float64)
+            size = finite_numbers([geometry.sphere.radius], 1, "sphere radius", file=urdf_name, element=element)
             parts.extend(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name))
         else:
             raise AssetError("visual geometry is empty", file=urdf_name, element=element)
     return parts
+
+
+MIN_SCALE = 1e-9
+
+
+def _mesh_scale(raw: object, urdf_name: str, element: str) -> FloatArray:
+    """A mesh's ``scale`` as three finite, non-zero factors (one number means all three)."""
+    if raw is None:
+        return np.ones(3)
+    values = np.asarray(raw, dtype=np.float64).reshape(-1)
+    scale = finite_numbers(values if values.size != 1 else np.repeat(values, 3), 3, "mesh scale", file=urdf_name, element=element)
+    if np.any(np.abs(scale) < MIN_SCALE):
+        raise AssetError(f"mesh scale {scale.tolist()} has a zero factor", file=urdf_name, element=element)
+    return scale
 
 
 def _read_semantics(urdf_dir: Path, root: Path) -> dict[str, tuple[str, str]]:

@@ -182,6 +182,21 @@ def _scene_meshes(scene: trimesh.Scene) -> Iterator[tuple[trimesh.Trimesh, Trans
             yield geometry, np.asarray(transform, dtype=np.float64)
 
 
+MAX_COORDINATE_M = 1e4
+"""Largest |vertex coordinate| accepted in the link frame, metres (as URDF positions)."""
+
+
+def _check_numbers(part: MeshPart, relative: str) -> None:
+    """Every vertex finite and within :data:`MAX_COORDINATE_M`, every uv finite (NaN breaks everything downstream)."""
+    vertices = part.vertices
+    if vertices.size and (not np.all(np.isfinite(vertices)) or float(np.abs(vertices).max()) > MAX_COORDINATE_M):
+        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1) | (np.abs(vertices) > MAX_COORDINATE_M).any(axis=1))[0])
+        raise AssetError(f"mesh vertex {bad} is NaN, infinite or farther than {MAX_COORDINATE_M:g} m "
+                         f"({vertices[bad].tolist()})", file=relative, element=f"vertex {bad}")
+    if part.uv is not None and not np.all(np.isfinite(part.uv)):
+        raise AssetError("mesh texture coordinates hold NaN or infinite values", file=relative, element="vt")
+
+
 def load_mesh_file(
     path: Path,
     root: Path,
@@ -221,7 +236,9 @@ def load_mesh_file(
     for index, (mesh, node_transform) in enumerate(_scene_meshes(scene)):
         budget.spend(len(mesh.faces), relative)
         material, uv = _material_of(mesh, fallback_rgba, f"{label}_{index}")
-        parts.append(_part(mesh, transform @ node_transform, material, uv, relative))
+        part = _part(mesh, transform @ node_transform, material, uv, relative)
+        _check_numbers(part, relative)
+        parts.append(part)
     if not parts:
         raise AssetError("mesh has no triangles", file=relative)
     return parts
@@ -240,6 +257,8 @@ def primitive_parts(
     """Build a URDF primitive (``box`` size xyz; ``cylinder`` radius, length; ``sphere`` radius)."""
     if np.any(~np.isfinite(size)) or np.any(size <= 0):
         raise AssetError(f"{kind} has a non-positive size {size.tolist()}", file=urdf_name, element=label)
+    if np.any(size > MAX_COORDINATE_M):
+        raise AssetError(f"{kind} size {size.tolist()} is larger than {MAX_COORDINATE_M:g} m", file=urdf_name, element=label)
     if kind == "box":
         mesh = trimesh.creation.box(extents=size)
     elif kind == "cylinder":

@@ -207,3 +207,27 @@ def test_malformed_multipart_is_a_400(http, alice, body) -> None:
 def test_multipart_without_boundary_is_a_400(http, alice) -> None:
     headers = {**alice.headers, "Content-Type": "multipart/form-data"}
     assert http.post("/v1/assets", headers=headers, content=b"x").status_code == 400
+
+
+_BAD_JOINT = ('<joint name="lid_hinge" type="revolute"><parent link="base"/><child link="lid"/>{}'
+              '<limit lower="0" upper="1.5" effort="1" velocity="1"/></joint>')
+
+
+@pytest.mark.parametrize(
+    ("old", "new", "says"),
+    [
+        # was a 500 on upload
+        ('<axis xyz="1.0 0.0 0.0"/>', '<axis xyz="0 1"/>', "axis needs 3 numbers"),
+        # were accepted (201), then the summary answered 500 and jobs failed with internal errors
+        ('<box size="1.0 1.0 0.5"/>', '<box size="nan 1 1"/>', "box size holds a NaN"),
+        ('<origin xyz="0.0 -0.5 0.5" rpy="0.0 0.0 0.0"/>', '<origin xyz="1e308 0 0"/>', "larger than 10000"),
+        ('<origin xyz="0.0 0.0 0.25" rpy="0.0 0.0 0.0"/>', '<origin xyz="nan 0 0.25"/>', "not a finite transform"),
+    ],
+    ids=["axis-2-numbers", "nan-box", "huge-origin", "nan-visual-origin"],
+)
+def test_bad_numbers_are_a_422_on_upload_not_a_later_500(http, alice, old, new, says) -> None:
+    urdf = assets.hinge_urdf(name="numbers")
+    assert old in urdf
+    response = _upload(http, alice.headers, ("numbers.zip", assets.zip_bytes({"n/mobility.urdf": urdf.replace(old, new, 1)})))
+    assert response.status_code == 422, response.text
+    assert response.json()["kind"] == "AssetError" and says in response.json()["detail"]

@@ -369,3 +369,56 @@ def test_urdf_in_zip_agrees_with_the_loader_without_extracting(tmp_path: Path) -
     (tmp_path / "one").mkdir()
     one = make_zip(tmp_path / "one", [("bin/mobility.urdf", HINGE), ("__MACOSX/bin/._mobility.urdf", "junk")])
     assert urdf_in_zip(one) == load_asset(one).urdf_file == "mobility.urdf"
+
+
+# --- every number is checked on load (NaN, infinity, absurd sizes, wrong counts) -----------------
+def _with_joint(joint_xml: str) -> str:
+    return robot(link("base", BOX), link("part", BOX), joint_xml)
+
+
+def _with_visual(visual_xml: str) -> str:
+    return robot(link("base", BOX), link("part", visual_xml), joint("j", "revolute", "base", "part", limit=(0.0, 1.0)))
+
+
+_JOINT = '<joint name="j" type="revolute"><parent link="base"/><child link="part"/>{}</joint>'
+_LIMIT = '<limit lower="0" upper="1" effort="1" velocity="1"/>'
+BAD_NUMBERS = {
+    "axis with two numbers": (_with_joint(_JOINT.format('<axis xyz="0 1"/>' + _LIMIT)), "joint j", "axis needs 3 numbers"),
+    "NaN axis": (_with_joint(_JOINT.format('<axis xyz="0 nan 1"/>' + _LIMIT)), "joint j", "axis holds a NaN"),
+    "1e308 joint origin": (_with_joint(_JOINT.format('<origin xyz="1e308 0 0"/><axis xyz="0 0 1"/>' + _LIMIT)), "joint j",
+                           "larger than 10000"),
+    "infinite limit": (_with_joint(_JOINT.format('<axis xyz="0 0 1"/><limit lower="0" upper="inf" effort="1" velocity="1"/>')),
+                       "joint j", "limit lower/upper holds"),
+    "NaN effort": (_with_joint(_JOINT.format('<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="nan" velocity="1"/>')),
+                   "joint j", "limit effort holds"),
+    "NaN mimic multiplier": (robot(link("base", BOX), link("a", BOX), link("b", BOX),
+                                   joint("ja", "revolute", "base", "a", limit=(0.0, 1.0)),
+                                   joint("jb", "revolute", "base", "b", limit=(0.0, 1.0), mimic=("ja", float("nan"), 0.0))),
+                             "joint jb", "mimic multiplier/offset holds"),
+    "NaN visual origin": (_with_visual('<visual><origin xyz="nan 0 0"/><geometry><box size="1 1 1"/></geometry></visual>'),
+                          "link part visual 0", "origin is not a finite transform"),
+    "infinite visual rpy": (_with_visual('<visual><origin rpy="0 inf 0"/><geometry><box size="1 1 1"/></geometry></visual>'),
+                            "link part visual 0", "origin is not a finite transform"),
+    "box with two sizes": (_with_visual('<visual><geometry><box size="1 1"/></geometry></visual>'), "link part visual 0",
+                           "box size needs 3 numbers"),
+    "NaN box size": (_with_visual('<visual><geometry><box size="nan 1 1"/></geometry></visual>'), "link part visual 0",
+                     "box size holds a NaN"),
+    "infinite cylinder": (_with_visual('<visual><geometry><cylinder radius="inf" length="1"/></geometry></visual>'),
+                          "link part visual 0", "cylinder radius/length holds"),
+    "NaN mesh scale": (_with_visual(mesh("meshes/part.obj", scale=(float("nan"), 1.0, 1.0))), "link part visual 0",
+                       "mesh scale holds a NaN"),
+    "zero mesh scale": (_with_visual(mesh("meshes/part.obj", scale=(0.0, 1.0, 1.0))), "link part visual 0", "zero factor"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_NUMBERS))
+def test_bad_numbers_in_the_urdf_are_rejected_naming_the_element(tmp_path: Path, case: str) -> None:
+    urdf, element, says = BAD_NUMBERS[case]
+    rejected(urdf_asset(tmp_path, urdf, {"meshes/part.obj": TRIANGLE_OBJ}), URDF, element, says=says)
+
+
+@pytest.mark.parametrize("vertex", ["nan 0 0", "inf 0 0", "1e300 0 0"])
+def test_bad_numbers_in_obj_vertices_are_rejected(tmp_path: Path, vertex: str) -> None:
+    obj = f"v 0 0 0\nv {vertex}\nv 0 1 0\nf 1 2 3\n"
+    rejected(urdf_asset(tmp_path, _with_visual(mesh("meshes/part.obj")), {"meshes/part.obj": obj}), "meshes/part.obj", "vertex 1",
+             says="NaN, infinite or farther")
