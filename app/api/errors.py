@@ -78,6 +78,17 @@ class RateLimited(ApiError):
         )
 
 
+class TooManyJobs(ApiError):
+    status_code = 429
+
+    def __init__(self, active: int, adding: int, limit: int, *, retry_after_s: int = 30) -> None:
+        super().__init__(
+            f"you have {active} jobs queued or running and asked for {adding} more; the limit is {limit} per API key: "
+            "wait for some to finish (or cancel them)",
+            headers={"Retry-After": str(retry_after_s)}, active=active, limit=limit,
+        )
+
+
 class ServiceUnavailable(ApiError):
     status_code = 503
 

@@ -42,7 +42,9 @@ class Settings(BaseSettings):
     """Requests per API key per minute (health routes are exempt)."""
     job_soft_time_limit_s: int = Field(default=900, gt=0)
     job_hard_time_limit_s: int = Field(default=960, gt=0)
-    max_batch_cases: int = Field(default=500, gt=0)
+    max_batch_cases: int = Field(default=200, gt=0)
+    max_active_jobs_per_client: int = Field(default=200, gt=0)
+    """Jobs one API key may have queued or running at once; more are refused (429) until some finish."""
     api_max_in_flight: int = Field(default=8, ge=1)
     """HTTP requests inside one API process at once (others wait in the event loop); must stay <= the
     DB pool's capacity (5+10 SQLite, 10+20 Postgres) or sync routes can deadlock (see app/api/admission.py).

@@ -24,7 +24,8 @@ from app.api.forms import (
 )
 from app.api.intake import asset_by_ref, asset_with_urdf, store_upload
 from app.api.presenters import job_public, job_url
-from app.api.queue import Enqueuer, dispatch_jobs
+from app.api.queue import Enqueuer, check_job_quota, dispatch_jobs
+from app.core.config import Settings
 from app.crud import jobs as crud_jobs
 from app.db.models import ApiClient, Asset, Job, JobStatus
 from app.schemas.jobs import MAX_PROMPT_CHARS, JobAccepted, JobCreate, JobPublic, JobsPublic
@@ -53,7 +54,8 @@ SUBMIT_BODY = multipart_openapi(
 ERRORS = error_responses(401, 404, 429)
 
 
-def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer) -> Job:
+def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer, settings: Settings) -> Job:
+    check_job_quota(session, client=client, adding=1, limit=settings.max_active_jobs_per_client)
     job = crud_jobs.create_job(session, client=client, asset=asset, prompt=spec.prompt, options=spec.stored())
     dispatch_jobs(session, [job], enqueue)
     return job
@@ -91,7 +93,7 @@ async def create_animation(
         else:
             asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client,
                                           settings=settings, urdf=urdf)
-    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue)
+    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue, settings)
     url = job_url(request, job.id)
     response.headers["Location"] = url
     logger.info("job %s queued for client %s", job.id, client.name)

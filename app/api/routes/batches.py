@@ -10,7 +10,7 @@ from fastapi import APIRouter, Request, Response, status
 from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep
 from app.api.errors import NotFound, PayloadTooLarge, Unprocessable, error_responses
 from app.api.presenters import batch_public
-from app.api.queue import dispatch_jobs
+from app.api.queue import check_job_quota, dispatch_jobs
 from app.crud.assets import find_assets_for_client
 from app.crud.batches import BatchCase, create_batch, get_batch_for_client
 from app.schemas.batches import BatchCreate, BatchPublic
@@ -34,6 +34,7 @@ def create_batch_route(
     if len(body.cases) > settings.max_batch_cases:
         raise PayloadTooLarge(f"{len(body.cases)} cases, more than the limit of {settings.max_batch_cases}",
                               limit=settings.max_batch_cases)
+    check_job_quota(session, client=client, adding=len(body.cases), limit=settings.max_active_jobs_per_client)
     cases = []
     for index, case in enumerate(body.cases):
         found = find_assets_for_client(session, client=client, ref=case.asset)

@@ -14,7 +14,7 @@ import yourdfpy
 
 from app.engine.asset.meshes import GeometryBudget, load_mesh_file, primitive_parts, resolve_mesh_path
 from app.engine.asset.model import ArticulatedAsset, LinkSemantics, LinkSpec, MeshPart
-from app.engine.asset.safety import AssetLimits, check_urdf_xml, extract_zip
+from app.engine.asset.safety import AssetLimits, check_images, check_urdf_xml, extract_zip
 from app.engine.asset.urdf import check_transform, finite_numbers, parse_urdf
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray
@@ -163,10 +163,11 @@ def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str, u
     urdf_name = urdf_path.relative_to(root).as_posix()
     data = urdf_path.read_bytes()
     check_urdf_xml(data, urdf_name, limits)
+    check_images(root, limits)
     parsed = parse_urdf(data, urdf_name)
     digest = hashlib.sha256(data)
     semantics = _read_semantics(urdf_path.parent, root)
-    budget = GeometryBudget(max_faces=limits.max_faces)
+    budget = GeometryBudget(max_faces=limits.max_faces, limits=limits)
     links: dict[str, LinkSpec] = {}
     for link in parsed.robot.links:
         parts = _link_parts(link, parsed.robot, urdf_path.parent, root, urdf_name, budget, digest)

@@ -19,7 +19,8 @@ import trimesh.resolvers
 from PIL import Image
 
 from app.engine.asset.model import Material, MeshPart
-from app.engine.asset.safety import confine
+from app.engine.asset.face_count import least_faces
+from app.engine.asset.safety import AssetLimits, check_image, confine
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray, Transform
 
@@ -35,10 +36,13 @@ DEFAULT_RGBA = (0.8, 0.8, 0.8, 1.0)
 class _ConfinedResolver(trimesh.resolvers.Resolver):
     """Resolve names relative to a mesh file's folder, never outside ``root``."""
 
-    def __init__(self, mesh_file: Path, root: Path, report: list[str]) -> None:
+    def __init__(self, mesh_file: Path, root: Path, report: list[str], limits: AssetLimits | None = None) -> None:
         self.parent = mesh_file.parent
         self.root = root
         self.report = report
+        self.limits = limits or AssetLimits()
+        self.refused: list[AssetError] = []
+        """Files refused here; trimesh swallows errors while reading textures, so the caller re-raises these."""
 
     def get(self, name: str) -> bytes:
         candidate = (self.parent / name.strip().replace("\\", "/")).resolve()
@@ -48,13 +52,21 @@ class _ConfinedResolver(trimesh.resolvers.Resolver):
         if not candidate.is_file():
             self.report.append(f"'{name}' is missing")
             raise FileNotFoundError(name)
-        return candidate.read_bytes()
+        data = candidate.read_bytes()
+        try:
+            check_image(data, str(candidate.relative_to(self.root)), self.limits)  # a texture under any name: header first
+        except AssetError as exc:
+            self.refused.append(exc)
+            raise
+        return data
 
     def write(self, name: str, data: bytes | str) -> None:  # noqa: ARG002 - trimesh's Resolver signature
         raise PermissionError("the asset resolver is read-only")
 
     def namespaced(self, namespace: str) -> _ConfinedResolver:
-        return _ConfinedResolver(self.parent / namespace / "_", self.root, self.report)
+        nested = _ConfinedResolver(self.parent / namespace / "_", self.root, self.report, self.limits)
+        nested.refused = self.refused
+        return nested
 
     def keys(self) -> Iterator[str]:  # pragma: no cover - trimesh only uses it for zips
         return iter(())
@@ -67,11 +79,17 @@ class GeometryBudget:
     max_faces: int
     faces: int = 0
     warnings: list[str] = field(default_factory=list)
+    limits: AssetLimits = field(default_factory=AssetLimits)
 
     def spend(self, faces: int, file: str) -> None:
         self.faces += faces
         if self.faces > self.max_faces:
             raise AssetError(f"asset has more than {self.max_faces} triangles", file=file)
+
+    def check_ahead(self, at_least: int, file: str) -> None:
+        """Refuse a mesh before reading it when its header or lines already say it has too many faces."""
+        if self.faces + at_least > self.max_faces:
+            raise AssetError(f"asset has more than {self.max_faces} triangles ({file} alone has at least {at_least})", file=file)
 
 
 def resolve_mesh_path(filename: str, urdf_dir: Path, root: Path, *, urdf_name: str, element: str) -> Path:
@@ -216,15 +234,20 @@ def load_mesh_file(
     relative = str(path.relative_to(root))
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise AssetError(f"unsupported mesh format '{path.suffix}'", file=relative)
+    budget.check_ahead(least_faces(path), relative)
     report: list[str] = []
-    resolver = _ConfinedResolver(path, root, report)
+    resolver = _ConfinedResolver(path, root, report, budget.limits)
     try:
         with open(path, "rb") as handle:
             scene = trimesh.load(handle, file_type=path.suffix.lower().lstrip("."), resolver=resolver, force="scene", process=False)
     except AssetError:
         raise
     except Exception as exc:  # trimesh raises many unrelated types on corrupt files
+        if resolver.refused:
+            raise resolver.refused[0] from exc
         raise AssetError(f"cannot read mesh: {type(exc).__name__}: {exc}", file=relative) from exc
+    if resolver.refused:
+        raise resolver.refused[0]
     escapes = [r for r in report if "escapes" in r]
     if escapes:
         names = "; ".join(r.removesuffix(" escapes the asset directory") for r in escapes)

@@ -231,3 +231,13 @@ def test_bad_numbers_are_a_422_on_upload_not_a_later_500(http, alice, old, new, 
     response = _upload(http, alice.headers, ("numbers.zip", assets.zip_bytes({"n/mobility.urdf": urdf.replace(old, new, 1)})))
     assert response.status_code == 422, response.text
     assert response.json()["kind"] == "AssetError" and says in response.json()["detail"]
+
+
+def test_a_small_zip_with_a_huge_texture_is_refused_without_decoding_it(http, alice) -> None:
+    """~13000 x 13000 pixels (hundreds of MB decoded) in a few kB: a 422, before any decoding."""
+    from tests.engine.asset.test_asset_rejections import _png_header
+
+    files = {"t/mobility.urdf": assets.hinge_urdf(name="texture"), "t/textures/huge.png": _png_header(13000, 13000)}
+    response = _upload(http, alice.headers, ("texture.zip", assets.zip_bytes(files)))
+    assert response.status_code == 422, response.text
+    assert "13000 x 13000 pixels" in response.json()["detail"] and "textures/huge.png" in response.json()["detail"]

@@ -422,3 +422,48 @@ def test_bad_numbers_in_obj_vertices_are_rejected(tmp_path: Path, vertex: str) -
     obj = f"v 0 0 0\nv {vertex}\nv 0 1 0\nf 1 2 3\n"
     rejected(urdf_asset(tmp_path, _with_visual(mesh("meshes/part.obj")), {"meshes/part.obj": obj}), "meshes/part.obj", "vertex 1",
              says="NaN, infinite or farther")
+
+
+# --- cheap uploads must not buy unbounded work: limits checked before the expensive parse -----------
+def _png_header(width: int, height: int) -> bytes:
+    """The first bytes of a PNG declaring ``width`` x ``height`` (enough for a header read; never decoded)."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, payload: bytes) -> bytes:
+        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", zlib.crc32(kind + payload))
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(b"\0" * 1000))
+
+
+def test_too_many_joints_are_refused_before_the_urdf_is_parsed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import app.engine.asset.loader as loader
+
+    monkeypatch.setattr(loader, "parse_urdf", lambda *_: pytest.fail("parsed a URDF over the joint limit"))
+    links = [link(f"l{i}", BOX) for i in range(301)]
+    joints = [joint(f"j{i}", "revolute", f"l{i}", f"l{i + 1}", limit=(0.0, 1.0)) for i in range(300)]
+    rejected(urdf_asset(tmp_path, robot(*links, *joints)), URDF, "link", says="301 <link> elements, more than the limit of 257")
+
+
+@pytest.mark.parametrize("texture_name", ["textures/huge.png", "textures/huge.dat"])
+def test_a_huge_texture_is_refused_from_its_header(tmp_path: Path, texture_name: str) -> None:
+    """13000 x 13000 pixels (~500 MB decoded) in a few bytes: refused before decoding, under any file name."""
+    mtl = f"newmtl skin\nmap_Kd {texture_name}\n"
+    obj = "mtllib part.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl skin\nf 1/1 2/2 3/3\n"
+    files = {"meshes/part.obj": obj, "meshes/part.mtl": mtl, f"meshes/{texture_name}": _png_header(13000, 13000)}
+    asset = urdf_asset(tmp_path, two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)),
+                                               child_visual=mesh("meshes/part.obj")), files)
+    rejected(asset, f"meshes/{texture_name}", "texture", says="13000 x 13000 pixels")
+
+
+def test_an_obj_over_the_triangle_budget_is_refused_before_it_is_parsed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import trimesh
+
+    monkeypatch.setattr(trimesh, "load", lambda *_a, **_k: pytest.fail("parsed a mesh over the triangle budget"))
+    obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\n" + b"f 1 2 3\n" * 2_000_001
+    asset = urdf_asset(tmp_path, two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)),
+                                               child_visual=mesh("meshes/part.obj")), {"meshes/part.obj": obj})
+    with pytest.raises(AssetError, match="more than 2000000 triangles") as caught:
+        load_asset(asset)
+    assert caught.value.file == "meshes/part.obj"
