@@ -14,6 +14,7 @@ lease (:mod:`workers.lease`) lets one live process run a job, and a finished job
 from __future__ import annotations
 
 import logging
+import re
 import socket
 import tempfile
 import uuid
@@ -38,8 +39,9 @@ from app.db.session import session_factory
 from app.engine.agents.roles import Roles
 from app.engine.asset.stored import StoredAsset
 from app.engine.config import EngineConfig
-from app.engine.errors import CancelledError, EngineError
+from app.engine.errors import CancelledError, EngineError, ProviderError
 from app.engine.report import RunReport
+from app.schemas.jobs import MODEL_NAME_PATTERN
 from workers.broker import RUN_JOB_TASK
 from workers.celery_app import app
 from workers.lease import job_lease, probe_engine
@@ -110,11 +112,14 @@ def _roles(options: dict[str, Any], settings: Settings, config: EngineConfig) ->
     from app.engine.providers.registry import ProviderConfig, make_roles
 
     provider = str(options.get("provider") or settings.default_provider)
+    if (missing := settings.missing_provider_key(provider)) is not None:  # never an unauthenticated request
+        raise ProviderError(missing)
     models = tuple((role, str(options[f"{role}_model"])) for role in MODEL_ROLES if options.get(f"{role}_model"))
-    secret, base_url = {
-        "openai": (settings.openai_api_key, settings.openai_base_url),
-        "gemini": (settings.gemini_api_key, settings.gemini_base_url),
-    }.get(provider, (None, None))
+    for role, name in models:  # stored options were validated by the API; checked again before any URL is built
+        if not re.fullmatch(MODEL_NAME_PATTERN, name):
+            raise ProviderError(f"invalid {role} model name {name[:100]!r}")
+    base_url = {"openai": settings.openai_base_url, "gemini": settings.gemini_base_url}.get(provider)
+    secret = settings.provider_key(provider)
     api_key = None if secret is None else secret.get_secret_value()
     return make_roles(provider, ProviderConfig(api_key=api_key, base_url=base_url, models=models), config)
 

@@ -69,6 +69,18 @@ class Settings(BaseSettings):
     gemini_base_url: str = "https://generativelanguage.googleapis.com/v1beta"
     default_provider: str = "offline"
 
+    def provider_key(self, provider: str) -> SecretStr | None:
+        """The server's API key for a model provider (``None``: none configured, or the offline provider)."""
+        return {"openai": self.openai_api_key, "gemini": self.gemini_api_key}.get(provider)
+
+    def missing_provider_key(self, provider: str | None) -> str | None:
+        """Why a job on ``provider`` (default: the server's) cannot run here, or ``None`` when it can."""
+        name = provider or self.default_provider
+        if name in ("openai", "gemini") and self.provider_key(name) is None:
+            return (f"this server has no API key for provider '{name}' ({name.upper()}_API_KEY is not set); "
+                    "use provider 'offline' or ask the operator")
+        return None
+
     @property
     def data_dir(self) -> Path:
         return self.artimo_data_dir.expanduser()

@@ -198,3 +198,30 @@ def test_hard_time_limit_kill_fails_the_job(settings: Settings) -> None:
     assert job.status == JobStatus.failed and job.error_kind == "TimeLimitExceeded"
     assert job.error == f"timed out: killed at the hard time limit of {settings.job_hard_time_limit_s} s"
     tasks._hard_time_limit(exception=ValueError("another failure"), args=(str(job_id),))  # ignored
+
+
+@pytest.mark.parametrize(
+    ("provider", "options", "says"),
+    [
+        ("openai", {"provider": "openai"}, "no API key for provider 'openai'"),
+        ("gemini", {"provider": "gemini", "perceiver_model": "../../../admin/delete?confirm=1#"}, "invalid perceiver model name"),
+    ],
+)
+def test_the_worker_sends_nothing_to_a_provider_for_a_bad_job(settings: Settings, monkeypatch: pytest.MonkeyPatch, provider: str,
+                                                              options: dict[str, str], says: str) -> None:
+    """Jobs stored before the API checked them (or written to the database directly) fail without a request."""
+    from app.core.config import get_settings
+    from tests.support.replay_server import replay_server
+
+    with replay_server({}) as (base_url, script):
+        monkeypatch.setenv("OPENAI_BASE_URL", base_url)
+        monkeypatch.setenv("GEMINI_BASE_URL", base_url)
+        if provider == "gemini":
+            monkeypatch.setenv("GEMINI_API_KEY", "server-secret")
+        get_settings.cache_clear()
+        job_id = make_job(settings, options=options)
+        assert execute_job(str(job_id), settings=get_settings(), worker="w1") is Outcome.failed
+        failed = load_job(settings, job_id)
+        assert failed.error_kind == "ProviderError" and says in (failed.error or "")
+        assert script.requests == []
+    get_settings.cache_clear()

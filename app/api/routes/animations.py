@@ -83,6 +83,8 @@ async def create_animation(
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)
+        if (missing := settings.missing_provider_key(spec.provider)) is not None:
+            raise Unprocessable(missing, field="provider")
         files, ref, urdf = form.files_of("asset"), (form.value("asset_ref") or "").strip(), urdf_field(form)
         if files and ref:
             raise Unprocessable("send either asset file(s) or 'asset_ref', not both")

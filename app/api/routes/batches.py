@@ -43,6 +43,8 @@ def create_batch_route(
             raise Unprocessable(f"case {index}: {problem} {case.asset!r} (upload it with POST /v1/assets first)", case=index)
         asset = found[0]
         options = {**body.options.stored(), **(case.options.stored() if case.options else {})}
+        if (missing := settings.missing_provider_key(options.get("provider"))) is not None:
+            raise Unprocessable(f"case {index}: {missing}", case=index)
         cases.append(BatchCase(asset=asset, prompt=case.prompt.strip(), case_id=case.case_id, options=options))
     batch = create_batch(session, client=client, cases=cases, name=body.name)
     dispatch_jobs(session, batch.jobs, enqueue)
