@@ -34,6 +34,14 @@ class Settings(BaseSettings):
 
     max_upload_bytes: int = Field(default=256 * 1024 * 1024, gt=0)
     max_upload_files: int = Field(default=2000, gt=0)
+    max_json_body_bytes: int = Field(default=2 * 1024 * 1024, gt=0)
+    """Largest body that is not a multipart upload (``POST /v1/batches``), bytes."""
+    body_idle_timeout_s: float = Field(default=30.0, gt=0)
+    """A request body with no new bytes for this long is refused (408)."""
+    body_timeout_s: float = Field(default=900.0, gt=0)
+    """Longest time to receive a whole request body (408 after it)."""
+    metrics_token: SecretStr | None = None
+    """Bearer token for ``/metrics``; without it ``/metrics`` answers only on loopback."""
     rate_limit_per_minute: int = Field(default=120, gt=0)
     auth_cache_s: float = Field(default=2.0, ge=0)
     auth_failures_per_minute: int = Field(default=60, gt=0)

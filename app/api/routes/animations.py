@@ -11,7 +11,7 @@ from fastapi import APIRouter, Query, Request, Response, status
 from fastapi.concurrency import run_in_threadpool
 from sqlalchemy.orm import Session
 
-from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep
+from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep, release_connection
 from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
 from app.api.forms import (
     ASSET_FILES_SCHEMA,
@@ -80,6 +80,7 @@ async def create_animation(
     storage: StorageDep, enqueue: EnqueuerDep,
 ) -> JobAccepted:
     """Submit an asset (file(s) or ``asset_ref``) and a prompt; poll the returned ``url``."""
+    await release_connection(session, client)
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)

@@ -5,7 +5,7 @@ from __future__ import annotations
 from fastapi import APIRouter, Path, Request, Response, status
 from fastapi.concurrency import run_in_threadpool
 
-from app.api.deps import ClientDep, SessionDep, SettingsDep, StorageDep
+from app.api.deps import ClientDep, SessionDep, SettingsDep, StorageDep, release_connection
 from app.api.errors import error_responses
 from app.api.forms import ASSET_FILES_SCHEMA, URDF_FIELD_SCHEMA, multipart_openapi, read_form, upload_folder, urdf_field
 from app.api.intake import asset_by_ref, store_upload
@@ -29,6 +29,7 @@ async def upload_asset(
     request: Request, response: Response, client: ClientDep, session: SessionDep, settings: SettingsDep, storage: StorageDep
 ) -> AssetPublic:
     """Store and validate an asset (201), or find the one you already uploaded with the same content (200)."""
+    await release_connection(session, client)
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
         asset, created = await store_upload(form.files_of("asset"), work=folder, session=session, storage=storage, client=client,

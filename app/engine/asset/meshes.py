@@ -18,8 +18,8 @@ import trimesh
 import trimesh.resolvers
 from PIL import Image
 
-from app.engine.asset.model import Material, MeshPart
 from app.engine.asset.face_count import least_faces
+from app.engine.asset.model import Material, MeshPart
 from app.engine.asset.safety import AssetLimits, check_image, confine
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray, Transform

@@ -90,10 +90,11 @@ def test_readyz_is_503_when_the_database_is_down(settings) -> None:
         assert http.get("/v1/animations", headers={"Authorization": "Bearer x"}).status_code == 503
 
 
-def test_metrics_count_requests_by_route_and_jobs_by_status(http, alice) -> None:
+def test_metrics_count_requests_by_route_and_jobs_by_status(app, http, alice) -> None:
     http.get("/v1/animations", headers=alice.headers)
     http.get("/v1/animations/00000000-0000-0000-0000-000000000000", headers=alice.headers)
-    text = http.get("/metrics").text
+    with TestClient(app, client=("127.0.0.1", 40000)) as local:  # no METRICS_TOKEN: loopback only
+        text = local.get("/metrics").text
     assert 'artimo_http_requests_total{method="GET",route="/v1/animations",status="200"}' in text
     assert 'route="/v1/animations/{job_id}",status="404"' in text
     assert 'artimo_jobs{status="queued"}' in text
