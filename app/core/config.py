@@ -65,6 +65,12 @@ class Settings(BaseSettings):
     """Redis: an unacknowledged job is redelivered after this; default hard time limit + 120 s."""
     requeue_queued_after_s: int = Field(default=120, ge=0)
     """On (re)connection a worker re-sends jobs still queued after this long (their message may be lost)."""
+    requeue_sweep_s: float = Field(default=30.0, gt=0)
+    """How often a worker looks for jobs whose message was lost (also between reconnections)."""
+    requeue_stuck_after_s: float = Field(default=30.0, ge=0)
+    """A job still queued this long while the broker queue is empty has lost its message: it is re-sent."""
+    worker_heartbeat_s: float = Field(default=10.0, gt=0)
+    """How often each worker records that it is alive; ``/readyz`` needs one heard from within 3 intervals."""
     job_stage_delay_s: float = Field(default=0.0, ge=0, le=60)
     """Pause after each pipeline stage (tests/demos: makes progress, cancel and kill observable)."""
 
@@ -100,6 +106,10 @@ class Settings(BaseSettings):
     @property
     def broker_url(self) -> str:
         return self.redis_url or f"sqla+sqlite:///{self.data_dir / 'broker.db'}"
+
+    @property
+    def worker_stale_after_s(self) -> float:
+        return 3 * self.worker_heartbeat_s
 
     @property
     def visibility_timeout_s(self) -> int:

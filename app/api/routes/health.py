@@ -10,12 +10,14 @@ from fastapi import APIRouter, Request, Response
 from fastapi.responses import JSONResponse
 from sqlalchemy import text
 from sqlalchemy.exc import SQLAlchemyError
+from sqlalchemy.orm import Session
 
 from app.api.deps import SessionDep, SettingsDep
 from app.api.errors import Forbidden, Unauthorized, error_responses
 from app.api.metrics import CONTENT_TYPE, render_metrics
 from app.api.queue import broker_reachable
 from app.core.config import Settings
+from app.crud.workers import last_heartbeat, live_workers
 
 logger = logging.getLogger(__name__)
 
@@ -28,13 +30,24 @@ def healthz() -> dict[str, str]:
     return {"status": "ok"}
 
 
-@router.get("/readyz", responses={503: {"description": "the database or the broker is unreachable"}})
+def _workers(session: Session, settings: Settings) -> str:
+    """"ok" when a worker was heard from recently, else why no job would run."""
+    alive = live_workers(session, stale_after_s=settings.worker_stale_after_s)
+    if alive:
+        return "ok"
+    last = last_heartbeat(session)
+    seen = "never" if last is None else f"last seen {last.isoformat(timespec='seconds')}"
+    return f"no live worker ({seen}): jobs would wait"
+
+
+@router.get("/readyz", responses={503: {"description": "the database, the broker or every job worker is unreachable"}})
 def readyz(session: SessionDep, settings: SettingsDep) -> JSONResponse:
-    """Ready when the database answers and the broker accepts a connection."""
+    """Ready when the database answers, the broker accepts a connection and a worker can run jobs."""
     checks: dict[str, Any] = {}
     try:
         session.execute(text("SELECT 1"))
         checks["database"] = "ok"
+        checks["workers"] = _workers(session, settings)
     except SQLAlchemyError as exc:
         logger.warning("readyz: database: %s", exc)
         checks["database"] = f"unreachable: {type(exc).__name__}"

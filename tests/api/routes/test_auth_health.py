@@ -63,10 +63,29 @@ def test_rate_limit_is_shared_through_redis(settings, make_caller) -> None:
     assert codes == [200, 200, 429]
 
 
-def test_health_routes_need_no_key(http) -> None:
+def test_health_routes_need_no_key(http, db) -> None:
+    from app.crud.workers import record_heartbeat
+
     assert http.get("/healthz").json() == {"status": "ok"}
+    record_heartbeat(db, name="test-worker@here", concurrency=1)
     ready = http.get("/readyz")
-    assert ready.status_code == 200 and ready.json()["checks"] == {"database": "ok", "broker": "ok"}
+    assert ready.status_code == 200 and ready.json()["checks"] == {"database": "ok", "workers": "ok", "broker": "ok"}
+
+
+def test_readyz_is_503_when_no_worker_can_run_jobs(http, db, settings) -> None:
+    """Jobs would wait forever: not ready (the supervisor gave up, or no worker was ever started)."""
+    from datetime import timedelta
+
+    from app.crud.workers import record_heartbeat, remove_heartbeat
+    from app.db.models import utcnow
+
+    record_heartbeat(db, name="test-worker@here", concurrency=1, now=utcnow() - timedelta(seconds=settings.worker_stale_after_s + 5))
+    response = http.get("/readyz")
+    assert response.status_code == 503 and response.json()["checks"]["workers"].startswith("no live worker (last seen")
+    record_heartbeat(db, name="test-worker@here", concurrency=1)
+    assert http.get("/readyz").status_code == 200
+    remove_heartbeat(db, name="test-worker@here")
+    assert http.get("/readyz").status_code == 503
 
 
 def test_readyz_is_503_when_the_broker_is_down(settings) -> None:
