@@ -43,6 +43,7 @@ from app.engine.errors import CancelledError, EngineError, ProviderError
 from app.engine.report import RunReport
 from app.schemas.jobs import MODEL_NAME_PATTERN
 from workers.broker import RUN_JOB_TASK
+from workers.cancel_watch import CancelWatch
 from workers.celery_app import app
 from workers.lease import job_lease, probe_engine
 from workers.observer import JobObserver
@@ -153,7 +154,10 @@ def _run_engine(claim: _Claim, storage: Storage, out_dir: Path, observer: JobObs
         request = PipelineRequest(asset=path, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds),
                                   fps=None if fps is None else int(fps), urdf=claim.asset.urdf or None, stored=stored)
         roles = _roles(claim.options, settings, config)
-        result = run_pipeline(request, roles=roles, config=config, out_dir=out_dir, observer=observer, should_stop=observer.should_stop)
+        watch = CancelWatch(claim.job_id, observer.cancel_requested)
+        observer.shield = watch.shield
+        with watch.running():  # a cancellation interrupts even a long stage
+            result = run_pipeline(request, roles=roles, config=config, out_dir=out_dir, observer=observer, should_stop=observer.should_stop)
     except CancelledError as exc:
         return _Result(JobStatus.cancelled, str(exc), type(exc).__name__, _timings(exc.report))
     except EngineError as exc:

@@ -225,3 +225,46 @@ def test_the_worker_sends_nothing_to_a_provider_for_a_bad_job(settings: Settings
         assert failed.error_kind == "ProviderError" and says in (failed.error or "")
         assert script.requests == []
     get_settings.cache_clear()
+
+
+def test_a_cancel_interrupts_a_stage_that_would_never_end(settings: Settings, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Before: a DELETE during a long stage answered 202 and changed nothing until the stage ended."""
+    import threading
+    import time
+
+    import app.engine.pipeline
+    from workers import cancel_watch
+
+    monkeypatch.setattr(cancel_watch, "POLL_S", 0.1)
+    endless = threading.Event()
+
+    async def stuck_refine(*_args: object, **_kwargs: object) -> None:
+        deadline = time.monotonic() + 20
+        while not endless.is_set():  # a stage stuck in long work (an oversized asset, a slow model)
+            time.sleep(0.02)
+            if time.monotonic() > deadline:
+                raise RuntimeError("the stage was not interrupted")
+
+    monkeypatch.setattr(app.engine.pipeline, "refine", stuck_refine)
+    job_id = make_job(settings)
+
+    def cancel_when_refining() -> None:
+        stack_deadline = time.monotonic() + 30
+        while time.monotonic() < stack_deadline:
+            with session_factory(settings.sqlalchemy_url)() as session:
+                job = session.get(Job, job_id)
+                if job is not None and job.stage == "refine":
+                    crud_jobs.request_cancel(session, job=job)
+                    return
+            time.sleep(0.05)
+
+    canceller = threading.Thread(target=cancel_when_refining)
+    canceller.start()
+    try:
+        assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.cancelled
+    finally:
+        endless.set()
+        canceller.join()
+    done = load_job(settings, job_id)
+    assert done.status == JobStatus.cancelled and "cancelled while running" in (done.events[-1].message or "")
+    assert "animation.glb" not in {a.name for a in done.artifacts}
