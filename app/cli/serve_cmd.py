@@ -217,12 +217,14 @@ def _api_key(settings: Settings) -> str:
     from app.db.models import ApiClient
     from app.db.session import session_factory
 
+    where = f"database {settings.database_shown}"
     if settings.artimo_api_key is not None:
-        return f"API key: the value of $ARTIMO_API_KEY ({settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]}...)"
+        return f"API key: the value of $ARTIMO_API_KEY ({settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]}...), for any {where}"
     with session_factory(settings.sqlalchemy_url)() as session:
         existing = session.execute(select(ApiClient).where(ApiClient.name == EMBEDDED_CLIENT)).scalars().first()
         if existing is not None:
-            return (f"API key: the '{EMBEDDED_CLIENT}' key printed when {settings.data_dir} was first served "
-                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME")
+            return (f"API key: the '{EMBEDDED_CLIENT}' key printed when this {where} was first served "
+                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME "
+                    f"(with the same ARTIMO_DATA_DIR={settings.data_dir})")
         _, key = create_api_client(session, name=EMBEDDED_CLIENT)
-    return f"API key (shown once, stored hashed): {key}"
+    return f"API key (shown once, stored hashed): {key}  (valid for the {where}; data folder {settings.data_dir})"

@@ -104,6 +104,13 @@ class Settings(BaseSettings):
         return self.database_url or f"sqlite:///{self.data_dir / 'artimo.db'}"
 
     @property
+    def database_shown(self) -> str:
+        """The database URL for messages (password hidden)."""
+        from sqlalchemy.engine import make_url
+
+        return make_url(self.sqlalchemy_url).render_as_string(hide_password=True)
+
+    @property
     def broker_url(self) -> str:
         return self.redis_url or f"sqla+sqlite:///{self.data_dir / 'broker.db'}"
 
