@@ -204,13 +204,17 @@ MAX_COORDINATE_M = 1e4
 """Largest |vertex coordinate| accepted in the link frame, metres (as URDF positions)."""
 
 
-def _check_numbers(part: MeshPart, relative: str) -> None:
-    """Every vertex finite and within :data:`MAX_COORDINATE_M`, every uv finite (NaN breaks everything downstream)."""
-    vertices = part.vertices
+def _check_vertices(vertices: FloatArray, relative: str) -> None:
+    """Every vertex finite and within :data:`MAX_COORDINATE_M` (NaN breaks everything downstream)."""
     if vertices.size and (not np.all(np.isfinite(vertices)) or float(np.abs(vertices).max()) > MAX_COORDINATE_M):
         bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1) | (np.abs(vertices) > MAX_COORDINATE_M).any(axis=1))[0])
         raise AssetError(f"mesh vertex {bad} is NaN, infinite or farther than {MAX_COORDINATE_M:g} m "
                          f"({vertices[bad].tolist()})", file=relative, element=f"vertex {bad}")
+
+
+def _check_numbers(part: MeshPart, relative: str) -> None:
+    """The part's vertices (after scale and origin) and uvs: finite and bounded."""
+    _check_vertices(part.vertices, relative)
     if part.uv is not None and not np.all(np.isfinite(part.uv)):
         raise AssetError("mesh texture coordinates hold NaN or infinite values", file=relative, element="vt")
 
@@ -258,6 +262,7 @@ def load_mesh_file(
         raise AssetError("mesh did not load as a scene", file=relative)
     for index, (mesh, node_transform) in enumerate(_scene_meshes(scene)):
         budget.spend(len(mesh.faces), relative)
+        _check_vertices(np.asarray(mesh.vertices, dtype=np.float64), relative)  # before any arithmetic on them
         material, uv = _material_of(mesh, fallback_rgba, f"{label}_{index}")
         part = _part(mesh, transform @ node_transform, material, uv, relative)
         _check_numbers(part, relative)

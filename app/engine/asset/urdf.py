@@ -76,9 +76,10 @@ def parse_urdf(data: bytes, file_name: str) -> ParsedUrdf:
         Any structural problem, naming the file and the joint or link.
     """
     try:
-        urdf = yourdfpy.URDF.load(
-            io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
-        )
+        with np.errstate(invalid="ignore", over="ignore"):  # NaN/inf in the text: rejected below, without warnings
+            urdf = yourdfpy.URDF.load(
+                io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
+            )
         robot = urdf.robot
     except (etree.XMLSyntaxError, ValueError, TypeError, AttributeError, KeyError, IndexError) as exc:
         raise AssetError(f"cannot parse URDF: {type(exc).__name__}: {exc}", file=file_name) from exc

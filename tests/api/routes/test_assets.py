@@ -233,6 +233,7 @@ def test_bad_numbers_are_a_422_on_upload_not_a_later_500(http, alice, old, new, 
     assert response.json()["kind"] == "AssetError" and says in response.json()["detail"]
 
 
+@pytest.mark.filterwarnings("ignore::PIL.Image.DecompressionBombWarning")
 def test_a_small_zip_with_a_huge_texture_is_refused_without_decoding_it(http, alice) -> None:
     """~13000 x 13000 pixels (hundreds of MB decoded) in a few kB: a 422, before any decoding."""
     from tests.engine.asset.test_asset_rejections import _png_header

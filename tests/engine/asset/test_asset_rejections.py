@@ -446,6 +446,7 @@ def test_too_many_joints_are_refused_before_the_urdf_is_parsed(tmp_path: Path, m
     rejected(urdf_asset(tmp_path, robot(*links, *joints)), URDF, "link", says="301 <link> elements, more than the limit of 257")
 
 
+@pytest.mark.filterwarnings("ignore::PIL.Image.DecompressionBombWarning")  # PIL warns on the header it just read
 @pytest.mark.parametrize("texture_name", ["textures/huge.png", "textures/huge.dat"])
 def test_a_huge_texture_is_refused_from_its_header(tmp_path: Path, texture_name: str) -> None:
     """13000 x 13000 pixels (~500 MB decoded) in a few bytes: refused before decoding, under any file name."""
