@@ -5,15 +5,17 @@ from __future__ import annotations
 import argparse
 import time
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from app.cli.output import cache_dir, out, out_json
 from app.engine.asset.cache import load_asset_cached
-from app.engine.asset.layout import JointEnds, asset_layout, direction_name
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.asset.summary import joint_summary, scale_context
 from app.engine.errors import PlanValidationError
 from app.engine.plan.checks import load_json_file, validate_plan
+
+if TYPE_CHECKING:
+    from app.engine.asset.layout import JointEnds
 
 
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -64,6 +66,8 @@ def _ends(ends: JointEnds) -> str:
 
 
 def _inspect(args: argparse.Namespace) -> int:
+    from app.engine.asset.layout import asset_layout, direction_name
+
     asset = load_asset_cached(args.asset, cache_dir(args), urdf=args.urdf)
     scale = scale_context(asset)
     layout = asset_layout(asset)
