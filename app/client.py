@@ -108,7 +108,8 @@ class ArtimoClient:
     def __init__(self, server: str, key: str, *, timeout_s: float = DEFAULT_TIMEOUT_S,
                  retry_wait_s: float = DEFAULT_RETRY_WAIT_S, transport: httpx.BaseTransport | None = None) -> None:
         self.retry_wait_s = retry_wait_s
-        self._http = httpx.Client(base_url=server.rstrip("/"), headers={"Authorization": f"Bearer {key}"},
+        self.server = server.rstrip("/")
+        self._http = httpx.Client(base_url=self.server, headers={"Authorization": f"Bearer {key}"},
                                   timeout=timeout_s, transport=transport, follow_redirects=True)
 
     def close(self) -> None:
@@ -126,7 +127,8 @@ class ArtimoClient:
             try:
                 response = self._http.request(method, url, **kwargs)
             except httpx.HTTPError as exc:
-                raise ClientError(0, f"cannot reach the server: {exc}") from exc
+                raise ClientError(0, f"cannot reach the server at {self.server} ({type(exc).__name__}: {exc}); "
+                                     "is it running (artimo serve), and is --server / $ARTIMO_SERVER right?") from exc
             delay = _retry_after(response)
             if delay is None or waited >= self.retry_wait_s:
                 break
@@ -140,9 +142,13 @@ class ArtimoClient:
             raise ClientError(response.status_code, message, body)
         return response
 
-    def upload_asset(self, asset: Path) -> JobDict:
-        """Upload an asset (folder, .zip or single file); returns its id and sha256 (reused if known)."""
-        response = self._request("POST", "/v1/assets", files=[("asset", _asset_part(Path(asset)))])
+    def upload_asset(self, asset: Path, *, urdf: str | None = None) -> JobDict:
+        """Upload an asset (folder, .zip or single file); returns its id and sha256 (reused if known).
+
+        ``urdf``: which URDF to use when the asset holds several.
+        """
+        data = {"urdf": urdf} if urdf else None
+        response = self._request("POST", "/v1/assets", data=data, files=[("asset", _asset_part(Path(asset)))])
         return dict(response.json())
 
     def asset_summary(self, ref: str) -> JobDict:
@@ -153,7 +159,7 @@ class ArtimoClient:
         """Submit a job; ``asset`` is a folder, a .zip, or an uploaded asset's id/sha256.
 
         ``options``: ``provider``, ``perceiver_model``, ``planner_model``, ``critic_model``,
-        ``fps``, ``max_critic_rounds``, ``preview``, ``exports`` (e.g. ``"usd,mjcf"`` or a list).
+        ``fps``, ``max_critic_rounds``, ``preview``, ``exports`` (e.g. ``"usd,mjcf"`` or a list), ``urdf``.
         Returns ``{id, url, status}``.
         """
         data = {"prompt": prompt, **{k: ",".join(v) if isinstance(v, list | tuple) else str(v) for k, v in options.items() if v is not None}}

@@ -11,6 +11,7 @@ from fastapi.concurrency import run_in_threadpool
 
 from app.api.admission import AdmissionMiddleware
 from app.api.errors import install_error_handlers
+from app.api.guards import RequestGuardMiddleware
 from app.api.main import api_router
 from app.api.metrics import MetricsMiddleware
 from app.core.config import Settings, get_settings
@@ -56,6 +57,9 @@ def create_app(settings: Settings | None = None) -> FastAPI:
     install_error_handlers(app)
     app.include_router(api_router)
     install_web(app)
+    configured = settings or get_settings()
     app.add_middleware(MetricsMiddleware)
-    app.add_middleware(AdmissionMiddleware, max_in_flight=(settings or get_settings()).api_max_in_flight)
+    app.add_middleware(AdmissionMiddleware, max_in_flight=configured.api_max_in_flight)
+    app.add_middleware(RequestGuardMiddleware, max_json_body_bytes=configured.max_json_body_bytes,
+                       body_idle_timeout_s=configured.body_idle_timeout_s, body_timeout_s=configured.body_timeout_s)
     return app

@@ -3,7 +3,7 @@
 Usage::
 
     python -m benchmark.contact_sheet --cases benchmark/cases/dev.jsonl \
-        --assets /work/shared/assets/partnet --out out/sheets [--case ID ...]
+        [--assets ROOT] --out out/sheets [--case ID ...]     (ROOT: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)
 
 Per case, one PNG ``<out>/<case_id>.png``: a title strip (case id, motion type, prompt),
 then one row per view and one column per state — the rest pose followed by the K GT key
@@ -32,7 +32,7 @@ from PIL import Image, ImageDraw
 
 from app.engine.asset.loader import load_asset
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.errors import EngineError
+from app.engine.errors import EngineError, MetricError
 from app.engine.metrics.annotation import Case
 from app.engine.metrics.compiler import GroundTruth, compile_case
 from app.engine.metrics.sequence import PoseSequence, trajectory_sequence
@@ -42,6 +42,7 @@ from app.engine.render.contact_sheet import contact_sheet
 from app.engine.render.gl_backend import render_link_ids, render_rgba
 from app.engine.types import Transform
 from benchmark.cases import read_cases
+from benchmark.paths import assets_or_partnet
 
 logger = logging.getLogger(__name__)
 
@@ -265,7 +266,8 @@ def render_sheets(cases: Sequence[Case], assets_root: Path, out_dir: Path) -> li
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Render GT key states of benchmark cases into contact-sheet PNGs.")
     parser.add_argument("--cases", required=True, type=Path, help="cases .jsonl file")
-    parser.add_argument("--assets", required=True, type=Path, help="folder holding the cases' asset folders")
+    parser.add_argument("--assets", type=Path, default=None,
+                        help="folder holding the cases' asset folders (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--out", required=True, type=Path, help="output folder for the PNGs")
     parser.add_argument("--case", action="append", default=None, help="only this case id (repeatable)")
     args = parser.parse_args(argv)
@@ -276,7 +278,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         if unknown:
             parser.error(f"unknown case ids: {', '.join(unknown)}")
         cases = [c for c in cases if c.case_id in set(args.case)]
-    written = render_sheets(cases, args.assets, args.out)
+    try:
+        root = assets_or_partnet(args.assets)
+    except MetricError as exc:
+        parser.error(str(exc))
+    written = render_sheets(cases, root, args.out)
     return 0 if len(written) == len(cases) else 1
 
 

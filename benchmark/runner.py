@@ -24,7 +24,7 @@ from typing import Any
 
 from tqdm import tqdm
 
-from app.engine.asset.loader import load_asset
+from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import AssetError, MetricError
 from app.engine.files import atomic_write_text
@@ -51,14 +51,16 @@ class CaseJob:
     asset_dir: str
     prediction: str | None
     options: EvaluationOptions
+    cache_dir: str | None = None
+    """The asset disk cache (``app.engine.asset.cache``); None: load every asset afresh."""
 
 
-def cached_asset(folder: str) -> tuple[ArticulatedAsset, AssetGeometry]:
-    """Load (or reuse) an asset and its per-link reference geometry."""
+def cached_asset(folder: str, cache_dir: str | None = None) -> tuple[ArticulatedAsset, AssetGeometry]:
+    """Load (or reuse) an asset and its per-link reference geometry (through the disk cache when given)."""
     if folder in _ASSETS:
         _ASSETS.move_to_end(folder)
         return _ASSETS[folder]
-    asset = load_asset(folder)
+    asset = load_asset_cached(folder, None if cache_dir is None else Path(cache_dir))
     entry = (asset, build_geometry(asset))
     _ASSETS[folder] = entry
     while len(_ASSETS) > ASSET_CACHE_SIZE:
@@ -70,7 +72,7 @@ def run_job(job: CaseJob) -> tuple[int, dict[str, Any], dict[str, float]]:
     """Evaluate one case: (index, deterministic record, timings in seconds)."""
     start = time.perf_counter()
     try:
-        asset, geometry = cached_asset(job.asset_dir)
+        asset, geometry = cached_asset(job.asset_dir, job.cache_dir)
     except (AssetError, MetricError) as exc:
         outcome = CaseOutcome(status="case_error", scores=None, error=f"asset {job.case.asset}: {exc.message}")
         return job.index, case_record(job.case, outcome), {"total": time.perf_counter() - start}
@@ -81,7 +83,7 @@ def run_job(job: CaseJob) -> tuple[int, dict[str, Any], dict[str, float]]:
     return job.index, case_record(job.case, outcome), timing
 
 
-def _jobs(cases: list[Case], assets_root: Path, pred_root: Path, options: EvaluationOptions) -> list[CaseJob]:
+def _jobs(cases: list[Case], assets_root: Path, pred_root: Path, options: EvaluationOptions, cache_dir: Path | None) -> list[CaseJob]:
     jobs = []
     for index, case in enumerate(cases):
         found = find_prediction(pred_root / case.case_id)
@@ -92,6 +94,7 @@ def _jobs(cases: list[Case], assets_root: Path, pred_root: Path, options: Evalua
                 asset_dir=str(assets_root / case.asset),
                 prediction=None if found is None else str(found),
                 options=options,
+                cache_dir=None if cache_dir is None else str(cache_dir),
             )
         )
     return jobs
@@ -147,6 +150,7 @@ def evaluate(
     with_2d: bool = False,
     jobs: int = 1,
     terminal_check: bool = False,
+    cache_dir: str | Path | None = None,
 ) -> dict[str, Any]:
     """Evaluate every case of ``cases_file`` and write ``out_json`` (+ the timing sidecar).
 
@@ -160,6 +164,8 @@ def evaluate(
     jobs
         Worker processes (``spawn`` start method: a calling script needs the usual
         ``if __name__ == "__main__":`` guard); the output does not depend on it.
+    cache_dir
+        The asset disk cache (what ``artimo`` uses); ``None`` loads every asset afresh.
 
     Returns
     -------
@@ -175,7 +181,8 @@ def evaluate(
     mapping = None if node_map is None else read_node_map(node_map)
     options = EvaluationOptions(with_2d=with_2d, terminal_check=terminal_check, node_map=mapping)
     start = time.perf_counter()
-    results = run_jobs(_jobs(cases, Path(assets_root), Path(pred_root), options), max(1, int(jobs)))
+    cache = None if cache_dir is None else Path(cache_dir)
+    results = run_jobs(_jobs(cases, Path(assets_root), Path(pred_root), options, cache), max(1, int(jobs)))
     wall = time.perf_counter() - start
     records = [record for record, _ in results]
     document = {"summary": summarise(records, _settings(cases_path, mapping, options)), "cases": records}

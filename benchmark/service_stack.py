@@ -118,7 +118,8 @@ class Stack:
             if self.api.poll() is not None:
                 raise RuntimeError(f"API exited; see {self.log_dir / 'api.log'}")
             with contextlib.suppress(httpx.HTTPError):  # not listening yet
-                if httpx.get(f"{url}/readyz", timeout=2).status_code == 200:
+                checks = httpx.get(f"{url}/readyz", timeout=2).json().get("checks", {})
+                if checks.get("database") == "ok" and checks.get("broker") == "ok":  # workers may start later
                     return url
             time.sleep(0.1)
         raise RuntimeError(f"API not ready after {START_TIMEOUT_S:.0f} s")

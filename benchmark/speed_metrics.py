@@ -19,16 +19,17 @@ from typing import Any
 
 from app.engine.asset.loader import load_asset
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.errors import MetricError
 from app.engine.metrics.annotation import Case
 from app.engine.metrics.compiler import compile_case
 from app.engine.metrics.geometry import build_geometry
 from app.engine.metrics.scoring import score_case
 from app.engine.metrics.sequence import trajectory_sequence
 from benchmark.cases import read_cases
+from benchmark.paths import assets_or_partnet
 from benchmark.synthetic import degraded_trajectories
 
 MAX_PHASES = 6
-DEFAULT_ASSETS = Path("/work/shared/assets/partnet")
 
 
 def synthetic_case(asset: ArticulatedAsset) -> Case:
@@ -92,10 +93,15 @@ def _say(line: str) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--assets", type=Path, default=DEFAULT_ASSETS)
+    parser.add_argument("--assets", type=Path, default=None, help="assets root (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--cases", type=Path, default=None, help="cases .jsonl (default: one synthetic case per asset)")
     parser.add_argument("--with-2d", action="store_true")
     args = parser.parse_args(argv)
+    try:
+        args.assets = assets_or_partnet(args.assets)
+    except MetricError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return 2
     if args.cases is not None:
         cases = read_cases(args.cases)
     else:

@@ -10,6 +10,8 @@ from __future__ import annotations
 import logging
 import time
 import uuid
+from collections.abc import Callable
+from contextlib import AbstractContextManager, nullcontext
 
 from sqlalchemy import select
 from sqlalchemy.orm import Session, sessionmaker
@@ -40,9 +42,11 @@ class JobObserver:
         self.job_id = job_id
         self.stage_delay_s = stage_delay_s
         self.stages_seen: list[str] = []
+        self.shield: Callable[[], AbstractContextManager[None]] = nullcontext
+        """Wraps each database write (a cancel watch keeps interruptions out of them)."""
 
     def on_stage(self, stage: str, progress: int) -> None:
-        with self.sessions() as session:
+        with self.shield(), self.sessions() as session:
             job = session.get(Job, self.job_id)
             if job is None:
                 logger.warning("job %s vanished while running", self.job_id)
@@ -54,10 +58,16 @@ class JobObserver:
             time.sleep(self.stage_delay_s)
 
     def on_message(self, message: str) -> None:
-        with self.sessions() as session:
+        with self.shield(), self.sessions() as session:
             crud_jobs.record_event(session, job_id=self.job_id, kind="message", message=message[:MAX_MESSAGE_CHARS])
 
     def should_stop(self) -> bool:
+        """The engine's check between stages (in the job's thread)."""
+        with self.shield():
+            return self.cancel_requested()
+
+    def cancel_requested(self) -> bool:
+        """Whether the job was cancelled (or deleted); safe from any thread (one short session)."""
         with self.sessions() as session:
             requested = session.execute(select(Job.cancel_requested).where(Job.id == self.job_id)).scalar_one_or_none()
         return bool(requested) if requested is not None else True

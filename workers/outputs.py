@@ -1,4 +1,4 @@
-"""Move a job's inputs in and outputs out: asset zip from storage, output files to storage + Artifact rows."""
+"""A job's outputs: output files to storage + Artifact rows (and the asset's name for the engine)."""
 
 from __future__ import annotations
 
@@ -45,13 +45,6 @@ def asset_name(filename: str) -> str:
     stem = PurePosixPath(filename.replace("\\", "/")).name
     stem = stem[: -len(".zip")] if stem.lower().endswith(".zip") else stem
     return SAFE_NAME.sub("_", stem).strip("._") or DEFAULT_ASSET_NAME
-
-
-def fetch_asset(storage: Storage, storage_key: str, filename: str, work_dir: Path) -> Path:
-    """Copy an asset zip from storage to ``work_dir/<name>.zip`` (the name the engine shows)."""
-    target = work_dir / f"{asset_name(filename)}.zip"
-    target.write_bytes(storage.get_bytes(storage_key))
-    return target
 
 
 def clear_outputs(session: Session, storage: Storage, job: Job) -> None:

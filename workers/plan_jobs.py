@@ -13,6 +13,8 @@ from typing import Any
 
 from app.core.config import Settings
 from app.core.storage import LocalStorage
+from app.engine.asset.cache import load_asset_cached
+from app.engine.report import RunReport
 from app.engine.run import run_plan
 from workers.observer import JobObserver
 
@@ -26,7 +28,8 @@ def is_plan_job(options: dict[str, Any]) -> bool:
     return bool(options.get(PLAN_OPTION))
 
 
-def run_plan_job(options: dict[str, Any], asset_zip: Path, out_dir: Path, observer: JobObserver, settings: Settings) -> None:
+def run_plan_job(options: dict[str, Any], asset_zip: Path, out_dir: Path, observer: JobObserver, settings: Settings, *,
+                 urdf: str | None = None) -> RunReport:
     """Execute the job's stored plan on ``asset_zip`` into ``out_dir``.
 
     Raises
@@ -41,7 +44,9 @@ def run_plan_job(options: dict[str, Any], asset_zip: Path, out_dir: Path, observ
         raise CancelledError("cancelled before stage execute")
     observer.on_stage("execute", 50)
     config = settings.engine_config()
-    run_plan(asset_zip, plan, out_dir, cache_dir=config.asset_cache_dir, preview=bool(options.get("preview")),
-             exports=tuple(options.get("exports") or ()))
+    asset = load_asset_cached(asset_zip, config.asset_cache_dir, urdf=urdf)
+    report = run_plan(asset, plan, out_dir, cache_dir=config.asset_cache_dir, preview=bool(options.get("preview")),
+                      exports=tuple(options.get("exports") or ()))
     observer.on_stage("report", 100)
     logger.info("plan %s executed", options[PLAN_OPTION][:12])
+    return report

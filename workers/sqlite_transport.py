@@ -5,6 +5,10 @@ second (a job of the offline agent takes ~0.3 s) and adds up to a second to ever
 kombu reads ``polling_interval`` from the transport options, but this transport hands every
 option to ``create_engine``, which rejects it, so the interval is set here instead.
 
+kombu's queue model declares its ``messages`` relationship ``lazy="noload"``, which
+SQLAlchemy 2.1 deprecates (a warning on every process's first broker use); the model is
+declared here with a plain lazy relationship instead (the transport never reads it).
+
 The stock transport also keeps every delivered message as a row marked invisible, so the
 broker file grows by one row per job forever. A delivered row is never read again (kombu
 holds unacknowledged messages in memory and re-publishes them if the channel closes
@@ -20,15 +24,28 @@ from typing import Any
 
 from kombu.transport.sqlalchemy import Channel as SQLAlchemyChannel
 from kombu.transport.sqlalchemy import Transport as SQLAlchemyTransport
+from kombu.transport.sqlalchemy.models import Queue as QueueBase
+from kombu.utils import cached_property
 from kombu.utils.encoding import bytes_to_str
 from sqlalchemy import text
 from sqlalchemy.exc import OperationalError
+from sqlalchemy.orm import declared_attr, relationship
 
 POLL_INTERVAL_S = 0.1
 """Seconds between polls of the broker table when it is empty (one indexed SELECT each)."""
 
 
+def _messages(_cls: Any) -> Any:
+    return relationship("Message", backref="queue", lazy="select")
+
+
 class Channel(SQLAlchemyChannel):
+    @cached_property
+    def queue_cls(self) -> Any:
+        """kombu's queue model, its ``messages`` relationship not ``noload`` (deprecated in SQLAlchemy 2.1)."""
+        namespace = {"__tablename__": self.queue_tablename, "messages": declared_attr(_messages)}
+        return self._declarative_cls("Queue", QueueBase, namespace)
+
     def __init__(self, connection: Any, **kwargs: Any) -> None:
         super().__init__(connection, **kwargs)
         self._purge_delivered()

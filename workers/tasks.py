@@ -1,9 +1,10 @@
 """``run_job(job_id)``: one animation job from its DB row to stored artifacts.
 
 load the job -> skip if terminal -> mark running (attempts + 1, worker host) -> clear a
-previous partial run -> fetch the asset zip -> ``run_pipeline`` in a temporary folder
-(observer writes progress, ``should_stop`` reads ``cancel_requested``) -> store outputs
-as ``jobs/<id>/...`` + Artifact rows -> succeeded with per-stage timings.
+previous partial run -> check the stored asset zip (used in place, not copied) and read its
+stored summary -> ``run_pipeline`` in a temporary folder (observer writes progress,
+``should_stop`` reads ``cancel_requested``) -> store outputs as ``jobs/<id>/...`` +
+Artifact rows -> succeeded with per-stage timings (from the returned report).
 
 This module is the only place that maps an outcome (EngineError subclass, cancellation,
 time limit, unexpected error) to a job status. Redelivered messages are safe: a per-job
@@ -13,6 +14,7 @@ lease (:mod:`workers.lease`) lets one live process run a job, and a finished job
 from __future__ import annotations
 
 import logging
+import re
 import socket
 import tempfile
 import uuid
@@ -23,27 +25,29 @@ from typing import Any
 
 from celery import Task, signals
 from celery.exceptions import SoftTimeLimitExceeded, TimeLimitExceeded
-from pydantic import ValidationError
 from sqlalchemy.exc import OperationalError as DatabaseUnavailable
 from sqlalchemy.exc import SQLAlchemyError
 from sqlalchemy.orm import Session, sessionmaker
 
+from app.core.asset_summary import read_summary
 from app.core.config import Settings, get_settings
 from app.core.logging import current_job
-from app.core.storage import LocalStorage, Storage, StorageError
+from app.core.storage import LocalStorage, Storage, StorageError, intact_local_path
 from app.crud import jobs as crud_jobs
 from app.db.models import TERMINAL, Job, JobStatus
 from app.db.session import session_factory
 from app.engine.agents.roles import Roles
-from app.engine.bundle import REPORT_FILE
+from app.engine.asset.stored import StoredAsset
 from app.engine.config import EngineConfig
-from app.engine.errors import CancelledError, EngineError
+from app.engine.errors import CancelledError, EngineError, ProviderError
 from app.engine.report import RunReport
+from app.schemas.jobs import MODEL_NAME_PATTERN
 from workers.broker import RUN_JOB_TASK
+from workers.cancel_watch import CancelWatch
 from workers.celery_app import app
 from workers.lease import job_lease, probe_engine
 from workers.observer import JobObserver
-from workers.outputs import clear_outputs, fetch_asset, publish_outputs
+from workers.outputs import asset_name, clear_outputs, publish_outputs
 from workers.plan_jobs import is_plan_job, run_plan_job
 
 logger = logging.getLogger(__name__)
@@ -67,14 +71,24 @@ class Outcome(StrEnum):
 
 
 @dataclass(frozen=True)
+class _AssetFields:
+    """The job's asset record, copied while the session is open (an ``AssetRecord``)."""
+
+    filename: str
+    urdf: str
+    sha256: str
+    size_bytes: int
+    storage_key: str
+
+
+@dataclass(frozen=True)
 class _Claim:
     """What a run needs from the job row, read while the session is open."""
 
     job_id: uuid.UUID
     prompt: str
     options: dict[str, Any]
-    asset_key: str
-    asset_filename: str
+    asset: _AssetFields
     attempts: int
 
 
@@ -86,15 +100,9 @@ class _Result:
     timings: dict[str, float] = field(default_factory=dict)
 
 
-def _timings(out_dir: Path) -> dict[str, float]:
-    """Seconds per pipeline stage (+ ``total``) from the run's report.json, if it was written."""
-    path = out_dir / REPORT_FILE
-    if not path.is_file():
-        return {}
-    try:
-        report = RunReport.model_validate_json(path.read_text(encoding="utf-8"))
-    except (OSError, ValidationError) as exc:
-        logger.warning("unreadable %s: %s", path, exc)
+def _timings(report: RunReport | None) -> dict[str, float]:
+    """Seconds per pipeline stage (+ ``total``) of a run's report (none when the run ended without one)."""
+    if report is None:
         return {}
     timings = {timing.stage: timing.seconds for timing in report.stages}
     timings["total"] = report.total_s
@@ -106,16 +114,34 @@ def _roles(options: dict[str, Any], settings: Settings, config: EngineConfig) ->
     from app.engine.providers.registry import ProviderConfig, make_roles
 
     provider = str(options.get("provider") or settings.default_provider)
+    if (missing := settings.missing_provider_key(provider)) is not None:  # never an unauthenticated request
+        raise ProviderError(missing)
     models = tuple((role, str(options[f"{role}_model"])) for role in MODEL_ROLES if options.get(f"{role}_model"))
-    secret, base_url = {
-        "openai": (settings.openai_api_key, settings.openai_base_url),
-        "gemini": (settings.gemini_api_key, settings.gemini_base_url),
-    }.get(provider, (None, None))
+    for role, name in models:  # stored options were validated by the API; checked again before any URL is built
+        if not re.fullmatch(MODEL_NAME_PATTERN, name):
+            raise ProviderError(f"invalid {role} model name {name[:100]!r}")
+    base_url = {"openai": settings.openai_base_url, "gemini": settings.gemini_base_url}.get(provider)
+    secret = settings.provider_key(provider)
     api_key = None if secret is None else secret.get_secret_value()
     return make_roles(provider, ProviderConfig(api_key=api_key, base_url=base_url, models=models, profile=settings.model_profile), config)
 
 
-def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObserver, settings: Settings) -> _Result:
+def _stored_asset(claim: _Claim, storage: Storage) -> tuple[Path, StoredAsset]:
+    """The stored zip (checked, used in place) and what the upload already computed of it.
+
+    Raises
+    ------
+    StorageError
+        The stored zip is missing or no longer matches its sha256.
+    """
+    path = intact_local_path(storage, claim.asset.storage_key, claim.asset.sha256, claim.asset.size_bytes)
+    summary = read_summary(storage, claim.asset)
+    stored = StoredAsset(sha256=claim.asset.sha256, name=asset_name(claim.asset.filename), joints=tuple(summary.joints),
+                         scale=summary.scale)
+    return path, stored
+
+
+def _run_engine(claim: _Claim, storage: Storage, out_dir: Path, observer: JobObserver, settings: Settings) -> _Result:
     """Run the pipeline and translate how it ended into a job status."""
     from app.engine.pipeline import PipelineRequest, run_pipeline
 
@@ -126,19 +152,23 @@ def _run_engine(claim: _Claim, asset_zip: Path, out_dir: Path, observer: JobObse
         config = config.model_copy(update={"exports": tuple(claim.options["exports"])})
     rounds = claim.options.get("max_critic_rounds")
     try:
+        path, stored = _stored_asset(claim, storage)
         if is_plan_job(claim.options):  # a submitted plan: executor and exporters only
-            run_plan_job(claim.options, asset_zip, out_dir, observer, settings)
-            return _Result(JobStatus.succeeded, timings=_timings(out_dir))
+            report = run_plan_job(claim.options, path, out_dir, observer, settings, urdf=claim.asset.urdf or None)
+            return _Result(JobStatus.succeeded, timings=_timings(report))
         fps = claim.options.get("fps")
-        request = PipelineRequest(asset=asset_zip, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds),
-                                  fps=None if fps is None else int(fps))
+        request = PipelineRequest(asset=path, prompt=claim.prompt, max_critic_rounds=None if rounds is None else int(rounds),
+                                  fps=None if fps is None else int(fps), urdf=claim.asset.urdf or None, stored=stored)
         roles = _roles(claim.options, settings, config)
-        run_pipeline(request, roles=roles, config=config, out_dir=out_dir, observer=observer, should_stop=observer.should_stop)
+        watch = CancelWatch(claim.job_id, observer.cancel_requested)
+        observer.shield = watch.shield
+        with watch.running():  # a cancellation interrupts even a long stage
+            result = run_pipeline(request, roles=roles, config=config, out_dir=out_dir, observer=observer, should_stop=observer.should_stop)
     except CancelledError as exc:
-        return _Result(JobStatus.cancelled, str(exc), type(exc).__name__, _timings(out_dir))
+        return _Result(JobStatus.cancelled, str(exc), type(exc).__name__, _timings(exc.report))
     except EngineError as exc:
-        return _Result(JobStatus.failed, str(exc), type(exc).__name__, _timings(out_dir))
-    return _Result(JobStatus.succeeded, timings=_timings(out_dir))
+        return _Result(JobStatus.failed, str(exc), type(exc).__name__, _timings(exc.report))
+    return _Result(JobStatus.succeeded, timings=_timings(result.report))
 
 
 def _finish(session: Session, job: Job, result: _Result) -> Outcome:
@@ -172,10 +202,10 @@ def _start(session: Session, storage: Storage, job_id: uuid.UUID, settings: Sett
     if job.status != JobStatus.running:  # cancelled by the API a moment ago (guarded transition refused)
         return Outcome.skipped
     clear_outputs(session, storage, job)
-    return _Claim(
-        job_id=job.id, prompt=job.prompt, options=dict(job.options or {}),
-        asset_key=job.asset.storage_key, asset_filename=job.asset.filename, attempts=job.attempts,
-    )
+    record = job.asset
+    fields = _AssetFields(filename=record.filename, urdf=record.urdf, sha256=record.sha256, size_bytes=record.size_bytes,
+                          storage_key=record.storage_key)
+    return _Claim(job_id=job.id, prompt=job.prompt, options=dict(job.options or {}), asset=fields, attempts=job.attempts)
 
 
 def _run_claimed(sessions: sessionmaker[Session], storage: Storage, claim: _Claim, settings: Settings) -> Outcome:
@@ -185,15 +215,14 @@ def _run_claimed(sessions: sessionmaker[Session], storage: Storage, claim: _Clai
         out_dir = work / "out"
         out_dir.mkdir()
         try:
-            asset_zip = fetch_asset(storage, claim.asset_key, claim.asset_filename, work)
-            result = _run_engine(claim, asset_zip, out_dir, observer, settings)
+            result = _run_engine(claim, storage, out_dir, observer, settings)
         except SoftTimeLimitExceeded:
-            result = _Result(JobStatus.failed, f"timed out after {settings.job_soft_time_limit_s} s", TIMED_OUT_KIND, _timings(out_dir))
+            result = _Result(JobStatus.failed, f"timed out after {settings.job_soft_time_limit_s} s", TIMED_OUT_KIND)
         except StorageError as exc:
-            result = _Result(JobStatus.failed, f"asset unavailable: {exc}", type(exc).__name__)
+            result = _Result(JobStatus.failed, f"asset unavailable: {exc} (upload the asset again to restore it)", type(exc).__name__)
         except Exception as exc:  # task boundary: an engine bug must end the job, not leave it running
             logger.exception("job %s: unexpected error", claim.job_id)
-            result = _Result(JobStatus.failed, f"internal error: {type(exc).__name__}: {exc}", INTERNAL_KIND, _timings(out_dir))
+            result = _Result(JobStatus.failed, f"internal error: {type(exc).__name__}: {exc}", INTERNAL_KIND)
         with sessions() as session:
             current = session.get(Job, claim.job_id)
             if current is None or current.status in TERMINAL:

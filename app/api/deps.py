@@ -193,3 +193,20 @@ async def get_client(
 
 
 ClientDep = Annotated[ApiClient, Depends(get_client)]
+
+
+def _detach(session: Session, client: ApiClient) -> None:
+    if client in session:
+        session.expunge(client)
+    session.rollback()  # ends the transaction: the pooled connection goes back
+
+
+async def release_connection(session: Session, client: ApiClient) -> None:
+    """Give the session's database connection back before a long wait (an upload's body).
+
+    Authentication may have opened a transaction; holding its connection while a client
+    sends a body slowly would let slow uploads exhaust the pool. The client row is detached
+    (its loaded fields stay readable); the session opens a new transaction when used again.
+    """
+    if session.in_transaction():
+        await run_in_threadpool(_detach, session, client)

@@ -18,6 +18,8 @@ from fastapi.exceptions import RequestValidationError
 from fastapi.responses import JSONResponse
 from sqlalchemy.exc import DataError, OperationalError
 
+from app.api.guards import BodyRefused
+from app.core.storage import StorageError
 from app.engine.errors import AssetError, EngineError, PlanValidationError, ProviderError
 from app.schemas.common import ErrorPublic
 
@@ -75,6 +77,27 @@ class RateLimited(ApiError):
             f"rate limit of {limit} requests per minute exceeded; retry in {retry_after_s} s",
             headers={"Retry-After": str(retry_after_s)}, limit=limit, retry_after_s=retry_after_s,
         )
+
+
+class TooManyJobs(ApiError):
+    status_code = 429
+
+    def __init__(self, active: int, adding: int, limit: int, *, retry_after_s: int = 30) -> None:
+        super().__init__(
+            f"you have {active} jobs queued or running and asked for {adding} more; the limit is {limit} per API key: "
+            "wait for some to finish (or cancel them)",
+            headers={"Retry-After": str(retry_after_s)}, active=active, limit=limit,
+        )
+
+
+class Forbidden(ApiError):
+    status_code = 403
+
+
+class DamagedData(ApiError):
+    """Stored bytes that no longer match their record: the server's fault, said plainly."""
+
+    status_code = 500
 
 
 class ServiceUnavailable(ApiError):
@@ -135,10 +158,39 @@ async def _database_refused_value(_request: Request, exc: Exception) -> JSONResp
     return ErrorResponse(_body("a value in the request cannot be stored", "InvalidValue", {}), status_code=422)
 
 
+async def _body_refused(_request: Request, exc: Exception) -> JSONResponse:
+    assert isinstance(exc, BodyRefused)
+    return ErrorResponse(_body(str(exc.detail), exc.kind, {}), status_code=exc.status_code, headers={"Connection": "close"})
+
+
+async def _storage_error(_request: Request, exc: Exception) -> JSONResponse:
+    """Stored bytes missing or damaged: the server's fault, not the caller's input."""
+    logger.error("storage: %s", exc)
+    detail = f"{exc}; if it is an asset, upload the same file again to restore it"
+    return ErrorResponse(_body(detail, "StorageError", {}), status_code=500)
+
+
+MAX_ECHO_CHARS = 100
+UUID_EXAMPLE = "123e4567-e89b-12d3-a456-426614174000"
+
+
+def _validation_error(error: dict[str, Any]) -> dict[str, Any]:
+    """One validation error without the rejected input (never echoed back), with a plain message for ids."""
+    loc = [part if isinstance(part, int) else str(part)[:MAX_ECHO_CHARS] for part in error.get("loc", ())]
+    message = str(error.get("msg", "invalid value"))[:500]
+    if error.get("type") == "uuid_parsing" and loc[:1] == ["path"]:
+        message = f"{loc[-1]} must be a UUID such as {UUID_EXAMPLE}"
+    context = {k: v for k, v in (error.get("ctx") or {}).items() if isinstance(v, str | int | float) and k != "input"}
+    cleaned: dict[str, Any] = {"type": str(error.get("type", "value_error")), "loc": loc, "msg": message}
+    if context:
+        cleaned["ctx"] = {k: (v[:MAX_ECHO_CHARS] if isinstance(v, str) else v) for k, v in context.items()}
+    return cleaned
+
+
 async def _invalid_request(_request: Request, exc: Exception) -> JSONResponse:
-    """FastAPI's 422 body (``detail`` = list of errors), rendered safely."""
+    """FastAPI's 422 body (``detail`` = list of errors), without echoing the input, rendered safely."""
     assert isinstance(exc, RequestValidationError)
-    return ErrorResponse({"detail": jsonable_encoder(exc.errors())}, status_code=422)
+    return ErrorResponse({"detail": jsonable_encoder([_validation_error(dict(e)) for e in exc.errors()])}, status_code=422)
 
 
 def install_error_handlers(app: FastAPI) -> None:
@@ -147,3 +199,5 @@ def install_error_handlers(app: FastAPI) -> None:
     app.add_exception_handler(EngineError, _engine_error)
     app.add_exception_handler(OperationalError, _database_unavailable)
     app.add_exception_handler(DataError, _database_refused_value)
+    app.add_exception_handler(StorageError, _storage_error)
+    app.add_exception_handler(BodyRefused, _body_refused)

@@ -75,6 +75,30 @@ def multipart_openapi(properties: dict[str, Any], required: list[str]) -> dict[s
     return {"requestBody": {"required": True, "content": {"multipart/form-data": {"schema": schema}}}}
 
 
+MAX_URDF_FIELD_CHARS = 500
+URDF_FIELD_SCHEMA: dict[str, Any] = {
+    "type": "string", "maxLength": MAX_URDF_FIELD_CHARS,
+    "description": "which URDF to use when the asset holds several: its path inside the asset, or its file name",
+}
+
+
+def urdf_field(form: MultipartForm) -> str | None:
+    """The ``urdf`` text field (absent or blank: ``None``).
+
+    Raises
+    ------
+    RequestValidationError
+        Longer than :data:`MAX_URDF_FIELD_CHARS` or holding control characters.
+    """
+    value = (form.value("urdf") or "").strip()
+    if not value:
+        return None
+    if len(value) > MAX_URDF_FIELD_CHARS or any(ord(char) < 32 for char in value):
+        raise RequestValidationError([{"type": "value_error", "loc": ("body", "urdf"),
+                                       "msg": f"a file path of at most {MAX_URDF_FIELD_CHARS} printable characters"}])
+    return value
+
+
 ASSET_FILES_SCHEMA: dict[str, Any] = {
     "type": "array",
     "items": {"type": "string", "format": "binary"},

@@ -1,10 +1,12 @@
-"""Uploaded file(s) -> one validated, deduplicated asset zip in storage + its ``Asset`` row.
+"""Uploaded file(s) -> one validated, deduplicated asset zip in storage + the client's ``Asset`` record.
 
 One ``.zip`` is kept as sent; several files (URDF + meshes, names may hold sub-folders)
 are packed into a deterministic zip (sorted names, fixed timestamps and permissions), so
-the same files always give the same sha256, the dedupe key. A new asset is validated with
-the engine's :func:`load_asset` in a worker thread: a bad asset is rejected (422) before
-any job exists.
+the same files always give the same sha256, the dedupe key of the stored content. New
+content (or a URDF of it not used before) is validated with the engine's loader in a worker
+thread: a bad asset is rejected (422) before any job exists; its summary is stored beside
+it and the loaded asset is left in the workers' asset cache. Each client gets its own
+record (id, name, time) over the shared content.
 """
 
 from __future__ import annotations
@@ -18,13 +20,15 @@ from pathlib import Path, PurePosixPath
 from fastapi.concurrency import run_in_threadpool
 from sqlalchemy.orm import Session
 
-from app.api.asset_summary import store_summary
-from app.api.errors import NotFound, Unprocessable
+from app.api.errors import Conflict, NotFound, Unprocessable
 from app.api.uploads import UploadedFile
-from app.core.storage import Storage, sha256_file
-from app.crud.assets import get_asset_for_client, get_or_create_asset
+from app.core.asset_summary import has_summary, store_summary
+from app.core.config import Settings
+from app.core.storage import Storage, intact_local_path, sha256_file, stored_copy_intact
+from app.crud.assets import find_assets_for_client, get_or_create_asset, get_or_create_content
 from app.db.models import ApiClient, Asset
-from app.engine.asset.loader import load_asset
+from app.engine.asset.cache import load_asset_cached
+from app.engine.asset.loader import urdf_in_zip
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import AssetError, EngineError
 
@@ -96,30 +100,56 @@ def _display_zip_name(filename: str) -> str:
     return f"{name or PACKED_NAME[:-4]}.zip"
 
 
-def _validate(zip_path: Path) -> ArticulatedAsset:
-    """Load the asset like a worker would; every problem becomes a 422 naming file/element."""
+def _validate(zip_path: Path, display: str, urdf: str, cache_dir: Path | None, digest: str) -> ArticulatedAsset:
+    """Load the asset like a worker would (and leave it in the workers' asset cache).
+
+    Every problem becomes a 422 naming file/element; the zip is shown under the client's name.
+    """
     try:
-        return load_asset(zip_path)
+        return load_asset_cached(zip_path, cache_dir, name=PurePosixPath(display).stem, urdf=urdf, content_hash=digest)
     except EngineError:
         raise
     except Exception as exc:  # route boundary: an unexpected loader failure is still the asset's fault
-        logger.exception("asset %s: unexpected error while validating", zip_path.name)
-        raise AssetError(f"the asset could not be read ({type(exc).__name__}: {exc})", file=zip_path.name) from exc
+        logger.exception("asset %s: unexpected error while validating", display)
+        raise AssetError(f"the asset could not be read ({type(exc).__name__}: {exc})", file=display) from exc
+
+
+def _chosen_urdf(source: Path, display: str, urdf: str | None) -> str:
+    """The URDF the record will use (from the zip's member list; 422 when ambiguous or absent)."""
+    try:
+        return urdf_in_zip(source, urdf)
+    except AssetError as exc:  # name the client's file, not the temporary one
+        raise AssetError(exc.message.replace(source.name, display), file=display, element=exc.element) from exc
+
+
+def _store_content(storage: Storage, key: str, source: Path, digest: str, size: int) -> bool:
+    """Store ``source`` under ``key`` unless an intact copy is there; ``True`` when it was (re)written.
+
+    A stored copy that is missing, truncated or altered is replaced by the uploaded bytes.
+    """
+    if stored_copy_intact(storage, key, digest, size):
+        return False
+    if storage.exists(key):
+        logger.warning("stored asset %s was damaged; restored from a new upload of the same bytes", key)
+    storage.put_file(key, source)
+    return True
 
 
 async def store_upload(
-    files: list[UploadedFile], *, work: Path, session: Session, storage: Storage, client: ApiClient
+    files: list[UploadedFile], *, work: Path, session: Session, storage: Storage, client: ApiClient, settings: Settings,
+    urdf: str | None = None,
 ) -> tuple[Asset, bool]:
-    """Turn uploaded file(s) into a stored asset granted to ``client``; ``True`` if new content.
+    """Turn uploaded file(s) into this client's asset record; ``True`` if the record is new.
 
-    Blocking work (packing, hashing, validation, database) runs in the thread pool.
+    The content is stored (and validated) once per sha256 and URDF; every client gets its own
+    record over it. Blocking work (packing, hashing, validation, database) runs in the thread pool.
 
     Raises
     ------
     Unprocessable
         No file, unsafe names or duplicates.
     AssetError
-        The asset does not load (zip slip, zip bomb, XML bomb, missing mesh, ...).
+        The asset does not load (zip slip, zip bomb, XML bomb, missing mesh, several URDFs, ...).
     """
     if not files:
         raise Unprocessable("no asset: send the 'asset' file(s) (one .zip, or a URDF and its meshes) or 'asset_ref'")
@@ -129,33 +159,49 @@ async def store_upload(
     else:
         source = work / "packed.zip"
         display = await run_in_threadpool(_pack, files, source)
-    named = work / "named" / display
-    named.parent.mkdir(parents=True, exist_ok=True)
-    source.replace(named)  # the engine names the zip in its messages: use the client's name
-    digest = await run_in_threadpool(sha256_file, named)
-    existing = await run_in_threadpool(partial(get_asset_for_client, session, client=client, ref=digest))
-    if existing is not None:
-        return existing, False
+    digest = await run_in_threadpool(sha256_file, source)
+    size = source.stat().st_size
+    chosen = await run_in_threadpool(_chosen_urdf, source, display, urdf)
     key = f"assets/{digest}.zip"
-    if not storage.exists(key):
-        loaded = await run_in_threadpool(_validate, named)
-        await run_in_threadpool(store_summary, storage, digest, loaded, PurePosixPath(display).stem)
-        await run_in_threadpool(storage.put_file, key, named)
-    return await run_in_threadpool(partial(
-        get_or_create_asset, session, client=client, sha256=digest, filename=display,
-        size_bytes=named.stat().st_size, storage_key=key,
-    ))
+    if not await run_in_threadpool(has_summary, storage, digest, chosen):
+        loaded = await run_in_threadpool(_validate, source, display, chosen, settings.engine_config().asset_cache_dir, digest)
+        await run_in_threadpool(store_summary, storage, digest, chosen, loaded)
+    await run_in_threadpool(_store_content, storage, key, source, digest, size)
+    content = await run_in_threadpool(partial(get_or_create_content, session, sha256=digest, size_bytes=size, storage_key=key))
+    return await run_in_threadpool(partial(get_or_create_asset, session, client=client, content=content, filename=display,
+                                           urdf=chosen))
 
 
-def asset_by_ref(session: Session, *, client: ApiClient, ref: str) -> Asset:
-    """The client's asset named by id or sha256.
+async def asset_with_urdf(asset: Asset, urdf: str, *, session: Session, storage: Storage, client: ApiClient,
+                          settings: Settings) -> Asset:
+    """The client's record of ``asset``'s content with another URDF of it (validated on first use)."""
+    path = await run_in_threadpool(intact_local_path, storage, asset.storage_key, asset.sha256, asset.size_bytes)
+    chosen = await run_in_threadpool(_chosen_urdf, path, asset.filename, urdf)
+    if chosen == asset.urdf:
+        return asset
+    if not await run_in_threadpool(has_summary, storage, asset.sha256, chosen):
+        loaded = await run_in_threadpool(_validate, path, asset.filename, chosen, settings.engine_config().asset_cache_dir,
+                                         asset.sha256)
+        await run_in_threadpool(store_summary, storage, asset.sha256, chosen, loaded)
+    record, _ = await run_in_threadpool(partial(get_or_create_asset, session, client=client, content=asset.content,
+                                                filename=asset.filename, urdf=chosen))
+    return record
+
+
+def asset_by_ref(session: Session, *, client: ApiClient, ref: str, any_urdf: bool = False) -> Asset:
+    """The client's asset named by id or sha256 (``any_urdf``: the first of several records of that content).
 
     Raises
     ------
     NotFound
         Unknown, malformed, or another client's asset.
+    Conflict
+        A sha256 naming several of the client's records (one per chosen URDF): use the id.
     """
-    asset = get_asset_for_client(session, client=client, ref=ref)
-    if asset is None:
+    found = find_assets_for_client(session, client=client, ref=ref)
+    if not found:
         raise NotFound(f"no asset {ref[:100]!r} (upload it with POST /v1/assets first)")
-    return asset
+    if len(found) > 1 and not any_urdf:
+        choices = ", ".join(f"{a.id} ({a.urdf})" for a in found)
+        raise Conflict(f"{ref[:100]!r} names {len(found)} of your assets, one per URDF: {choices}; refer to one by its id")
+    return found[0]

@@ -76,7 +76,7 @@ def job_public(request: Request, job: Job) -> JobPublic:
 
 def asset_public(request: Request, asset: Asset, *, created: bool = False) -> AssetPublic:
     return AssetPublic(
-        id=asset.id, sha256=asset.sha256, filename=asset.filename, size_bytes=asset.size_bytes,
+        id=asset.id, sha256=asset.sha256, filename=asset.filename, urdf=asset.urdf, size_bytes=asset.size_bytes,
         created_at=asset.created_at, created=created,
         url=str(request.url_for("get_asset", ref=str(asset.id))),
         summary_url=str(request.url_for("get_asset_summary", ref=str(asset.id))),

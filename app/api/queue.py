@@ -13,10 +13,10 @@ from functools import partial
 
 from sqlalchemy.orm import Session
 
-from app.api.errors import ServiceUnavailable
+from app.api.errors import ServiceUnavailable, TooManyJobs
 from app.core.config import Settings
 from app.crud import jobs as crud_jobs
-from app.db.models import Job
+from app.db.models import ApiClient, Job
 
 logger = logging.getLogger(__name__)
 
@@ -55,6 +55,19 @@ def broker_reachable(settings: Settings) -> bool:
     from workers.broker import broker_ping
 
     return broker_ping(settings)
+
+
+def check_job_quota(session: Session, *, client: ApiClient, adding: int, limit: int) -> None:
+    """Refuse ``adding`` more jobs when the client would have more than ``limit`` queued or running.
+
+    Raises
+    ------
+    TooManyJobs
+        429 with ``Retry-After``.
+    """
+    active = crud_jobs.count_active_jobs(session, client=client)
+    if active + adding > limit:
+        raise TooManyJobs(active, adding, limit)
 
 
 def dispatch_jobs(session: Session, jobs: Sequence[Job], enqueue: Enqueuer) -> int:

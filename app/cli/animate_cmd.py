@@ -14,6 +14,7 @@ from app.cli.output import cache_dir, err, out
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser("animate", help="animate an asset from a text prompt")
     parser.add_argument("asset", type=Path, help="asset folder or .zip")
+    parser.add_argument("--urdf", default=None, metavar="NAME", help="which URDF to use when the folder or zip holds several")
     parser.add_argument("--prompt", required=True, help='what should happen, e.g. "press the pedal to open the bin"')
     parser.add_argument("--out", type=Path, required=True, help="output folder")
     add_model_options(parser)
@@ -43,7 +44,7 @@ def _animate(args: argparse.Namespace) -> int:
                           **engine_overrides(args))
     roles = make_roles(args.provider, provider_config(args), config)
     result = run_pipeline(
-        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps),
+        PipelineRequest(asset=args.asset, prompt=args.prompt, max_critic_rounds=args.critic_rounds, fps=args.fps, urdf=args.urdf),
         roles=roles, config=config, out_dir=args.out, observer=_Progress(),
     )
     report = result.report

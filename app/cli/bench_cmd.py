@@ -8,7 +8,7 @@ from pathlib import Path
 from typing import Any
 
 from app.cli.model_options import add_model_options, engine_overrides, provider_config
-from app.cli.output import cache_dir, out
+from app.cli.output import cache_dir, err, out
 
 
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
@@ -41,7 +41,11 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
 
 def _common(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--cases", type=Path, required=True, help="JSON Lines, one case per line")
-    parser.add_argument("--assets", type=Path, required=True, help="folder holding the cases' asset folders")
+    parser.add_argument("--assets", type=Path, default=None,
+                        help="folder holding the cases' asset folders (default: $ARTIMO_PARTNET_ROOT, else "
+                             "../shared/assets/partnet beside this repository)")
+    parser.add_argument("--allow-failures", action="store_true",
+                        help="exit 0 even when cases fail to animate or cannot be scored (default: exit 1)")
     parser.add_argument("--jobs", type=int, default=2, help="worker processes (results do not depend on it)")
     parser.add_argument("--with-2d", action="store_true", help="also P_MaskIoU / P_BoundaryF1 / P_ContourCD (renders through EGL)")
     parser.add_argument("--no-report", action="store_true", help="skip report.md, CSVs and charts")
@@ -63,14 +67,41 @@ def _report(args: argparse.Namespace, out_json: Path, pred: Path) -> None:
     out(f"report     {path}")
 
 
+def _assets_root(args: argparse.Namespace) -> Path:
+    """``--assets`` or the PartNet root, checked against the cases (a root holding none of them is an error)."""
+    from benchmark.cases import read_cases
+    from benchmark.paths import check_assets_root, partnet_root
+
+    root = args.assets if args.assets is not None else partnet_root()
+    missing = check_assets_root(root, (case.asset for case in read_cases(args.cases)), str(args.cases))
+    for name in missing:
+        err(f"missing asset: {root / name}")
+    args.assets = root
+    return root
+
+
+def _failures(document: dict[str, Any]) -> int:
+    """Cases that were not scored (no prediction, an unreadable one, or a case error)."""
+    return sum(count for status, count in document["summary"]["by_status"].items() if status != "scored")
+
+
+def _verdict(args: argparse.Namespace, failed: int, total: int, what: str) -> int:
+    if not failed:
+        return 0
+    err(f"{failed} of {total} cases {what}" + ("; exit 0 (--allow-failures)" if args.allow_failures else "; exit 1 (--allow-failures to tolerate)"))
+    return 0 if args.allow_failures else 1
+
+
 def _evaluate(args: argparse.Namespace) -> int:
     from benchmark.runner import evaluate
 
-    document = evaluate(args.cases, args.assets, args.pred, args.out, node_map=args.node_map, with_2d=args.with_2d, jobs=args.jobs)
+    _assets_root(args)
+    document = evaluate(args.cases, args.assets, args.pred, args.out, node_map=args.node_map, with_2d=args.with_2d, jobs=args.jobs,
+                        cache_dir=cache_dir(args))
     _print_summary(document)
     out(f"scores     {args.out}")
     _report(args, args.out, args.pred)
-    return 0
+    return _verdict(args, _failures(document), len(document["cases"]), "were not scored")
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -78,16 +109,17 @@ def _run(args: argparse.Namespace) -> int:
     from benchmark.run import animate_cases
     from benchmark.runner import evaluate
 
+    _assets_root(args)
     config = EngineConfig(asset_cache_dir=cache_dir(args), **engine_overrides(args))
     records = animate_cases(args.cases, args.assets, args.out, provider=args.provider, provider_config=provider_config(args), config=config, jobs=args.jobs)
     failed = [r for r in records if r["status"] != "ok"]
     out(f"animated   {len(records) - len(failed)}/{len(records)} cases ({len(failed)} failed; see {args.out / 'runs.json'})")
     out_json = args.out / "evaluation.json"
-    document = evaluate(args.cases, args.assets, args.out, out_json, with_2d=args.with_2d, jobs=args.jobs)
+    document = evaluate(args.cases, args.assets, args.out, out_json, with_2d=args.with_2d, jobs=args.jobs, cache_dir=cache_dir(args))
     _print_summary(document)
     out(f"scores     {out_json}")
     _report(args, out_json, args.out)
-    return 0
+    return _verdict(args, max(len(failed), _failures(document)), len(records), "failed (animation or scoring)")
 
 
 def _critic(args: argparse.Namespace) -> int:

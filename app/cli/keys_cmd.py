@@ -36,6 +36,16 @@ def _sessions() -> sessionmaker[Session]:
     return session_factory(settings.sqlalchemy_url)
 
 
+def _where() -> str:
+    """Which service a key belongs to: its database (and the data folder of the embedded one)."""
+    from app.core.config import get_settings
+
+    settings = get_settings()
+    if settings.database_url is None:
+        return f"the embedded database {settings.database_shown} (ARTIMO_DATA_DIR={settings.data_dir})"
+    return f"the database {settings.database_shown} ($DATABASE_URL)"
+
+
 def _create(args: argparse.Namespace) -> int:
     from app.crud.clients import create_api_client
 
@@ -44,7 +54,7 @@ def _create(args: argparse.Namespace) -> int:
         return 2
     with _sessions()() as session:
         client, key = create_api_client(session, name=args.name, rate_limit_per_minute=args.rate_limit)
-    err(f"created client {client.name!r} ({client.id}); the key is shown once:")
+    err(f"created client {client.name!r} ({client.id}) in {_where()}: a server using it accepts the key; it is shown once:")
     out(key)
     return 0
 

@@ -33,6 +33,9 @@ logger = logging.getLogger(__name__)
 
 WORKER_STOP_TIMEOUT_S = 20.0
 WORKER_RESTART_LIMIT = 5
+WORKER_RESTART_WINDOW_S = 600.0
+"""More than :data:`WORKER_RESTART_LIMIT` restarts within this many seconds: a crash loop, restarting stops
+(``/readyz`` then reports no live worker). Occasional crashes spread over days are always restarted."""
 WORKER_POLL_S = 1.0
 KEY_PREFIX_SHOWN = 6
 EMBEDDED_CLIENT = "embedded"
@@ -80,7 +83,7 @@ def _death_signal_setter() -> Callable[[], None] | None:
 
 
 class WorkerSupervisor:
-    """Runs the worker child; restarts it (a few times) if it dies while the API is up.
+    """Runs the worker child; restarts it if it dies while the API is up (unless it crash-loops).
 
     The child gets its own session (a terminal's Ctrl-C reaches only this process, which then
     stops the worker in order) and a parent-death signal (if this process is killed outright).
@@ -93,6 +96,8 @@ class WorkerSupervisor:
         self.process: subprocess.Popen[bytes] | None = None
         self.stopping = threading.Event()
         self.restarts = 0
+        self.gave_up = False
+        self._recent: list[float] = []
         self._lock = threading.Lock()
         self._pre_exec = _death_signal_setter()
         self._thread = threading.Thread(target=self._watch, name="worker-supervisor", daemon=True)
@@ -111,11 +116,17 @@ class WorkerSupervisor:
             with self._lock:
                 if self.stopping.is_set() or self.process is None or self.process.poll() is None:
                     continue
-                if self.restarts >= WORKER_RESTART_LIMIT:
-                    logger.error("worker exited with %s; restart limit reached, jobs will wait", self.process.returncode)
+                now = time.monotonic()
+                self._recent = [t for t in self._recent if now - t < WORKER_RESTART_WINDOW_S]
+                if len(self._recent) >= WORKER_RESTART_LIMIT:
+                    self.gave_up = True
+                    logger.error("worker exited with %s after %d restarts in %.0f s; not restarting it: jobs will wait and "
+                                 "/readyz reports no live worker", self.process.returncode, len(self._recent), WORKER_RESTART_WINDOW_S)
                     return
+                self._recent.append(now)
                 self.restarts += 1
-                logger.error("worker exited with %s; restarting (%d/%d)", self.process.returncode, self.restarts, WORKER_RESTART_LIMIT)
+                logger.error("worker exited with %s; restarting (%d in the last %.0f s)", self.process.returncode,
+                             len(self._recent), WORKER_RESTART_WINDOW_S)
                 self._spawn()
 
     def stop(self) -> int | None:
@@ -209,17 +220,19 @@ def _api_key(settings: Settings) -> tuple[str, str]:
     from app.db.models import ApiClient
     from app.db.session import session_factory
 
+    where = f"database {settings.database_shown}"
     with session_factory(settings.sqlalchemy_url)() as session:
         if settings.artimo_api_key is not None:
             client = ensure_client_for_key(session, key=settings.artimo_api_key.get_secret_value())
             shown = settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]
-            return f"API key: the value of $ARTIMO_API_KEY ({shown}...)", str(client.id)
+            return f"API key: the value of $ARTIMO_API_KEY ({shown}...), for any {where}", str(client.id)
         existing = session.execute(select(ApiClient).where(ApiClient.name == EMBEDDED_CLIENT)).scalars().first()
         if existing is not None:
-            return (f"API key: the '{EMBEDDED_CLIENT}' key printed when {settings.data_dir} was first served "
-                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME"), str(existing.id)
+            return (f"API key: the '{EMBEDDED_CLIENT}' key printed when this {where} was first served "
+                    f"({existing.key_prefix}...); or set ARTIMO_API_KEY, or run: artimo keys create --name NAME "
+                    f"(with the same ARTIMO_DATA_DIR={settings.data_dir})"), str(existing.id)
         client, key = create_api_client(session, name=EMBEDDED_CLIENT)
-        return f"API key (shown once, stored hashed): {key}", str(client.id)
+        return f"API key (shown once, stored hashed): {key}  (valid for the {where}; data folder {settings.data_dir})", str(client.id)
 
 
 def _page_url(settings: Settings, args: argparse.Namespace, client_id: str) -> str:

@@ -3,21 +3,21 @@
 from __future__ import annotations
 
 import argparse
-import os
 from pathlib import Path
 
 from app.cli.output import err, out, out_json
-
-DEFAULT_SERVER = "http://127.0.0.1:8000"
+from app.cli.server_options import add_server_options, model_options, open_client
 
 
 def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> None:
     parser = commands.add_parser("submit", help="submit an asset + prompt to an ArtiMo server")
     parser.add_argument("asset", help="asset folder (zipped on the fly), .zip, or an uploaded asset's id/sha256")
     parser.add_argument("--prompt", required=True)
-    parser.add_argument("--server", default=os.environ.get("ARTIMO_SERVER", DEFAULT_SERVER), help=f"default $ARTIMO_SERVER or {DEFAULT_SERVER}")
-    parser.add_argument("--key", default=None, help="API key (default $ARTIMO_API_KEY)")
-    parser.add_argument("--provider", default=None)
+    add_server_options(parser)
+    parser.add_argument("--provider", default=None, help="offline (the server's default), openai or gemini (if the server has its key)")
+    parser.add_argument("--model", action="append", default=[], metavar="ROLE=NAME",
+                        help="model per role, e.g. --model planner=gpt-4.1 --model critic=geometric (repeatable)")
+    parser.add_argument("--urdf", default=None, metavar="NAME", help="which URDF to use when the asset holds several")
     parser.add_argument("--fps", type=int, choices=(24, 30), default=None)
     parser.add_argument("--critic-rounds", type=int, default=None, help="0..3")
     parser.add_argument("--preview", action="store_true", help="also render preview.gif (downloaded with --out)")
@@ -28,16 +28,20 @@ def register(commands: argparse._SubParsersAction[argparse.ArgumentParser]) -> N
 
 
 def _submit(args: argparse.Namespace) -> int:
-    from app.client import ArtimoClient, ClientError
+    from app.client import ClientError
 
-    key = args.key or os.environ.get("ARTIMO_API_KEY")
-    if not key:
-        err("no API key: pass --key or set ARTIMO_API_KEY")
+    try:
+        models = model_options(args.model)
+    except ValueError as exc:
+        err(f"error: {exc}")
+        return 2
+    client = open_client(args)
+    if client is None:
         return 2
     try:
-        with ArtimoClient(args.server, key) as client:
+        with client:
             job = client.submit(args.asset, args.prompt, provider=args.provider, fps=args.fps, max_critic_rounds=args.critic_rounds,
-                                preview=args.preview or None)
+                                preview=args.preview or None, urdf=args.urdf, **models)
             err(f"job {job['id']} {job['status']}: {job['url']}")
             if not (args.wait or args.out):
                 out(job["id"])

@@ -39,6 +39,14 @@ class Settings(BaseSettings):
 
     max_upload_bytes: int = Field(default=256 * 1024 * 1024, gt=0)
     max_upload_files: int = Field(default=2000, gt=0)
+    max_json_body_bytes: int = Field(default=2 * 1024 * 1024, gt=0)
+    """Largest body that is not a multipart upload (``POST /v1/batches``), bytes."""
+    body_idle_timeout_s: float = Field(default=30.0, gt=0)
+    """A request body with no new bytes for this long is refused (408)."""
+    body_timeout_s: float = Field(default=900.0, gt=0)
+    """Longest time to receive a whole request body (408 after it)."""
+    metrics_token: SecretStr | None = None
+    """Bearer token for ``/metrics``; without it ``/metrics`` answers only on loopback."""
     rate_limit_per_minute: int = Field(default=120, gt=0)
     auth_cache_s: float = Field(default=2.0, ge=0)
     auth_failures_per_minute: int = Field(default=60, gt=0)
@@ -47,7 +55,9 @@ class Settings(BaseSettings):
     """Requests per API key per minute (health routes are exempt)."""
     job_soft_time_limit_s: int = Field(default=900, gt=0)
     job_hard_time_limit_s: int = Field(default=960, gt=0)
-    max_batch_cases: int = Field(default=500, gt=0)
+    max_batch_cases: int = Field(default=200, gt=0)
+    max_active_jobs_per_client: int = Field(default=200, gt=0)
+    """Jobs one API key may have queued or running at once; more are refused (429) until some finish."""
     api_max_in_flight: int = Field(default=8, ge=1)
     """HTTP requests inside one API process at once (others wait in the event loop); must stay <= the
     DB pool's capacity (5+10 SQLite, 10+20 Postgres) or sync routes can deadlock (see app/api/admission.py).
@@ -60,6 +70,12 @@ class Settings(BaseSettings):
     """Redis: an unacknowledged job is redelivered after this; default hard time limit + 120 s."""
     requeue_queued_after_s: int = Field(default=120, ge=0)
     """On (re)connection a worker re-sends jobs still queued after this long (their message may be lost)."""
+    requeue_sweep_s: float = Field(default=30.0, gt=0)
+    """How often a worker looks for jobs whose message was lost (also between reconnections)."""
+    requeue_stuck_after_s: float = Field(default=30.0, ge=0)
+    """A job still queued this long while the broker queue is empty has lost its message: it is re-sent."""
+    worker_heartbeat_s: float = Field(default=10.0, gt=0)
+    """How often each worker records that it is alive; ``/readyz`` needs one heard from within 3 intervals."""
     job_stage_delay_s: float = Field(default=0.0, ge=0, le=60)
     """Pause after each pipeline stage (tests/demos: makes progress, cancel and kill observable)."""
 
@@ -82,6 +98,18 @@ class Settings(BaseSettings):
     artimo_model_profile: str = ""
     """Model-profile overrides ``KEY=VALUE,...`` (e.g. ``token_param=max_completion_tokens,temperature=none``)."""
 
+    def provider_key(self, provider: str) -> SecretStr | None:
+        """The server's API key for a model provider (``None``: none configured, or the offline provider)."""
+        return {"openai": self.openai_api_key, "gemini": self.gemini_api_key}.get(provider)
+
+    def missing_provider_key(self, provider: str | None) -> str | None:
+        """Why a job on ``provider`` (default: the server's) cannot run here, or ``None`` when it can."""
+        name = provider or self.default_provider
+        if name in ("openai", "gemini") and self.provider_key(name) is None:
+            return (f"this server has no API key for provider '{name}' ({name.upper()}_API_KEY is not set); "
+                    "use provider 'offline' or ask the operator")
+        return None
+
     @property
     def data_dir(self) -> Path:
         return self.artimo_data_dir.expanduser()
@@ -91,8 +119,19 @@ class Settings(BaseSettings):
         return self.database_url or f"sqlite:///{self.data_dir / 'artimo.db'}"
 
     @property
+    def database_shown(self) -> str:
+        """The database URL for messages (password hidden)."""
+        from sqlalchemy.engine import make_url
+
+        return make_url(self.sqlalchemy_url).render_as_string(hide_password=True)
+
+    @property
     def broker_url(self) -> str:
         return self.redis_url or f"sqla+sqlite:///{self.data_dir / 'broker.db'}"
+
+    @property
+    def worker_stale_after_s(self) -> float:
+        return 3 * self.worker_heartbeat_s
 
     @property
     def visibility_timeout_s(self) -> int:

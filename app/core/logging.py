@@ -7,6 +7,7 @@ only create loggers. Records carry the process role and, inside a job, the job i
 from __future__ import annotations
 
 import logging
+import re
 import sys
 from contextvars import ContextVar
 
@@ -14,6 +15,10 @@ from app.core.config import Settings
 
 LOG_FORMAT = "%(asctime)s %(levelname)s [%(process)d] %(name)s%(job)s: %(message)s"
 NOISY_LOGGERS = ("sqlalchemy.engine", "httpx", "multipart")
+
+CREDENTIAL_PARAMETERS = frozenset({"api_key", "apikey", "key", "token", "access_token", "auth", "authorization"})
+"""Query parameters that look like credentials: refused by the API, redacted in every log line."""
+_CREDENTIAL_IN_QUERY = re.compile(r"([?&](?:" + "|".join(sorted(CREDENTIAL_PARAMETERS)) + r")=)[^&\s\"]*", re.IGNORECASE)
 
 current_job: ContextVar[str | None] = ContextVar("current_job", default=None)
 """The job id the current code runs for (set by the worker), added to every record."""
@@ -23,6 +28,22 @@ class _JobFilter(logging.Filter):
     def filter(self, record: logging.LogRecord) -> bool:
         job = current_job.get()
         record.job = f" [job {job}]" if job else ""
+        return True
+
+
+def redact_credentials(text: str) -> str:
+    """``text`` with the values of credential-like query parameters replaced."""
+    return _CREDENTIAL_IN_QUERY.sub(r"\1[redacted]", text)
+
+
+class _RedactFilter(logging.Filter):
+    """Access-log lines (uvicorn) show the requested URL: a key sent as ``?api_key=`` must not be written."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        message = record.getMessage()
+        redacted = redact_credentials(message)
+        if redacted != message:
+            record.msg, record.args = redacted, ()
         return True
 
 
@@ -37,6 +58,7 @@ def configure_logging(settings: Settings) -> None:
     handler = logging.StreamHandler(sys.stderr)
     handler.setFormatter(logging.Formatter(LOG_FORMAT))
     handler.addFilter(_JobFilter())
+    handler.addFilter(_RedactFilter())
     handler._artimo = True  # type: ignore[attr-defined]
     root.addHandler(handler)
     for name in NOISY_LOGGERS:

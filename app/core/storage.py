@@ -11,6 +11,7 @@ import hashlib
 import os
 import shutil
 import tempfile
+import threading
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
@@ -123,3 +124,54 @@ def sha256_file(path: Path) -> str:
         while block := handle.read(1 << 20):
             digest.update(block)
     return digest.hexdigest()
+
+
+class _Verified:
+    """Files whose sha256 was checked, by (path, size, mtime): an unchanged file is not hashed again."""
+
+    MAX_ENTRIES = 4096
+
+    def __init__(self) -> None:
+        self._seen: dict[tuple[str, int, int], str] = {}
+        self._lock = threading.Lock()
+
+    def digest(self, path: Path) -> tuple[int, str]:
+        stat = path.stat()
+        key = (str(path), stat.st_size, stat.st_mtime_ns)
+        with self._lock:
+            known = self._seen.get(key)
+        if known is None:
+            known = sha256_file(path)
+            with self._lock:
+                if len(self._seen) >= self.MAX_ENTRIES:
+                    self._seen.clear()
+                self._seen[key] = known
+        return stat.st_size, known
+
+
+_VERIFIED = _Verified()
+
+
+def intact_local_path(storage: Storage, key: str, sha256: str, size: int | None = None) -> Path:
+    """The local file of ``key`` after checking it still holds the bytes recorded for it.
+
+    Raises
+    ------
+    StorageError
+        The file is missing, or its size or sha256 differs from the record (truncated, altered).
+    """
+    path = storage.local_path(key)
+    if not path.is_file():
+        raise StorageError(f"stored object {key!r} is missing")
+    actual_size, actual = _VERIFIED.digest(path)
+    if (size is not None and actual_size != size) or actual != sha256:
+        raise StorageError(f"stored object {key!r} is damaged (its bytes no longer match their recorded sha256)")
+    return path
+
+
+def stored_copy_intact(storage: Storage, key: str, sha256: str, size: int | None = None) -> bool:
+    try:
+        intact_local_path(storage, key, sha256, size)
+    except StorageError:
+        return False
+    return True

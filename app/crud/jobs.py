@@ -74,6 +74,12 @@ def list_jobs(
     return list(rows), int(count)
 
 
+def count_active_jobs(session: Session, *, client: ApiClient) -> int:
+    """The client's jobs that are queued or running."""
+    query = select(func.count()).select_from(Job).where(Job.client_id == client.id, Job.status.in_([s.value for s in _ACTIVE]))
+    return int(session.execute(query).scalar_one())
+
+
 def count_jobs_by_status(session: Session) -> dict[str, int]:
     """Jobs per status over all clients (every status present, zero when none)."""
     counts = {status.value: 0 for status in JobStatus}

@@ -5,18 +5,17 @@ from __future__ import annotations
 from sqlalchemy import func, select
 from sqlalchemy.orm import Session
 
-from app.db.models import ApiClient, Asset, Batch, ClientAsset, Job
+from app.db.models import ApiClient, Asset, Batch, Job
 
 MAX_LISTED = 200
 
 
 def list_client_assets(session: Session, *, client: ApiClient, limit: int = 50) -> list[Asset]:
-    """Assets ``client`` uploaded (or referenced), most recently granted first."""
+    """``client``'s asset records (one per uploaded content and chosen URDF), newest first."""
     return list(session.execute(
-        select(Asset).join(ClientAsset, ClientAsset.asset_id == Asset.id)
-        .where(ClientAsset.client_id == client.id)
-        .order_by(ClientAsset.created_at.desc(), Asset.id).limit(min(max(limit, 1), MAX_LISTED))
-    ).scalars().all())
+        select(Asset).where(Asset.client_id == client.id)
+        .order_by(Asset.created_at.desc(), Asset.id).limit(min(max(limit, 1), MAX_LISTED))
+    ).unique().scalars().all())
 
 
 def list_client_batches(session: Session, *, client: ApiClient, limit: int = 50) -> list[tuple[Batch, int]]:

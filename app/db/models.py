@@ -1,4 +1,4 @@
-"""ORM models: API clients, uploaded assets (and who may use them), batches, jobs, their artifacts and events."""
+"""ORM models: API clients, uploaded assets (shared content, per-client records), batches, jobs, their artifacts and events, live workers."""
 
 from __future__ import annotations
 
@@ -41,26 +41,61 @@ class ApiClient(Base):
     rate_limit_per_minute: Mapped[int | None] = mapped_column(Integer, nullable=True)
 
 
-class Asset(Base):
-    __tablename__ = "asset"
+class AssetContent(Base):
+    """The bytes of an uploaded asset, stored once per content hash and shared by every client that sent them.
+
+    Never shown to a client: each client sees its own :class:`Asset` record over it.
+    """
+
+    __tablename__ = "asset_content"
 
     id: Mapped[uuid.UUID] = mapped_column(Uuid, primary_key=True, default=uuid.uuid4)
     sha256: Mapped[str] = mapped_column(String(64), unique=True, index=True)
-    """Content hash of the normalised upload: the same asset uploaded twice is stored once."""
-    filename: Mapped[str] = mapped_column(String(500))
+    """Content hash of the stored zip (the dedupe key)."""
     size_bytes: Mapped[int] = mapped_column(Integer)
     storage_key: Mapped[str] = mapped_column(String(500))
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
 
 
-class ClientAsset(Base):
-    """Which client uploaded (or referenced) which asset: assets are shared by hash, visibility is not."""
+class Asset(Base):
+    """One client's asset: its own id, name and time over shared content, and which URDF of it to use."""
 
-    __tablename__ = "client_asset"
+    __tablename__ = "asset"
+    __table_args__ = (UniqueConstraint("client_id", "content_id", "urdf", name="uq_asset_client_content_urdf"),)
 
-    client_id: Mapped[uuid.UUID] = mapped_column(ForeignKey("api_client.id", ondelete="CASCADE"), primary_key=True)
-    asset_id: Mapped[uuid.UUID] = mapped_column(ForeignKey("asset.id", ondelete="CASCADE"), primary_key=True, index=True)
+    id: Mapped[uuid.UUID] = mapped_column(Uuid, primary_key=True, default=uuid.uuid4)
+    client_id: Mapped[uuid.UUID] = mapped_column(ForeignKey("api_client.id", ondelete="CASCADE"), index=True)
+    content_id: Mapped[uuid.UUID] = mapped_column(ForeignKey("asset_content.id", ondelete="RESTRICT"), index=True)
+    filename: Mapped[str] = mapped_column(String(500))
+    urdf: Mapped[str] = mapped_column(String(500), default="")
+    """The URDF file (path inside the asset) this record animates; "" = the asset's only URDF."""
     created_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+
+    content: Mapped[AssetContent] = relationship(lazy="joined", innerjoin=True)
+
+    @property
+    def sha256(self) -> str:
+        return self.content.sha256
+
+    @property
+    def size_bytes(self) -> int:
+        return self.content.size_bytes
+
+    @property
+    def storage_key(self) -> str:
+        return self.content.storage_key
+
+
+class WorkerHeartbeat(Base):
+    """A live job worker (one row per Celery worker), refreshed every few seconds by its main process."""
+
+    __tablename__ = "worker_heartbeat"
+
+    name: Mapped[str] = mapped_column(String(200), primary_key=True)
+    """Celery's worker host name (``name@host``)."""
+    concurrency: Mapped[int] = mapped_column(Integer)
+    started_at: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow)
+    last_seen: Mapped[datetime] = mapped_column(DateTime(timezone=True), default=utcnow, index=True)
 
 
 class Batch(Base):

@@ -7,6 +7,11 @@ it without parsing the message.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+if TYPE_CHECKING:
+    from app.engine.report import RunReport
+
 
 class EngineError(Exception):
     """Root of every deliberate engine failure.
@@ -21,6 +26,8 @@ class EngineError(Exception):
         super().__init__(message)
         self.message = message
         self.context = context
+        self.report: RunReport | None = None
+        """The report of the run that failed, when ``run_pipeline`` raised this (report.json's content)."""
 
     def __str__(self) -> str:
         return self.message

@@ -22,9 +22,8 @@ from app.engine.agents.expectations import expectations_of
 from app.engine.agents.fallback import fallbacks_used
 from app.engine.agents.loop import refine
 from app.engine.agents.roles import Context, Perception, Roles
-from app.engine.asset.cache import load_asset_cached
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.asset.summary import joint_summary, scale_context
+from app.engine.asset.stored import StoredAsset, load_stored, summaries
 from app.engine.bundle import REPORT_FILE, write_animation, write_preview, write_report
 from app.engine.config import EngineConfig
 from app.engine.contracts.causal import CausalDocument
@@ -55,6 +54,10 @@ class PipelineRequest:
     """Frame rate of the output (24 or 30); ``None`` keeps the planner's."""
     causal: CausalDocument | None = None
     """Re-plan from this Causal.json instead of perceiving the prompt (``artimo plan``): the perceiver is skipped."""
+    urdf: str | None = None
+    """Which URDF to load when the asset folder/zip holds several."""
+    stored: StoredAsset | None = None
+    """What the caller already knows of ``asset`` (hash, name, summaries): nothing is computed twice."""
 
 
 @dataclass
@@ -100,7 +103,7 @@ def _render_choice(roles: Roles, config: EngineConfig, report: RunReport) -> boo
 
 async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run: _Run, report: RunReport) -> dict[str, str]:
     with run.stage("load_asset"):
-        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_asset_cached(request.asset, config.asset_cache_dir)
+        asset = request.asset if isinstance(request.asset, ArticulatedAsset) else load_stored(request.asset, config.asset_cache_dir, request.urdf, request.stored)
     report.asset = AssetSummary.of(asset)
     with run.stage("preprocess"):
         render = _render_choice(roles, config, report)
@@ -111,7 +114,8 @@ async def _run(request: PipelineRequest, roles: Roles, config: EngineConfig, run
                 raise
             raise RenderError(f"{exc}; the {' and '.join(roles.vision)} model(s) need images: fix rendering or pass --no-render") from exc
         report.images = bool(images)
-        context = Context(asset=asset, prompt=request.prompt, joint_summary=joint_summary(asset), scale=scale_context(asset), config=config,
+        joints, scale = summaries(asset, request.stored)
+        context = Context(asset=asset, prompt=request.prompt, joint_summary=joints, scale=scale, config=config,
                           images=images, render=render and bool(roles.vision), keyframe_dir=run.out_dir / "keyframes")
     with run.stage("perceive"):
         if request.causal is not None:
@@ -181,6 +185,7 @@ async def _main(request: PipelineRequest, roles: Roles, config: EngineConfig, ru
         report.warnings.append(str(exc))
         report.fallbacks = fallbacks_used(roles.perceiver, roles.planner, roles.critic)
         _finish(report, run, {})
+        exc.report = report  # the caller gets the failed run's report without reading report.json
         raise
     finally:
         await roles.aclose()

@@ -13,6 +13,10 @@ from app.schemas.common import Name, Text, UtcDatetime
 MAX_PROMPT_CHARS = 2000
 MAX_MODEL_NAME_CHARS = 200
 MAX_PLAN_CHARS = 1_000_000
+MODEL_NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9._:@+-]*(?:/[A-Za-z0-9][A-Za-z0-9._:@+-]*)*$"
+"""A model name: letters, digits and ``. _ : @ + -``, in ``/``-separated segments that start with a
+letter or digit (``gpt-4.1``, ``gemini-2.5-pro``, ``meta-llama/Llama-3.1-8B``). No ``..`` segment,
+no ``?``, ``#``, ``%`` or spaces: a name never changes the provider URL it may be placed in."""
 
 
 class JobOptions(BaseModel):
@@ -21,9 +25,9 @@ class JobOptions(BaseModel):
     model_config = ConfigDict(extra="forbid")
 
     provider: Name | None = Field(default=None, max_length=40, description="offline (default), openai or gemini")
-    perceiver_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
-    planner_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
-    critic_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS)
+    perceiver_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS, pattern=MODEL_NAME_PATTERN)
+    planner_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS, pattern=MODEL_NAME_PATTERN)
+    critic_model: Name | None = Field(default=None, min_length=1, max_length=MAX_MODEL_NAME_CHARS, pattern=MODEL_NAME_PATTERN)
     fps: Literal[24, 30] | None = None
     max_critic_rounds: int | None = Field(default=None, ge=0, le=3)
     preview: bool | None = Field(default=None, description="also render preview.gif of the final animation")

@@ -35,8 +35,14 @@ schema = schemathesis.openapi.from_asgi("/openapi.json", APP)
 
 
 @pytest.fixture
-def configured_app(settings: Settings) -> Iterator[None]:
-    """``schemathesis.pytest.from_fixture`` would be neater but breaks on pytest 9 (``Function._nodeid``)."""
+def configured_app(settings: Settings, db) -> Iterator[None]:  # type: ignore[no-untyped-def]
+    """``schemathesis.pytest.from_fixture`` would be neater but breaks on pytest 9 (``Function._nodeid``).
+
+    A worker heartbeat makes ``/readyz`` ready (without one it answers 503, as it must).
+    """
+    from app.crud.workers import record_heartbeat
+
+    record_heartbeat(db, name="schemathesis-worker", concurrency=1)
     sent: list[uuid.UUID] = []
     APP.state.settings = settings
     APP.dependency_overrides[get_enqueuer] = lambda: sent.append

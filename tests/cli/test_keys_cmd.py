@@ -50,3 +50,16 @@ def test_submit_to_an_unreachable_server_fails_cleanly(monkeypatch: pytest.Monke
     (tmp_path / "mobility.urdf").write_text("<robot/>")
     assert main(["submit", str(tmp_path), "--prompt", "x", "--server", "http://127.0.0.1:1", "--key", "k"]) == 1
     assert "cannot reach the server" in capsys.readouterr().err
+
+
+def test_create_says_which_database_the_key_belongs_to(embedded, capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["keys", "create", "--name", "bob"]) == 0
+    said = capsys.readouterr().err
+    assert f"sqlite:///{embedded.data_dir / 'artimo.db'}" in said and f"ARTIMO_DATA_DIR={embedded.data_dir}" in said
+
+
+def test_a_postgres_password_is_never_printed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from app.core.config import Settings
+
+    settings = Settings(_env_file=None, database_url="postgresql+psycopg://artimo:s3cret@db.example/artimo")  # type: ignore[call-arg]
+    assert "s3cret" not in settings.database_shown and "db.example/artimo" in settings.database_shown

@@ -9,7 +9,7 @@ from sqlalchemy import select
 from sqlalchemy.orm import Session
 
 from app.crud import jobs as crud_jobs
-from app.crud.assets import get_asset_for_client, get_or_create_asset
+from app.crud.assets import find_assets_for_client, get_or_create_asset, get_or_create_content
 from app.crud.clients import client_by_key, create_api_client, ensure_client_for_key, hash_key
 from app.db.models import Job, JobEvent, JobStatus
 from app.db.session import session_factory
@@ -18,8 +18,8 @@ from app.db.session import session_factory
 @pytest.fixture
 def job(db: Session) -> Job:
     client, _ = create_api_client(db, name="crud")
-    asset, _ = get_or_create_asset(db, client=client, sha256=uuid.uuid4().hex * 2, filename="a.zip", size_bytes=1,
-                                   storage_key="assets/a.zip")
+    content = get_or_create_content(db, sha256=uuid.uuid4().hex * 2, size_bytes=1, storage_key="assets/a.zip")
+    asset, _ = get_or_create_asset(db, client=client, content=content, filename="a.zip", urdf="mobility.urdf")
     return crud_jobs.create_job(db, client=client, asset=asset, prompt="open", options={"fps": 24})
 
 
@@ -110,13 +110,20 @@ def test_keys_are_stored_hashed(db: Session) -> None:
     assert ensure_client_for_key(db, key="env-secret").id == env_client.id
 
 
-def test_assets_are_visible_only_to_clients_that_uploaded_them(db: Session) -> None:
+def test_assets_are_per_client_records_over_shared_content(db: Session) -> None:
     owner, _ = create_api_client(db, name="owner")
     stranger, _ = create_api_client(db, name="stranger")
     sha = uuid.uuid4().hex * 2
-    asset, created = get_or_create_asset(db, client=owner, sha256=sha, filename="x.zip", size_bytes=1, storage_key="k")
-    again, created_again = get_or_create_asset(db, client=owner, sha256=sha, filename="x.zip", size_bytes=1, storage_key="k")
+    content = get_or_create_content(db, sha256=sha, size_bytes=1, storage_key="k")
+    assert get_or_create_content(db, sha256=sha, size_bytes=1, storage_key="k").id == content.id
+    asset, created = get_or_create_asset(db, client=owner, content=content, filename="x.zip", urdf="a.urdf")
+    again, created_again = get_or_create_asset(db, client=owner, content=content, filename="x.zip", urdf="a.urdf")
     assert created and not created_again and again.id == asset.id
-    assert get_asset_for_client(db, client=owner, ref=str(asset.id)).id == asset.id
-    assert get_asset_for_client(db, client=stranger, ref=sha) is None
-    assert get_asset_for_client(db, client=owner, ref="nonsense") is None
+    other_urdf, created_other = get_or_create_asset(db, client=owner, content=content, filename="x.zip", urdf="b.urdf")
+    assert created_other and other_urdf.id != asset.id
+    assert [a.id for a in find_assets_for_client(db, client=owner, ref=str(asset.id))] == [asset.id]
+    assert {a.id for a in find_assets_for_client(db, client=owner, ref=sha)} == {asset.id, other_urdf.id}
+    assert find_assets_for_client(db, client=stranger, ref=sha) == []
+    assert find_assets_for_client(db, client=owner, ref="nonsense") == []
+    theirs, _ = get_or_create_asset(db, client=stranger, content=content, filename="mine.zip", urdf="a.urdf")
+    assert theirs.id != asset.id and theirs.filename == "mine.zip" and theirs.sha256 == asset.sha256 == sha

@@ -7,7 +7,7 @@ from pathlib import Path
 
 from app.core.config import Settings
 from app.core.storage import LocalStorage
-from app.crud.assets import get_or_create_asset
+from app.crud.assets import get_or_create_asset, get_or_create_content
 from app.crud.clients import create_api_client
 from app.crud.jobs import create_job
 from app.db.models import Job
@@ -29,9 +29,8 @@ def make_job(settings: Settings, prompt: str = PEDAL_PROMPT, folder: Path = PEDA
     stored = storage.put_bytes(f"assets/{digest}.zip", data)
     with session_factory(settings.sqlalchemy_url)() as session:
         client, _ = create_api_client(session, name=f"test-{uuid.uuid4().hex[:6]}")
-        asset, _ = get_or_create_asset(
-            session, client=client, sha256=digest, filename=f"{folder.name}.zip", size_bytes=stored.size, storage_key=stored.key
-        )
+        content = get_or_create_content(session, sha256=digest, size_bytes=stored.size, storage_key=stored.key)
+        asset, _ = get_or_create_asset(session, client=client, content=content, filename=f"{folder.name}.zip", urdf="")
         job = create_job(session, client=client, asset=asset, prompt=prompt, options=options or {})
         return job.id
 

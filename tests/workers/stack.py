@@ -183,7 +183,7 @@ def start_worker(name: str, env: dict[str, str], log_dir: Path, *, concurrency: 
 
 
 def start_api(env: dict[str, str], log_dir: Path, name: str = "api") -> tuple[Service, str]:
-    """uvicorn serving ``app.main:create_app`` on a free loopback port; returns once /readyz answers 200."""
+    """uvicorn serving ``app.main:create_app`` on a free loopback port; returns once /readyz finds the database and broker."""
     port = free_port()
     command = [sys.executable, "-m", "uvicorn", "app.main:create_app", "--factory", "--host", "127.0.0.1", "--port", str(port), "--log-level", "warning"]
     api = spawn(name, command, env, log_dir)
@@ -193,7 +193,8 @@ def start_api(env: dict[str, str], log_dir: Path, name: str = "api") -> tuple[Se
         if not api.alive():
             raise AssertionError(f"API exited:\n{api.text()[-3000:]}")
         try:
-            return httpx.get(f"{url}/readyz", timeout=2).status_code == 200
+            checks = httpx.get(f"{url}/readyz", timeout=2).json().get("checks", {})
+            return checks.get("database") == "ok" and checks.get("broker") == "ok"  # workers start after the API
         except httpx.HTTPError:
             return False
 

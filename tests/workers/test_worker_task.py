@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import uuid
+from pathlib import Path
 
 import pytest
 from celery.exceptions import SoftTimeLimitExceeded, TimeLimitExceeded
@@ -13,7 +14,7 @@ from app.core.storage import LocalStorage
 from app.crud import jobs as crud_jobs
 from app.db.models import Job, JobStatus
 from app.db.session import session_factory
-from tests.workers.jobs import load_job, make_job
+from tests.workers.jobs import PEDAL_BIN, load_job, make_job
 from workers import tasks
 from workers.lease import job_lease
 from workers.observer import JobObserver
@@ -135,26 +136,30 @@ def test_unexpected_engine_error_fails_the_job(settings: Settings, monkeypatch: 
     assert job.error_kind == "InternalError" and job.error == "internal error: ZeroDivisionError: engine bug"
 
 
-def test_missing_asset_object_fails_the_job(settings: Settings) -> None:
-    job_id = make_job(settings)
-    job = load_job(settings, job_id)
-    with session_factory(settings.sqlalchemy_url)() as session:
-        from app.db.models import Asset
+@pytest.mark.parametrize("damage", ["delete", "truncate", "alter"])
+def test_a_missing_or_damaged_stored_asset_fails_the_job_as_a_storage_error(settings: Settings, tmp_path: Path, damage: str) -> None:
+    """Not the user's AssetError: the server lost the bytes (and says how to restore them)."""
+    import hashlib
+    import shutil
 
-        asset = session.get(Asset, job.asset_id)
-        assert asset is not None
-        original_key, asset.storage_key = asset.storage_key, "assets/missing.zip"
-        session.commit()
-    try:
-        assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
-        failed = load_job(settings, job_id)
-        assert failed.error_kind == "StorageError" and "assets/missing.zip" in (failed.error or "")
-    finally:
-        with session_factory(settings.sqlalchemy_url)() as session:
-            asset = session.get(Asset, job.asset_id)
-            assert asset is not None
-            asset.storage_key = original_key
-            session.commit()
+    from tests.workers import stack
+
+    folder = tmp_path / "bin"
+    shutil.copytree(PEDAL_BIN, folder)
+    (folder / "note.txt").write_text(f"{damage} {uuid.uuid4()}")  # content of its own: nothing shared with other tests
+    job_id = make_job(settings, folder=folder)
+    stored = settings.storage_dir / "assets" / f"{hashlib.sha256(stack.zip_folder(folder)).hexdigest()}.zip"
+    data = stored.read_bytes()
+    if damage == "delete":
+        stored.unlink()
+    elif damage == "truncate":
+        stored.write_bytes(data[: len(data) // 2])
+    else:
+        stored.write_bytes(data[:-40] + bytes(40))  # same size, other bytes
+    assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.failed
+    failed = load_job(settings, job_id)
+    assert failed.error_kind == "StorageError", failed.error
+    assert "upload the asset again" in (failed.error or "")
 
 
 def test_duplicate_delivery_while_leased_is_dropped(settings: Settings) -> None:
@@ -193,3 +198,74 @@ def test_hard_time_limit_kill_fails_the_job(settings: Settings) -> None:
     assert job.status == JobStatus.failed and job.error_kind == "TimeLimitExceeded"
     assert job.error == f"timed out: killed at the hard time limit of {settings.job_hard_time_limit_s} s"
     tasks._hard_time_limit(exception=ValueError("another failure"), args=(str(job_id),))  # ignored
+
+
+@pytest.mark.parametrize(
+    ("provider", "options", "says"),
+    [
+        ("openai", {"provider": "openai"}, "no API key for provider 'openai'"),
+        ("gemini", {"provider": "gemini", "perceiver_model": "../../../admin/delete?confirm=1#"}, "invalid perceiver model name"),
+    ],
+)
+def test_the_worker_sends_nothing_to_a_provider_for_a_bad_job(settings: Settings, monkeypatch: pytest.MonkeyPatch, provider: str,
+                                                              options: dict[str, str], says: str) -> None:
+    """Jobs stored before the API checked them (or written to the database directly) fail without a request."""
+    from tests.support.replay_server import replay_server
+
+    from app.core.config import get_settings
+
+    with replay_server({}) as (base_url, script):
+        monkeypatch.setenv("OPENAI_BASE_URL", base_url)
+        monkeypatch.setenv("GEMINI_BASE_URL", base_url)
+        if provider == "gemini":
+            monkeypatch.setenv("GEMINI_API_KEY", "server-secret")
+        get_settings.cache_clear()
+        job_id = make_job(settings, options=options)
+        assert execute_job(str(job_id), settings=get_settings(), worker="w1") is Outcome.failed
+        failed = load_job(settings, job_id)
+        assert failed.error_kind == "ProviderError" and says in (failed.error or "")
+        assert script.requests == []
+    get_settings.cache_clear()
+
+
+def test_a_cancel_interrupts_a_stage_that_would_never_end(settings: Settings, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Before: a DELETE during a long stage answered 202 and changed nothing until the stage ended."""
+    import threading
+    import time
+
+    import app.engine.pipeline
+    from workers import cancel_watch
+
+    monkeypatch.setattr(cancel_watch, "POLL_S", 0.1)
+    endless = threading.Event()
+
+    async def stuck_refine(*_args: object, **_kwargs: object) -> None:
+        deadline = time.monotonic() + 20
+        while not endless.is_set():  # a stage stuck in long work (an oversized asset, a slow model)
+            time.sleep(0.02)
+            if time.monotonic() > deadline:
+                raise RuntimeError("the stage was not interrupted")
+
+    monkeypatch.setattr(app.engine.pipeline, "refine", stuck_refine)
+    job_id = make_job(settings)
+
+    def cancel_when_refining() -> None:
+        stack_deadline = time.monotonic() + 30
+        while time.monotonic() < stack_deadline:
+            with session_factory(settings.sqlalchemy_url)() as session:
+                job = session.get(Job, job_id)
+                if job is not None and job.stage == "refine":
+                    crud_jobs.request_cancel(session, job=job)
+                    return
+            time.sleep(0.05)
+
+    canceller = threading.Thread(target=cancel_when_refining)
+    canceller.start()
+    try:
+        assert execute_job(str(job_id), settings=settings, worker="w1") is Outcome.cancelled
+    finally:
+        endless.set()
+        canceller.join()
+    done = load_job(settings, job_id)
+    assert done.status == JobStatus.cancelled and "cancelled while running" in (done.events[-1].message or "")
+    assert "animation.glb" not in {a.name for a in done.artifacts}

@@ -11,13 +11,22 @@ from fastapi import APIRouter, Query, Request, Response, status
 from fastapi.concurrency import run_in_threadpool
 from sqlalchemy.orm import Session
 
-from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep
+from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, StorageDep, release_connection
 from app.api.errors import Conflict, NotFound, Unprocessable, error_responses
-from app.api.forms import ASSET_FILES_SCHEMA, multipart_openapi, read_form, upload_folder, validate_fields
-from app.api.intake import asset_by_ref, store_upload
+from app.api.forms import (
+    ASSET_FILES_SCHEMA,
+    URDF_FIELD_SCHEMA,
+    multipart_openapi,
+    read_form,
+    upload_folder,
+    urdf_field,
+    validate_fields,
+)
+from app.api.intake import asset_by_ref, asset_with_urdf, store_upload
 from app.api.plan_jobs import PLAN_LABEL, accept_plan, take_plan_file
 from app.api.presenters import job_public, job_url
-from app.api.queue import Enqueuer, dispatch_jobs
+from app.api.queue import Enqueuer, check_job_quota, dispatch_jobs
+from app.core.config import Settings
 from app.crud import jobs as crud_jobs
 from app.db.models import ApiClient, Asset, Job, JobStatus
 from app.schemas.jobs import MAX_PROMPT_CHARS, JobAccepted, JobCreate, JobPublic, JobsPublic
@@ -33,6 +42,7 @@ SUBMIT_BODY = multipart_openapi(
     {
         "asset": ASSET_FILES_SCHEMA,
         "asset_ref": {"type": "string", "maxLength": 100, "description": "instead of files: an asset id or sha256 from POST /v1/assets"},
+        "urdf": URDF_FIELD_SCHEMA,
         "prompt": {"type": "string", "minLength": 1, "maxLength": MAX_PROMPT_CHARS},
         "plan": {"type": "string", "description": "instead of a prompt: a Plan.json to execute and export (text up to 64 KiB, or a file part)"},
         "provider": {**_TEXT, "description": "offline (default), openai or gemini"},
@@ -47,8 +57,9 @@ SUBMIT_BODY = multipart_openapi(
 ERRORS = error_responses(401, 404, 429)
 
 
-def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer,
+def _queue_job(session: Session, client: ApiClient, asset: Asset, spec: JobCreate, enqueue: Enqueuer, settings: Settings,
                plan_options: dict[str, Any]) -> Job:
+    check_job_quota(session, client=client, adding=1, limit=settings.max_active_jobs_per_client)
     prompt = spec.prompt or PLAN_LABEL
     job = crud_jobs.create_job(session, client=client, asset=asset, prompt=prompt, options={**spec.stored(), **plan_options})
     dispatch_jobs(session, [job], enqueue)
@@ -66,7 +77,7 @@ def _job_or_404(session: Session, job_id: uuid.UUID, client: ApiClient) -> Job:
     "",
     status_code=status.HTTP_202_ACCEPTED,
     response_model=JobAccepted,
-    responses=error_responses(401, 404, 413, 415, 422, 429, 503),
+    responses=error_responses(401, 404, 409, 413, 415, 422, 429, 503),
     openapi_extra=SUBMIT_BODY,
 )
 async def create_animation(
@@ -74,19 +85,25 @@ async def create_animation(
     storage: StorageDep, enqueue: EnqueuerDep,
 ) -> JobAccepted:
     """Submit an asset (file(s) or ``asset_ref``) and a prompt (or a ``plan`` to execute as is); poll the returned ``url``."""
+    await release_connection(session, client)
     async with upload_folder(settings) as folder:
         form = await read_form(request, settings, folder)
         take_plan_file(form)
         spec = validate_fields(JobCreate, form, JOB_FIELDS)
-        files, ref = form.files_of("asset"), (form.value("asset_ref") or "").strip()
+        if (missing := settings.missing_provider_key(spec.provider)) is not None:
+            raise Unprocessable(missing, field="provider")
+        files, ref, urdf = form.files_of("asset"), (form.value("asset_ref") or "").strip(), urdf_field(form)
         if files and ref:
             raise Unprocessable("send either asset file(s) or 'asset_ref', not both")
         if ref:
-            asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref))
+            asset = await run_in_threadpool(partial(asset_by_ref, session, client=client, ref=ref, any_urdf=urdf is not None))
+            if urdf is not None:
+                asset = await asset_with_urdf(asset, urdf, session=session, storage=storage, client=client, settings=settings)
         else:
-            asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client)
+            asset, _ = await store_upload(files, work=folder, session=session, storage=storage, client=client,
+                                          settings=settings, urdf=urdf)
     plan_options = {} if spec.plan is None else await run_in_threadpool(accept_plan, spec.plan, asset, storage, settings)
-    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue, plan_options)
+    job = await run_in_threadpool(_queue_job, session, client, asset, spec, enqueue, settings, plan_options)
     url = job_url(request, job.id)
     response.headers["Location"] = url
     logger.info("job %s queued for client %s", job.id, client.name)

@@ -10,9 +10,9 @@ from fastapi.responses import FileResponse
 from sqlalchemy.orm import Session
 
 from app.api.deps import ClientDep, SessionDep, StorageDep
-from app.api.errors import NotFound, error_responses
+from app.api.errors import DamagedData, NotFound, error_responses
 from app.api.presenters import keyframe_names, visible_artifacts
-from app.core.storage import Storage, StorageError
+from app.core.storage import Storage, StorageError, intact_local_path
 from app.crud import jobs as crud_jobs
 from app.db.models import ApiClient
 
@@ -24,7 +24,7 @@ ArtifactName = Literal[
 ]
 FILE_RESPONSES: dict[int | str, dict[str, Any]] = {
     200: {"content": {"application/octet-stream": {}}, "description": "the file, with its own content type"},
-    **error_responses(401, 404, 422, 429),
+    **error_responses(401, 404, 422, 429, 500),
 }
 
 
@@ -40,11 +40,15 @@ def _serve(session: Session, storage: Storage, client: ApiClient, job_id: uuid.U
         state = "has not finished" if not artifacts and not crud_jobs.is_terminal(job) else "has no such output"
         raise NotFound(f"{names[0]} is not available: job {job_id} is {job.status} and {state}", status=str(job.status))
     try:
-        path = storage.local_path(artifact.storage_key)
+        present = storage.local_path(artifact.storage_key).is_file()
     except StorageError as exc:
         raise NotFound(f"{artifact.name} is missing from storage") from exc
-    if not path.is_file():
+    if not present:
         raise NotFound(f"{artifact.name} is missing from storage")
+    try:  # verified on read: a file changed on disk is never served under its old sha256 ETag
+        path = intact_local_path(storage, artifact.storage_key, artifact.sha256, artifact.size_bytes)
+    except StorageError as exc:
+        raise DamagedData(f"{artifact.name} of job {job_id} is damaged in storage ({exc}); submit the job again") from exc
     filename = artifact.name.rsplit("/", 1)[-1]
     return FileResponse(path, media_type=artifact.content_type, filename=filename,
                         headers={"ETag": f'"{artifact.sha256}"', "Cache-Control": "private, max-age=3600"},

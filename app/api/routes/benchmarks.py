@@ -13,7 +13,7 @@ from app.api.deps import ClientDep, EnqueuerDep, SessionDep, SettingsDep, Storag
 from app.api.errors import NotFound, PayloadTooLarge, Unprocessable, error_responses
 from app.api.presenters import batch_public
 from app.api.queue import dispatch_jobs
-from app.crud.assets import get_asset_for_client
+from app.crud.assets import find_assets_for_client
 from app.crud.batches import BatchCase, create_batch, get_batch_for_client
 from app.engine.metrics.annotation import Case
 from app.schemas.batches import BatchPublic
@@ -48,7 +48,8 @@ def create_benchmark(
         raise Unprocessable("case_id values must be unique within a benchmark")
     cases = []
     for index, case in enumerate(body.cases):
-        asset = get_asset_for_client(session, client=client, ref=case.asset)
+        found = find_assets_for_client(session, client=client, ref=case.asset)
+        asset = found[0] if len(found) == 1 else None
         if asset is None:
             raise Unprocessable(f"cases[{index}].asset: no asset {case.asset!r} (upload it with POST /v1/assets first)", case=index)
         cases.append(BatchCase(asset=asset, prompt=case.prompt.strip(), case_id=case.case_id, options=body.options.stored()))

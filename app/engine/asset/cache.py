@@ -1,13 +1,15 @@
 """A disk cache of loaded assets, so a repeated run skips URDF parsing and mesh decoding.
 
 Entries are keyed by the asset's files (name, size, modification time of every file in a
-folder; the bytes of a zip) and stored as one ``.npz`` (arrays plus a JSON header, read with
+folder; the bytes of a zip) or by a content hash the caller already knows (the service's
+stored sha256), plus the chosen URDF, and stored as one ``.npz`` (arrays plus a JSON header, read with
 ``allow_pickle=False``). Reading an entry imports neither yourdfpy nor trimesh, which is
 most of a cold process's time.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import io
 import json
@@ -23,13 +25,17 @@ from app.engine.files import atomic_write_bytes
 
 logger = logging.getLogger(__name__)
 
-CACHE_VERSION = 2
+CACHE_VERSION = 4
 HEADER = "header"
 
 
-def cache_key(path: Path, name: str | None = None) -> str:
-    """Fingerprint of an asset folder (file names, sizes, mtimes) or zip (its bytes)."""
-    digest = hashlib.sha256(f"artimo-asset-cache:{CACHE_VERSION}:{name or ''}".encode())
+def cache_key(path: Path, urdf: str | None = None, content_hash: str | None = None) -> str:
+    """Fingerprint of an asset folder (file names, sizes, mtimes) or zip (its bytes), or of
+    ``content_hash`` when the caller knows it (then nothing is read); plus the chosen URDF."""
+    digest = hashlib.sha256(f"artimo-asset-cache:{CACHE_VERSION}:{urdf or ''}".encode())
+    if content_hash is not None:
+        digest.update(f"content:{content_hash}".encode())
+        return digest.hexdigest()
     source = path.resolve()
     if source.is_file():
         digest.update(source.read_bytes())
@@ -49,11 +55,16 @@ def _joint_record(joint: JointSpec) -> dict[str, Any]:
     }
 
 
+_PACKED = {"v": ("vertices", np.float64, 3), "f": ("faces", np.int64, 3), "n": ("normals", np.float64, 3), "u": ("uv", np.float64, 2)}
+"""Every part's array of one kind goes into one packed array (a few arrays per entry, whatever the part count:
+an npz member costs ~0.2 ms to open, and a PartNet pot has over a thousand parts)."""
+
+
 def _dump(asset: ArticulatedAsset) -> bytes:
     arrays: dict[str, np.ndarray] = {}
+    chunks: dict[str, list[np.ndarray]] = {key: [] for key in _PACKED}
     images: dict[bytes, int] = {}
     links = []
-    index = 0
     for name in asset.link_order:
         link = asset.links[name]
         parts = []
@@ -63,15 +74,16 @@ def _dump(asset: ArticulatedAsset) -> bytes:
                 image = images.setdefault(part.material.image_png, len(images))
             material = part.material
             parts.append({"source": part.source, "visual": part.visual, "normals": part.normals is not None, "uv": part.uv is not None,
+                          "counts": [len(part.vertices), len(part.faces)],
                           "material": [material.name, list(material.base_color), material.metallic, material.roughness, material.double_sided, image]})
-            arrays[f"v{index}"], arrays[f"f{index}"] = part.vertices, part.faces
-            if part.normals is not None:
-                arrays[f"n{index}"] = part.normals
-            if part.uv is not None:
-                arrays[f"u{index}"] = part.uv
-            index += 1
+            for key, (field, _, _) in _PACKED.items():
+                value = getattr(part, field)
+                if value is not None:
+                    chunks[key].append(value)
         semantics = link.semantics
         links.append({"name": name, "parts": parts, "semantics": [semantics.label, semantics.joint_kind, list(semantics.visual_names), semantics.source]})
+    for key, (_, dtype, width) in _PACKED.items():
+        arrays[key] = np.concatenate(chunks[key]).astype(dtype, copy=False) if chunks[key] else np.zeros((0, width), dtype=dtype)
     for data, number in images.items():
         arrays[f"img{number}"] = np.frombuffer(data, dtype=np.uint8)
     header = {
@@ -99,17 +111,25 @@ def _load(data: np.lib.npyio.NpzFile) -> ArticulatedAsset:
     header = json.loads(bytes(data[HEADER]).decode())
     if header.get("version") != CACHE_VERSION:
         raise ValueError("cache version mismatch")
+    packed = {key: data[key] for key in _PACKED}
+    offsets = dict.fromkeys(_PACKED, 0)
     links: dict[str, LinkSpec] = {}
-    index = 0
     for record in header["links"]:
         parts = []
         for part in record["parts"]:
             name, color, metallic, roughness, double_sided, image = part["material"]
             png = bytes(data[f"img{image}"]) if image >= 0 else None
             material = Material(name=name, base_color=tuple(color), image_png=png, metallic=metallic, roughness=roughness, double_sided=double_sided)
-            parts.append(MeshPart(vertices=data[f"v{index}"], faces=data[f"f{index}"], normals=data[f"n{index}"] if part["normals"] else None,
-                                  uv=data[f"u{index}"] if part["uv"] else None, material=material, source=part["source"], visual=part["visual"]))
-            index += 1
+            vertex_count, face_count = part["counts"]
+            taken: dict[str, np.ndarray | None] = {}
+            for key, count, present in (("v", vertex_count, True), ("f", face_count, True), ("n", vertex_count, part["normals"]),
+                                        ("u", vertex_count, part["uv"])):
+                taken[key] = packed[key][offsets[key]:offsets[key] + count] if present else None
+                offsets[key] += count if present else 0
+            vertices, faces = taken["v"], taken["f"]
+            assert vertices is not None and faces is not None
+            parts.append(MeshPart(vertices=vertices, faces=faces, normals=taken["n"], uv=taken["u"], material=material, source=part["source"],
+                                  visual=part["visual"]))
         label, kind, visuals, source = record["semantics"]
         links[record["name"]] = LinkSpec(name=record["name"], parts=tuple(parts), semantics=LinkSemantics(label=label, joint_kind=kind, visual_names=tuple(visuals), source=source))
     joints = {r["name"]: _joint(r) for r in header["joints"]}
@@ -118,14 +138,25 @@ def _load(data: np.lib.npyio.NpzFile) -> ArticulatedAsset:
                             warnings=tuple(header["warnings"]), content_hash=header["content_hash"])
 
 
-def _fresh(source: Path, limits: AssetLimits | None, name: str | None) -> ArticulatedAsset:
-    from app.engine.asset.loader import load_asset  # imports yourdfpy and trimesh: only on a miss
+def _fresh(source: Path, limits: AssetLimits | None, name: str | None, urdf: str | None) -> ArticulatedAsset:
+    from app.engine.asset.loader import load_asset  # imports the mesh readers: only on a miss
 
-    return load_asset(source, limits=limits, name=name)
+    return load_asset(source, limits=limits, name=name, urdf=urdf)
 
 
-def load_asset_cached(path: str | Path, cache_dir: Path | None, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+def _default_name(source: Path) -> str:
+    """The name :func:`load_asset` gives an asset when none is passed."""
+    return source.stem if source.is_file() else source.resolve().name
+
+
+def load_asset_cached(
+    path: str | Path, cache_dir: Path | None, *, limits: AssetLimits | None = None, name: str | None = None,
+    urdf: str | None = None, content_hash: str | None = None,
+) -> ArticulatedAsset:
     """``load_asset`` through the cache in ``cache_dir`` (no cache when ``None``).
+
+    ``content_hash``: the sha256 of ``path`` when the caller knows it (the entry is then found
+    without reading the file). The entry does not depend on ``name``: a hit is renamed.
 
     Raises
     ------
@@ -134,15 +165,17 @@ def load_asset_cached(path: str | Path, cache_dir: Path | None, *, limits: Asset
     """
     source = Path(path)
     if cache_dir is None or not source.exists():
-        return _fresh(source, limits, name)
-    entry = cache_dir / f"{cache_key(source, name)}.npz"
+        return _fresh(source, limits, name, urdf)
+    entry = cache_dir / f"{cache_key(source, urdf, content_hash)}.npz"
+    wanted = name or _default_name(source)
     if entry.is_file():
         try:
             with np.load(entry, allow_pickle=False) as data:
-                return _load(data)
+                cached = _load(data)
+            return cached if cached.name == wanted else dataclasses.replace(cached, name=wanted)
         except (OSError, ValueError, KeyError, json.JSONDecodeError) as exc:
             logger.warning("ignoring unreadable asset cache entry %s: %s", entry.name, exc)
-    asset = _fresh(source, limits, name)
+    asset = _fresh(source, limits, name, urdf)
     try:
         atomic_write_bytes(entry, _dump(asset))
     except OSError as exc:

@@ -7,6 +7,7 @@ import hashlib
 import logging
 import re
 import tempfile
+import zipfile
 from pathlib import Path
 
 import numpy as np
@@ -14,30 +15,35 @@ import yourdfpy
 
 from app.engine.asset.meshes import GeometryBudget, load_mesh_file, primitive_parts, resolve_mesh_path
 from app.engine.asset.model import ArticulatedAsset, LinkSemantics, LinkSpec, MeshPart
-from app.engine.asset.safety import AssetLimits, check_urdf_xml, extract_zip
-from app.engine.asset.urdf import parse_urdf
+from app.engine.asset.safety import AssetLimits, check_images, check_urdf_xml, extract_zip
+from app.engine.asset.urdf import check_transform, finite_numbers, parse_urdf
 from app.engine.errors import AssetError
+from app.engine.types import FloatArray
 
 logger = logging.getLogger(__name__)
 
-PREFERRED_URDF = "mobility.urdf"
 SEMANTICS_FILE = "semantics.txt"
 MACOS_METADATA_DIR = "__MACOSX"
 _VISUAL_SUFFIX = re.compile(r"[-_]?\d+$")
 
 
-def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str | None = None) -> ArticulatedAsset:
+def load_asset(
+    path: str | Path, *, limits: AssetLimits | None = None, name: str | None = None, urdf: str | None = None
+) -> ArticulatedAsset:
     """Load an asset directory or ``.zip`` archive.
 
     Parameters
     ----------
     path
-        Directory holding one ``.urdf`` (``mobility.urdf`` preferred) and its meshes,
-        or a ``.zip`` of such a directory.
+        Directory holding one ``.urdf`` and its meshes, or a ``.zip`` of such a directory.
     limits
         Size caps; defaults to :class:`AssetLimits`.
     name
-        Asset name; defaults to the directory name or zip stem.
+        Asset name; defaults to the directory name or zip stem. A zip is called ``<name>.zip``
+        in error messages (the service passes the client's name for its stored file).
+    urdf
+        Which ``.urdf`` to load when the folder holds several (its path inside the asset,
+        or its file name when that is unique); see :func:`find_urdf`.
 
     Raises
     ------
@@ -49,12 +55,13 @@ def load_asset(path: str | Path, *, limits: AssetLimits | None = None, name: str
     if not source.exists():
         raise AssetError("asset path does not exist", file=str(source))
     if source.is_file():
-        if source.suffix.lower() != ".zip":
-            raise AssetError("an asset must be a directory or a .zip archive", file=source.name)
+        shown = source.name if name is None else f"{name}.zip"
+        if source.suffix.lower() != ".zip" and not zipfile.is_zipfile(source):
+            raise AssetError("an asset must be a directory or a .zip archive", file=shown)
         with tempfile.TemporaryDirectory(prefix="artimo-asset-") as tmp:
-            extract_zip(source, Path(tmp), limits)
-            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=source.name)
-    return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name)
+            extract_zip(source, Path(tmp), limits, shown=shown)
+            return _load_directory(_archive_root(Path(tmp)), name or source.stem, limits, shown=shown, urdf=urdf)
+    return _load_directory(source, name or source.resolve().name, limits, shown=source.resolve().name, urdf=urdf)
 
 
 def _archive_root(extracted: Path) -> Path:
@@ -70,39 +77,98 @@ def _archive_root(extracted: Path) -> Path:
     return extracted
 
 
-def find_urdf(root: Path, *, shown: str | None = None) -> Path:
-    """The asset's URDF: the only ``.urdf`` under ``root``, or the shallowest ``mobility.urdf``.
+def find_urdf(root: Path, *, shown: str | None = None, requested: str | None = None) -> Path:
+    """The asset's URDF: the only ``.urdf`` under ``root``, or the one ``requested``.
 
-    ``shown`` names the asset in error messages (the upload's name; default ``root.name``).
+    ``requested`` is a path relative to ``root`` (``cap/mobility.urdf``), or a file name or
+    path ending that matches exactly one URDF. ``shown`` names the asset in error messages
+    (the upload's name; default ``root.name``).
 
     Raises
     ------
     AssetError
-        No URDF, or several without a ``mobility.urdf`` among them.
+        No URDF; several and none requested (the message lists them); a requested one
+        that matches none or several.
     """
-    found = sorted((p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file()), key=lambda p: (len(p.parts), str(p)))
-    found = [p for p in found if not p.is_symlink()]
-    if not found:
-        raise AssetError("no .urdf file in the asset", file=shown or root.name, element="*.urdf")
-    if len(found) == 1:
-        return found[0]
-    preferred = [p for p in found if p.name == PREFERRED_URDF]
-    if preferred:
-        return preferred[0]
-    names = ", ".join(str(p.relative_to(root)) for p in found)
-    raise AssetError(f"the asset holds several URDF files ({names}); keep one or name it {PREFERRED_URDF}", file=shown or root.name, element=names)
+    found = [p for p in root.rglob("*") if p.suffix.lower() == ".urdf" and p.is_file() and not p.is_symlink()]
+    names = [p.relative_to(root).as_posix() for p in found]
+    return root / choose_urdf(names, requested, shown or root.name)
 
 
-def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str) -> ArticulatedAsset:
+def urdf_in_zip(archive: Path, requested: str | None = None) -> str:
+    """:func:`find_urdf` on a zip's member list (nothing extracted): the chosen URDF's path inside the asset.
+
+    Raises
+    ------
+    AssetError
+        As :func:`find_urdf`, or an unreadable zip.
+    """
+    try:
+        with zipfile.ZipFile(archive) as zf:
+            members = [i.filename.replace("\\", "/") for i in zf.infolist() if not i.is_dir()]
+    except (zipfile.BadZipFile, OSError) as exc:
+        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name, element="central directory") from exc
+    members = [m.lstrip("/") for m in members if m.split("/", 1)[0] != MACOS_METADATA_DIR]
+    tops = {m.split("/", 1)[0] for m in members}
+    if len(tops) == 1 and all("/" in m for m in members):  # a zip of one folder: the folder is the asset root
+        members = [m.split("/", 1)[1] for m in members]
+    return choose_urdf([m for m in members if m.lower().endswith(".urdf")], requested, archive.name)
+
+
+def choose_urdf(names: list[str], requested: str | None, shown: str) -> str:
+    """One of ``names`` (URDF paths relative to the asset root): the only one, or the one ``requested``."""
+    names = sorted((n for n in names if MACOS_METADATA_DIR not in n.split("/")), key=lambda n: (n.count("/"), n))
+    if not names:
+        raise AssetError("no .urdf file in the asset", file=shown, element="*.urdf")
+    if requested is not None:
+        return _match_urdf(names, requested, shown)
+    if len(names) == 1:
+        return names[0]
+    raise AssetError(
+        f"the asset holds {len(names)} URDF files ({urdf_list(names)}); choose one with --urdf NAME "
+        "(artimo) or the 'urdf' field (API), or upload one asset at a time",
+        file=shown, element=urdf_list(names),
+    )
+
+
+MAX_LISTED_URDFS = 12
+
+
+def urdf_list(names: list[str]) -> str:
+    """``a.urdf, b.urdf`` (the first :data:`MAX_LISTED_URDFS`, then how many more)."""
+    shown = ", ".join(names[:MAX_LISTED_URDFS])
+    return shown if len(names) <= MAX_LISTED_URDFS else f"{shown} and {len(names) - MAX_LISTED_URDFS} more"
+
+
+def _match_urdf(names: list[str], requested: str, shown: str) -> str:
+    wanted = requested.strip().replace("\\", "/").strip("/")
+    while wanted.startswith("./"):
+        wanted = wanted[2:]
+    if wanted in names:
+        return wanted
+    ending = [n for n in names if n.endswith("/" + wanted)]
+    if len(ending) == 1:
+        return ending[0]
+    # the asset's own top folder named too (``bin/mobility.urdf`` for a zip of the folder ``bin``)
+    inner = [n for n in names if wanted.endswith("/" + n)]
+    if len(inner) == 1:
+        return inner[0]
+    problem = "matches several" if len(ending) > 1 or len(inner) > 1 else "matches none"
+    raise AssetError(f"the requested URDF {requested!r} {problem} of the asset's URDF files ({urdf_list(names)})",
+                     file=shown, element=requested[:200])
+
+
+def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str, urdf: str | None = None) -> ArticulatedAsset:
     root = root.resolve()
-    urdf_path = find_urdf(root, shown=shown)
-    urdf_name = str(urdf_path.relative_to(root))
+    urdf_path = find_urdf(root, shown=shown, requested=urdf)
+    urdf_name = urdf_path.relative_to(root).as_posix()
     data = urdf_path.read_bytes()
     check_urdf_xml(data, urdf_name, limits)
+    check_images(root, limits)
     parsed = parse_urdf(data, urdf_name)
     digest = hashlib.sha256(data)
     semantics = _read_semantics(urdf_path.parent, root)
-    budget = GeometryBudget(max_faces=limits.max_faces)
+    budget = GeometryBudget(max_faces=limits.max_faces, limits=limits)
     links: dict[str, LinkSpec] = {}
     for link in parsed.robot.links:
         parts = _link_parts(link, parsed.robot, urdf_path.parent, root, urdf_name, budget, digest)
@@ -154,7 +220,7 @@ def _link_parts(
     parts: list[MeshPart] = []
     for index, visual in enumerate(link.visuals):
         element = f"link {link.name} visual {visual.name or index}"
-        origin = np.eye(4) if visual.origin is None else np.asarray(visual.origin, dtype=np.float64)
+        origin = np.eye(4) if visual.origin is None else check_transform(visual.origin, "origin", file=urdf_name, element=element)
         rgba = _visual_rgba(visual, robot)
         geometry = visual.geometry
         label = f"{link.name}_{index}"
@@ -162,18 +228,19 @@ def _link_parts(
             raise AssetError("visual has no geometry", file=urdf_name, element=element)
         if geometry.mesh is not None:
             mesh_path = resolve_mesh_path(geometry.mesh.filename or "", urdf_dir, root, urdf_name=urdf_name, element=element)
-            scale = np.ones(3) if geometry.mesh.scale is None else np.broadcast_to(np.asarray(geometry.mesh.scale, dtype=np.float64), (3,))
+            scale = _mesh_scale(geometry.mesh.scale, urdf_name, element)
             transform = origin @ np.diag([*scale, 1.0])
             digest.update(str(mesh_path.relative_to(root)).encode())
             digest.update(mesh_path.read_bytes())
             parts.extend(_named(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label), visual.name or ""))
         elif geometry.box is not None:
-            parts.extend(_named(primitive_parts("box", np.asarray(geometry.box.size, dtype=np.float64), origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
+            size = finite_numbers(geometry.box.size, 3, "box size", file=urdf_name, element=element)
+            parts.extend(_named(primitive_parts("box", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         elif geometry.cylinder is not None:
-            size = np.array([geometry.cylinder.radius, geometry.cylinder.length], dtype=np.float64)
+            size = finite_numbers([geometry.cylinder.radius, geometry.cylinder.length], 2, "cylinder radius/length", file=urdf_name, element=element)
             parts.extend(_named(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         elif geometry.sphere is not None:
-            size = np.array([geometry.sphere.radius], dtype=np.float64)
+            size = finite_numbers([geometry.sphere.radius], 1, "sphere radius", file=urdf_name, element=element)
             parts.extend(_named(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
         else:
             raise AssetError("visual geometry is empty", file=urdf_name, element=element)
@@ -182,6 +249,20 @@ def _link_parts(
 
 def _named(parts: list[MeshPart], visual: str) -> list[MeshPart]:
     return [dataclasses.replace(part, visual=visual) for part in parts]
+
+
+MIN_SCALE = 1e-9
+
+
+def _mesh_scale(raw: object, urdf_name: str, element: str) -> FloatArray:
+    """A mesh's ``scale`` as three finite, non-zero factors (one number means all three)."""
+    if raw is None:
+        return np.ones(3)
+    values = np.asarray(raw, dtype=np.float64).reshape(-1)
+    scale = finite_numbers(values if values.size != 1 else np.repeat(values, 3), 3, "mesh scale", file=urdf_name, element=element)
+    if np.any(np.abs(scale) < MIN_SCALE):
+        raise AssetError(f"mesh scale {scale.tolist()} has a zero factor", file=urdf_name, element=element)
+    return scale
 
 
 def _read_semantics(urdf_dir: Path, root: Path) -> dict[str, tuple[str, str]]:

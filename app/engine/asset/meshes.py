@@ -18,8 +18,9 @@ import trimesh
 import trimesh.resolvers
 from PIL import Image
 
+from app.engine.asset.face_count import least_faces
 from app.engine.asset.model import Material, MeshPart
-from app.engine.asset.safety import confine
+from app.engine.asset.safety import AssetLimits, check_image, confine
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray, Transform
 
@@ -35,10 +36,13 @@ DEFAULT_RGBA = (0.8, 0.8, 0.8, 1.0)
 class _ConfinedResolver(trimesh.resolvers.Resolver):
     """Resolve names relative to a mesh file's folder, never outside ``root``."""
 
-    def __init__(self, mesh_file: Path, root: Path, report: list[str]) -> None:
+    def __init__(self, mesh_file: Path, root: Path, report: list[str], limits: AssetLimits | None = None) -> None:
         self.parent = mesh_file.parent
         self.root = root
         self.report = report
+        self.limits = limits or AssetLimits()
+        self.refused: list[AssetError] = []
+        """Files refused here; trimesh swallows errors while reading textures, so the caller re-raises these."""
 
     def get(self, name: str) -> bytes:
         candidate = (self.parent / name.strip().replace("\\", "/")).resolve()
@@ -48,13 +52,21 @@ class _ConfinedResolver(trimesh.resolvers.Resolver):
         if not candidate.is_file():
             self.report.append(f"'{name}' is missing")
             raise FileNotFoundError(name)
-        return candidate.read_bytes()
+        data = candidate.read_bytes()
+        try:
+            check_image(data, str(candidate.relative_to(self.root)), self.limits)  # a texture under any name: header first
+        except AssetError as exc:
+            self.refused.append(exc)
+            raise
+        return data
 
     def write(self, name: str, data: bytes | str) -> None:  # noqa: ARG002 - trimesh's Resolver signature
         raise PermissionError("the asset resolver is read-only")
 
     def namespaced(self, namespace: str) -> _ConfinedResolver:
-        return _ConfinedResolver(self.parent / namespace / "_", self.root, self.report)
+        nested = _ConfinedResolver(self.parent / namespace / "_", self.root, self.report, self.limits)
+        nested.refused = self.refused
+        return nested
 
     def keys(self) -> Iterator[str]:  # pragma: no cover - trimesh only uses it for zips
         return iter(())
@@ -67,11 +79,17 @@ class GeometryBudget:
     max_faces: int
     faces: int = 0
     warnings: list[str] = field(default_factory=list)
+    limits: AssetLimits = field(default_factory=AssetLimits)
 
     def spend(self, faces: int, file: str) -> None:
         self.faces += faces
         if self.faces > self.max_faces:
             raise AssetError(f"asset has more than {self.max_faces} triangles", file=file)
+
+    def check_ahead(self, at_least: int, file: str) -> None:
+        """Refuse a mesh before reading it when its header or lines already say it has too many faces."""
+        if self.faces + at_least > self.max_faces:
+            raise AssetError(f"asset has more than {self.max_faces} triangles ({file} alone has at least {at_least})", file=file)
 
 
 def resolve_mesh_path(filename: str, urdf_dir: Path, root: Path, *, urdf_name: str, element: str) -> Path:
@@ -182,6 +200,25 @@ def _scene_meshes(scene: trimesh.Scene) -> Iterator[tuple[trimesh.Trimesh, Trans
             yield geometry, np.asarray(transform, dtype=np.float64)
 
 
+MAX_COORDINATE_M = 1e4
+"""Largest |vertex coordinate| accepted in the link frame, metres (as URDF positions)."""
+
+
+def _check_vertices(vertices: FloatArray, relative: str) -> None:
+    """Every vertex finite and within :data:`MAX_COORDINATE_M` (NaN breaks everything downstream)."""
+    if vertices.size and (not np.all(np.isfinite(vertices)) or float(np.abs(vertices).max()) > MAX_COORDINATE_M):
+        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1) | (np.abs(vertices) > MAX_COORDINATE_M).any(axis=1))[0])
+        raise AssetError(f"mesh vertex {bad} is NaN, infinite or farther than {MAX_COORDINATE_M:g} m "
+                         f"({vertices[bad].tolist()})", file=relative, element=f"vertex {bad}")
+
+
+def _check_numbers(part: MeshPart, relative: str) -> None:
+    """The part's vertices (after scale and origin) and uvs: finite and bounded."""
+    _check_vertices(part.vertices, relative)
+    if part.uv is not None and not np.all(np.isfinite(part.uv)):
+        raise AssetError("mesh texture coordinates hold NaN or infinite values", file=relative, element="vt")
+
+
 def load_mesh_file(
     path: Path,
     root: Path,
@@ -201,15 +238,20 @@ def load_mesh_file(
     relative = str(path.relative_to(root))
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise AssetError(f"unsupported mesh format '{path.suffix}'", file=relative)
+    budget.check_ahead(least_faces(path), relative)
     report: list[str] = []
-    resolver = _ConfinedResolver(path, root, report)
+    resolver = _ConfinedResolver(path, root, report, budget.limits)
     try:
         with open(path, "rb") as handle:
             scene = trimesh.load(handle, file_type=path.suffix.lower().lstrip("."), resolver=resolver, force="scene", process=False)
     except AssetError:
         raise
     except Exception as exc:  # trimesh raises many unrelated types on corrupt files
+        if resolver.refused:
+            raise resolver.refused[0] from exc
         raise AssetError(f"cannot read mesh: {type(exc).__name__}: {exc}", file=relative) from exc
+    if resolver.refused:
+        raise resolver.refused[0]
     escapes = [r for r in report if "escapes" in r]
     if escapes:
         names = "; ".join(r.removesuffix(" escapes the asset directory") for r in escapes)
@@ -220,8 +262,11 @@ def load_mesh_file(
         raise AssetError("mesh did not load as a scene", file=relative)
     for index, (mesh, node_transform) in enumerate(_scene_meshes(scene)):
         budget.spend(len(mesh.faces), relative)
+        _check_vertices(np.asarray(mesh.vertices, dtype=np.float64), relative)  # before any arithmetic on them
         material, uv = _material_of(mesh, fallback_rgba, f"{label}_{index}")
-        parts.append(_part(mesh, transform @ node_transform, material, uv, relative))
+        part = _part(mesh, transform @ node_transform, material, uv, relative)
+        _check_numbers(part, relative)
+        parts.append(part)
     if not parts:
         raise AssetError("mesh has no triangles", file=relative)
     return parts
@@ -240,6 +285,8 @@ def primitive_parts(
     """Build a URDF primitive (``box`` size xyz; ``cylinder`` radius, length; ``sphere`` radius)."""
     if np.any(~np.isfinite(size)) or np.any(size <= 0):
         raise AssetError(f"{kind} has a non-positive size {size.tolist()}", file=urdf_name, element=label)
+    if np.any(size > MAX_COORDINATE_M):
+        raise AssetError(f"{kind} size {size.tolist()} is larger than {MAX_COORDINATE_M:g} m", file=urdf_name, element=label)
     if kind == "box":
         mesh = trimesh.creation.box(extents=size)
     elif kind == "cylinder":

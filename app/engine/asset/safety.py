@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import stat
 import zipfile
 from dataclasses import dataclass
@@ -24,9 +25,14 @@ class AssetLimits:
     max_compression_ratio: float = 200.0
     """Largest uncompressed/compressed ratio of one member (zip-bomb guard)."""
     max_urdf_bytes: int = 16 * 1024 * 1024
-    max_faces: int = 4_000_000
-    """Most triangles over all visual meshes of the asset."""
+    max_faces: int = 2_000_000
+    """Most triangles over all visual meshes of the asset (PartNet-Mobility's largest: ~11k)."""
     max_xml_depth: int = 64
+    max_links: int = 257
+    """Most ``<link>`` elements (PartNet-Mobility's largest: 15; a keyboard has ~100)."""
+    max_joints: int = 256
+    max_texture_pixels: int = 4096 * 4096
+    """Largest texture image, width x height, checked from its header before it is decoded."""
 
 
 def _member_problem(info: zipfile.ZipInfo) -> str | None:
@@ -42,8 +48,10 @@ def _member_problem(info: zipfile.ZipInfo) -> str | None:
     return None
 
 
-def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
+def extract_zip(archive: Path, target: Path, limits: AssetLimits, *, shown: str | None = None) -> None:
     """Extract ``archive`` into the empty directory ``target`` after checking every member.
+
+    ``shown`` names the archive in error messages (default: its file name).
 
     Raises
     ------
@@ -51,35 +59,36 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
         Broken zip, zip slip (``..``, absolute paths, symlinks), too many files,
         too large in total or a member with an implausible compression ratio.
     """
+    shown = shown or archive.name
     try:
         zf = zipfile.ZipFile(archive)
     except (zipfile.BadZipFile, OSError) as exc:
-        raise AssetError(f"not a readable zip archive: {exc}", file=archive.name, element="central directory") from exc
+        raise AssetError(f"not a readable zip archive: {exc}", file=shown, element="central directory") from exc
     with zf:
         infos = zf.infolist()
         if len(infos) > limits.max_files:
             raise AssetError(
                 f"zip holds {len(infos)} members, more than the limit of {limits.max_files}",
-                file=archive.name,
+                file=shown,
                 element=infos[limits.max_files].filename,
             )
         total = 0
         for info in infos:
             problem = _member_problem(info)
             if problem:
-                raise AssetError(f"unsafe zip member: {problem}", file=archive.name, element=info.filename)
+                raise AssetError(f"unsafe zip member: {problem}", file=shown, element=info.filename)
             total += info.file_size
             if total > limits.max_total_bytes:
                 raise AssetError(
                     f"zip expands to more than the limit of {limits.max_total_bytes} bytes",
-                    file=archive.name,
+                    file=shown,
                     element=info.filename,
                 )
             if info.compress_size > 0 and info.file_size / info.compress_size > limits.max_compression_ratio:
                 raise AssetError(
                     "zip member expands more than "
                     f"{limits.max_compression_ratio:.0f}x (zip bomb?)",
-                    file=archive.name,
+                    file=shown,
                     element=info.filename,
                 )
         root = target.resolve()
@@ -87,7 +96,7 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
         for info in infos:
             dest = (root / info.filename).resolve()
             if not dest.is_relative_to(root):
-                raise AssetError("unsafe zip member: path escapes the archive root", file=archive.name, element=info.filename)
+                raise AssetError("unsafe zip member: path escapes the archive root", file=shown, element=info.filename)
             if info.is_dir():
                 dest.mkdir(parents=True, exist_ok=True)
                 continue
@@ -97,10 +106,10 @@ def extract_zip(archive: Path, target: Path, limits: AssetLimits) -> None:
                     while chunk := src.read(1 << 20):
                         written += len(chunk)
                         if written > limits.max_total_bytes:
-                            raise AssetError("zip expands beyond its declared size", file=archive.name, element=info.filename)
+                            raise AssetError("zip expands beyond its declared size", file=shown, element=info.filename)
                         out.write(chunk)
             except (zipfile.BadZipFile, OSError, EOFError) as exc:
-                raise AssetError(f"corrupt zip member: {exc}", file=archive.name, element=info.filename) from exc
+                raise AssetError(f"corrupt zip member: {exc}", file=shown, element=info.filename) from exc
 
 
 def check_urdf_xml(data: bytes, file_name: str, limits: AssetLimits) -> None:
@@ -124,6 +133,45 @@ def check_urdf_xml(data: bytes, file_name: str, limits: AssetLimits) -> None:
     depth = _depth(root)
     if depth > limits.max_xml_depth:
         raise AssetError(f"URDF nests {depth} levels deep, more than {limits.max_xml_depth}", file=file_name)
+    for tag, most in (("link", limits.max_links), ("joint", limits.max_joints)):
+        count = len(root.findall(tag))
+        if count > most:
+            raise AssetError(f"URDF has {count} <{tag}> elements, more than the limit of {most}", file=file_name, element=tag)
+
+
+IMAGE_SUFFIXES = frozenset({".png", ".jpg", ".jpeg", ".bmp", ".tga", ".gif", ".tif", ".tiff", ".webp"})
+
+
+def check_image(data: bytes | Path, name: str, limits: AssetLimits) -> None:
+    """Refuse an image larger than ``limits.max_texture_pixels`` from its header (nothing decoded).
+
+    Data that is not an image passes (another reader will judge it).
+
+    Raises
+    ------
+    AssetError
+        Too many pixels.
+    """
+    from PIL import Image, UnidentifiedImageError
+
+    try:
+        with Image.open(io.BytesIO(data) if isinstance(data, bytes) else data) as image:
+            width, height = image.size
+    except Image.DecompressionBombError as exc:
+        raise AssetError(f"image is far larger than the limit of {limits.max_texture_pixels} pixels ({exc})",
+                         file=name, element="texture") from exc
+    except (UnidentifiedImageError, OSError, ValueError):
+        return
+    if width * height > limits.max_texture_pixels:
+        raise AssetError(f"image is {width} x {height} pixels, more than the limit of {limits.max_texture_pixels}",
+                         file=name, element="texture")
+
+
+def check_images(root: Path, limits: AssetLimits) -> None:
+    """:func:`check_image` on every image file of an asset folder (by suffix), before any mesh is read."""
+    for path in sorted(root.rglob("*")):
+        if path.suffix.lower() in IMAGE_SUFFIXES and path.is_file() and not path.is_symlink():
+            check_image(path, str(path.relative_to(root)), limits)
 
 
 def _depth(element: object) -> int:

@@ -17,9 +17,45 @@ from lxml import etree
 
 from app.engine.asset.model import JointSpec, Mimic
 from app.engine.errors import AssetError
+from app.engine.types import FloatArray
 
 AXIS_EPS = 1e-9
 DEFAULT_AXIS = (1.0, 0.0, 0.0)  # URDF default when <axis> is absent
+MAX_COORDINATE_M = 1e4
+"""Largest position, size or joint limit accepted (metres or radians): 10 km. Larger values
+are typos or attacks, and overflow the geometry computed from them."""
+MAX_MULTIPLIER = 1e3
+"""Largest |mimic multiplier|."""
+
+
+def finite_numbers(values: object, count: int, what: str, *, file: str, element: str, bound: float = MAX_COORDINATE_M) -> FloatArray:
+    """``values`` as ``count`` finite floats no larger than ``bound`` in magnitude.
+
+    Raises
+    ------
+    AssetError
+        Another count, NaN, infinity or a value past ``bound``, naming ``what``.
+    """
+    try:
+        array = np.asarray(values, dtype=np.float64).reshape(-1)
+    except (TypeError, ValueError) as exc:
+        raise AssetError(f"{what} is not a list of numbers", file=file, element=element) from exc
+    if array.shape != (count,):
+        raise AssetError(f"{what} needs {count} numbers, got {array.size}", file=file, element=element)
+    if not np.all(np.isfinite(array)):
+        raise AssetError(f"{what} holds a NaN or infinite value {array.tolist()}", file=file, element=element)
+    if np.any(np.abs(array) > bound):
+        raise AssetError(f"{what} {array.tolist()} is larger than {bound:g} in magnitude", file=file, element=element)
+    return array
+
+
+def check_transform(matrix: object, what: str, *, file: str, element: str) -> FloatArray:
+    """A (4, 4) rigid transform with a finite rotation and a bounded translation."""
+    transform = np.asarray(matrix, dtype=np.float64)
+    if transform.shape != (4, 4) or not np.all(np.isfinite(transform)):
+        raise AssetError(f"{what} is not a finite transform (NaN or infinite xyz/rpy)", file=file, element=element)
+    finite_numbers(transform[:3, 3], 3, f"{what} xyz", file=file, element=element)
+    return transform
 
 
 @dataclass(frozen=True)
@@ -40,9 +76,10 @@ def parse_urdf(data: bytes, file_name: str) -> ParsedUrdf:
         Any structural problem, naming the file and the joint or link.
     """
     try:
-        urdf = yourdfpy.URDF.load(
-            io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
-        )
+        with np.errstate(invalid="ignore", over="ignore"):  # NaN/inf in the text: rejected below, without warnings
+            urdf = yourdfpy.URDF.load(
+                io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
+            )
         robot = urdf.robot
     except (etree.XMLSyntaxError, ValueError, TypeError, AttributeError, KeyError, IndexError) as exc:
         raise AssetError(f"cannot parse URDF: {type(exc).__name__}: {exc}", file=file_name) from exc
@@ -76,33 +113,43 @@ def _joint_spec(joint: yourdfpy.Joint, robot: yourdfpy.Robot, file_name: str) ->
     for role, link in (("parent", joint.parent), ("child", joint.child)):
         if link not in link_names:
             raise AssetError(f"{role} link '{link}' is not defined", file=file_name, element=element)
-    origin = np.eye(4) if joint.origin is None else np.asarray(joint.origin, dtype=np.float64)
-    if origin.shape != (4, 4) or not np.all(np.isfinite(origin)):
-        raise AssetError("origin is not a finite transform", file=file_name, element=element)
+    origin = check_transform(np.eye(4) if joint.origin is None else joint.origin, "origin", file=file_name, element=element)
     axis = np.zeros(3)
     if joint.type != "fixed":
-        raw = np.asarray(DEFAULT_AXIS if joint.axis is None else joint.axis, dtype=np.float64)
+        raw = finite_numbers(DEFAULT_AXIS if joint.axis is None else joint.axis, 3, "axis", file=file_name, element=element)
         norm = float(np.linalg.norm(raw))
-        if not np.isfinite(norm) or norm < AXIS_EPS:
-            raise AssetError("axis is zero or not finite", file=file_name, element=element)
+        if norm < AXIS_EPS:
+            raise AssetError("axis is zero", file=file_name, element=element)
         axis = raw / norm
-    lower = upper = None
+    lower: float | None = None
+    upper: float | None = None
     limit = joint.limit
     if joint.type in ("revolute", "prismatic"):
         if limit is None:
             raise AssetError(f"{joint.type} joint has no <limit>", file=file_name, element=element)
         if limit.lower is None or limit.upper is None:
             raise AssetError(f"{joint.type} joint <limit> lacks lower or upper", file=file_name, element=element)
-        lower, upper = float(limit.lower), float(limit.upper)
-        if not (np.isfinite(lower) and np.isfinite(upper)) or lower > upper:
+        bounds = finite_numbers([limit.lower, limit.upper], 2, "limit lower/upper", file=file_name, element=element)
+        lower, upper = float(bounds[0]), float(bounds[1])
+        if lower > upper:
             raise AssetError(f"limit lower={lower} upper={upper} is not a valid range", file=file_name, element=element)
+    effort = velocity = None
+    if limit is not None:
+        for name, value in (("effort", limit.effort), ("velocity", limit.velocity)):
+            if value is not None:
+                (number,) = finite_numbers([value], 1, f"limit {name}", file=file_name, element=element, bound=float("inf"))
+                if number < 0:
+                    raise AssetError(f"limit {name} {number} is negative", file=file_name, element=element)
+        effort = None if limit.effort is None else float(limit.effort)
+        velocity = None if limit.velocity is None else float(limit.velocity)
     mimic = None
     if joint.mimic is not None:
-        mimic = Mimic(
-            joint=str(joint.mimic.joint),
-            multiplier=float(1.0 if joint.mimic.multiplier is None else joint.mimic.multiplier),
-            offset=float(0.0 if joint.mimic.offset is None else joint.mimic.offset),
-        )
+        multiplier, offset = finite_numbers(
+            [1.0 if joint.mimic.multiplier is None else joint.mimic.multiplier, 0.0 if joint.mimic.offset is None else joint.mimic.offset],
+            2, "mimic multiplier/offset", file=file_name, element=element)
+        if abs(multiplier) > MAX_MULTIPLIER:
+            raise AssetError(f"mimic multiplier {multiplier} is larger than {MAX_MULTIPLIER:g}", file=file_name, element=element)
+        mimic = Mimic(joint=str(joint.mimic.joint), multiplier=float(multiplier), offset=float(offset))
     origin.setflags(write=False)
     axis.setflags(write=False)
     return JointSpec(
@@ -114,8 +161,8 @@ def _joint_spec(joint: yourdfpy.Joint, robot: yourdfpy.Robot, file_name: str) ->
         axis=axis,
         lower=lower,
         upper=upper,
-        effort=None if limit is None or limit.effort is None else float(limit.effort),
-        velocity=None if limit is None or limit.velocity is None else float(limit.velocity),
+        effort=effort,
+        velocity=velocity,
         mimic=mimic,
     )
 

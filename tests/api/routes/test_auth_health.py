@@ -63,10 +63,29 @@ def test_rate_limit_is_shared_through_redis(settings, make_caller) -> None:
     assert codes == [200, 200, 429]
 
 
-def test_health_routes_need_no_key(http) -> None:
+def test_health_routes_need_no_key(http, db) -> None:
+    from app.crud.workers import record_heartbeat
+
     assert http.get("/healthz").json() == {"status": "ok"}
+    record_heartbeat(db, name="test-worker@here", concurrency=1)
     ready = http.get("/readyz")
-    assert ready.status_code == 200 and ready.json()["checks"] == {"database": "ok", "broker": "ok"}
+    assert ready.status_code == 200 and ready.json()["checks"] == {"database": "ok", "workers": "ok", "broker": "ok"}
+
+
+def test_readyz_is_503_when_no_worker_can_run_jobs(http, db, settings) -> None:
+    """Jobs would wait forever: not ready (the supervisor gave up, or no worker was ever started)."""
+    from datetime import timedelta
+
+    from app.crud.workers import record_heartbeat, remove_heartbeat
+    from app.db.models import utcnow
+
+    record_heartbeat(db, name="test-worker@here", concurrency=1, now=utcnow() - timedelta(seconds=settings.worker_stale_after_s + 5))
+    response = http.get("/readyz")
+    assert response.status_code == 503 and response.json()["checks"]["workers"].startswith("no live worker (last seen")
+    record_heartbeat(db, name="test-worker@here", concurrency=1)
+    assert http.get("/readyz").status_code == 200
+    remove_heartbeat(db, name="test-worker@here")
+    assert http.get("/readyz").status_code == 503
 
 
 def test_readyz_is_503_when_the_broker_is_down(settings) -> None:
@@ -90,10 +109,11 @@ def test_readyz_is_503_when_the_database_is_down(settings) -> None:
         assert http.get("/v1/animations", headers={"Authorization": "Bearer x"}).status_code == 503
 
 
-def test_metrics_count_requests_by_route_and_jobs_by_status(http, alice) -> None:
+def test_metrics_count_requests_by_route_and_jobs_by_status(app, http, alice) -> None:
     http.get("/v1/animations", headers=alice.headers)
     http.get("/v1/animations/00000000-0000-0000-0000-000000000000", headers=alice.headers)
-    text = http.get("/metrics").text
+    with TestClient(app, client=("127.0.0.1", 40000)) as local:  # no METRICS_TOKEN: loopback only
+        text = local.get("/metrics").text
     assert 'artimo_http_requests_total{method="GET",route="/v1/animations",status="200"}' in text
     assert 'route="/v1/animations/{job_id}",status="404"' in text
     assert 'artimo_jobs{status="queued"}' in text

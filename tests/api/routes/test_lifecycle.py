@@ -60,11 +60,12 @@ def test_cancelled_before_the_worker_starts(http, alice, settings, sent) -> None
 
 def test_client_library_against_the_app(http, alice, settings, sent, tmp_path) -> None:
     from app.client import ArtimoClient, ClientError
+    from tests.support.app_transport import TestClientTransport
 
     folder = tmp_path / "hinge"
     folder.mkdir()
     (folder / "mobility.urdf").write_text(assets.hinge_urdf(name="hinge-client"))
-    with ArtimoClient("http://testserver", alice.key, transport=http._transport) as client:
+    with ArtimoClient("http://testserver", alice.key, transport=TestClientTransport(http)) as client:
         job = client.submit(folder, "open the lid", fps=24)
         tasks.execute_job(str(sent[-1]), settings=settings, worker="inline-test")
         final = client.wait(job["id"], timeout=5, poll=0.05)
@@ -88,3 +89,26 @@ def _bad_asset(tmp_path: Path) -> Path:
     path = tmp_path / name
     path.write_bytes(data)
     return path
+
+
+def test_a_job_uses_what_the_upload_computed_and_the_returned_report(http, alice, settings, sent, monkeypatch) -> None:
+    """The worker neither loads nor summarises the uploaded asset again, and takes its timings from
+    run_pipeline's result (report.json is not read back)."""
+    response = submit(http, alice.headers, prompt="open the lid", upload=assets.hinge_zip("-once"))
+    assert response.status_code == 202, response.text
+
+    def refuse(*_args: object, **_kwargs: object) -> None:
+        raise AssertionError("computed a second time")
+
+    import app.engine.asset.loader
+    import app.engine.asset.stored
+    import app.engine.pipeline
+
+    monkeypatch.setattr(app.engine.asset.loader, "load_asset", refuse)
+    monkeypatch.setattr(app.engine.asset.stored, "joint_summary", refuse)
+    monkeypatch.setattr(app.engine.asset.stored, "scale_context", refuse)
+    monkeypatch.setattr(app.engine.pipeline, "write_report", lambda *_args: None)  # no report.json on disk
+    outcome = tasks.execute_job(str(sent[0]), settings=settings, worker="inline-test")
+    job = http.get(response.json()["url"], headers=alice.headers).json()
+    assert outcome.value == "succeeded", job
+    assert job["timings"]["total"] > 0 and {"load_asset", "perceive", "export"} <= set(job["timings"])

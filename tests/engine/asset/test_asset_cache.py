@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import shutil
 from pathlib import Path
@@ -51,7 +52,23 @@ def test_cache_key_changes_with_the_files(tmp_path: Path, examples_dir: Path) ->
     urdf = next(copy.glob("*.urdf"))
     os.utime(urdf, ns=(urdf.stat().st_atime_ns, urdf.stat().st_mtime_ns + 1_000_000))
     assert cache_key(copy) != before
-    assert cache_key(copy, "other-name") != cache_key(copy)
+    assert cache_key(copy, urdf="other.urdf") != cache_key(copy)
+    assert cache_key(copy, content_hash="ab" * 32) == cache_key(tmp_path / "elsewhere", content_hash="ab" * 32)
+
+
+def test_a_known_content_hash_finds_the_entry_without_reading_and_names_the_asset(tmp_path: Path, examples_dir: Path) -> None:
+    import zipfile
+
+    archive = tmp_path / "bin.zip"
+    with zipfile.ZipFile(archive, "w") as zf:
+        for file in sorted((examples_dir / "pedal_bin").rglob("*")):
+            zf.write(file, f"pedal_bin/{file.relative_to(examples_dir / 'pedal_bin')}")
+    cache = tmp_path / "cache"
+    first = load_asset_cached(archive, cache, name="alice-bin", content_hash="cd" * 32)
+    archive.write_bytes(b"not read on a hit")
+    second = load_asset_cached(archive, cache, name="bob-bin", content_hash="cd" * 32)
+    assert (first.name, second.name) == ("alice-bin", "bob-bin")
+    _same(first, dataclasses.replace(second, name="alice-bin"))
 
 
 def test_corrupt_entry_is_ignored(tmp_path: Path, examples_dir: Path) -> None:

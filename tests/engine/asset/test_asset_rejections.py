@@ -20,10 +20,12 @@ URDF = "mobility.urdf"
 HINGE = two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)))
 
 
-def rejected(path: Path, file: str, element: str, *, limits: AssetLimits | None = None, says: str = "") -> AssetError:
+def rejected(
+    path: Path, file: str, element: str, *, limits: AssetLimits | None = None, says: str = "", urdf: str | None = None
+) -> AssetError:
     """Load ``path``, expect an AssetError whose message names ``file`` and ``element``."""
     with pytest.raises(AssetError) as caught:
-        load_asset(path, limits=limits)
+        load_asset(path, limits=limits, urdf=urdf)
     error = caught.value
     message = str(error)
     assert error.file == file, message
@@ -308,12 +310,12 @@ def test_duplicate_joint_names(tmp_path: Path) -> None:
 
 def test_several_urdfs_without_mobility(tmp_path: Path) -> None:
     asset = write_asset(tmp_path / "asset", HINGE, {"b.urdf": HINGE}, urdf_name="a.urdf")
-    rejected(asset, "asset", "a.urdf, b.urdf", says="several URDF files")
+    rejected(asset, "asset", "a.urdf, b.urdf", says="holds 2 URDF files")
 
 
 def test_several_urdfs_in_a_zip_name_the_upload(tmp_path: Path) -> None:
     archive = make_zip(tmp_path, [("a.urdf", HINGE), ("b.urdf", HINGE)])
-    rejected(archive, "upload.zip", "a.urdf, b.urdf", says="several URDF files")
+    rejected(archive, "upload.zip", "a.urdf, b.urdf", says="holds 2 URDF files")
 
 
 def test_no_urdf(tmp_path: Path) -> None:
@@ -321,7 +323,148 @@ def test_no_urdf(tmp_path: Path) -> None:
     rejected(asset, "asset", "*.urdf", says="no .urdf file")
 
 
-def test_mobility_urdf_is_preferred_among_several(tmp_path: Path) -> None:
+def test_several_urdfs_are_an_error_even_with_a_mobility_urdf(tmp_path: Path) -> None:
+    """A folder of assets (or a zip of two) must not pick one silently."""
     other = robot(link("only", BOX))
     asset = write_asset(tmp_path / "asset", HINGE, {"extra/other.urdf": other, "zz.urdf": other})
-    assert load_asset(asset).joint_order == ("hinge",)
+    error = rejected(asset, "asset", "mobility.urdf, zz.urdf, extra/other.urdf", says="holds 3 URDF files")
+    assert "--urdf" in str(error) and "'urdf' field" in str(error)
+
+
+def test_a_zip_of_two_assets_is_an_error(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    rejected(archive, "upload.zip", "bin/mobility.urdf, cap/mobility.urdf", says="holds 2 URDF files")
+
+
+def test_the_chosen_urdf_is_loaded(tmp_path: Path) -> None:
+    other = robot(link("only", BOX))
+    asset = write_asset(tmp_path / "asset", HINGE, {"extra/other.urdf": other, "zz.urdf": other})
+    assert load_asset(asset, urdf="mobility.urdf").joint_order == ("hinge",)
+    chosen = load_asset(asset, urdf="extra/other.urdf")
+    assert chosen.urdf_file == "extra/other.urdf" and chosen.joint_order == ()
+    assert load_asset(asset, urdf="other.urdf").urdf_file == "extra/other.urdf"  # a unique file name is enough
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    assert load_asset(archive, urdf="bin/mobility.urdf").joint_order == ("hinge",)
+
+
+def test_a_chosen_urdf_that_is_not_there_lists_the_ones_that_are(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    rejected(archive, "upload.zip", "lid.urdf", urdf="lid.urdf",
+             says="matches none of the asset's URDF files (bin/mobility.urdf, cap/mobility.urdf)")
+    rejected(archive, "upload.zip", "mobility.urdf", urdf="mobility.urdf", says="matches several")
+
+
+def test_a_single_urdf_may_be_named_with_its_folder(tmp_path: Path) -> None:
+    archive = make_zip(tmp_path, [("bin/mobility.urdf", HINGE)])  # the zip of a folder: the folder is the asset root
+    assert load_asset(archive, urdf="bin/mobility.urdf").urdf_file == "mobility.urdf"
+
+
+def test_urdf_in_zip_agrees_with_the_loader_without_extracting(tmp_path: Path) -> None:
+    from app.engine.asset.loader import urdf_in_zip
+
+    two = make_zip(tmp_path, [("cap/mobility.urdf", robot(link("only", BOX))), ("bin/mobility.urdf", HINGE)])
+    assert urdf_in_zip(two, "bin/mobility.urdf") == load_asset(two, urdf="bin/mobility.urdf").urdf_file == "bin/mobility.urdf"
+    with pytest.raises(AssetError, match="holds 2 URDF files"):
+        urdf_in_zip(two)
+    (tmp_path / "one").mkdir()
+    one = make_zip(tmp_path / "one", [("bin/mobility.urdf", HINGE), ("__MACOSX/bin/._mobility.urdf", "junk")])
+    assert urdf_in_zip(one) == load_asset(one).urdf_file == "mobility.urdf"
+
+
+# --- every number is checked on load (NaN, infinity, absurd sizes, wrong counts) -----------------
+def _with_joint(joint_xml: str) -> str:
+    return robot(link("base", BOX), link("part", BOX), joint_xml)
+
+
+def _with_visual(visual_xml: str) -> str:
+    return robot(link("base", BOX), link("part", visual_xml), joint("j", "revolute", "base", "part", limit=(0.0, 1.0)))
+
+
+_JOINT = '<joint name="j" type="revolute"><parent link="base"/><child link="part"/>{}</joint>'
+_LIMIT = '<limit lower="0" upper="1" effort="1" velocity="1"/>'
+BAD_NUMBERS = {
+    "axis with two numbers": (_with_joint(_JOINT.format('<axis xyz="0 1"/>' + _LIMIT)), "joint j", "axis needs 3 numbers"),
+    "NaN axis": (_with_joint(_JOINT.format('<axis xyz="0 nan 1"/>' + _LIMIT)), "joint j", "axis holds a NaN"),
+    "1e308 joint origin": (_with_joint(_JOINT.format('<origin xyz="1e308 0 0"/><axis xyz="0 0 1"/>' + _LIMIT)), "joint j",
+                           "larger than 10000"),
+    "infinite limit": (_with_joint(_JOINT.format('<axis xyz="0 0 1"/><limit lower="0" upper="inf" effort="1" velocity="1"/>')),
+                       "joint j", "limit lower/upper holds"),
+    "NaN effort": (_with_joint(_JOINT.format('<axis xyz="0 0 1"/><limit lower="0" upper="1" effort="nan" velocity="1"/>')),
+                   "joint j", "limit effort holds"),
+    "NaN mimic multiplier": (robot(link("base", BOX), link("a", BOX), link("b", BOX),
+                                   joint("ja", "revolute", "base", "a", limit=(0.0, 1.0)),
+                                   joint("jb", "revolute", "base", "b", limit=(0.0, 1.0), mimic=("ja", float("nan"), 0.0))),
+                             "joint jb", "mimic multiplier/offset holds"),
+    "NaN visual origin": (_with_visual('<visual><origin xyz="nan 0 0"/><geometry><box size="1 1 1"/></geometry></visual>'),
+                          "link part visual 0", "origin is not a finite transform"),
+    "infinite visual rpy": (_with_visual('<visual><origin rpy="0 inf 0"/><geometry><box size="1 1 1"/></geometry></visual>'),
+                            "link part visual 0", "origin is not a finite transform"),
+    "box with two sizes": (_with_visual('<visual><geometry><box size="1 1"/></geometry></visual>'), "link part visual 0",
+                           "box size needs 3 numbers"),
+    "NaN box size": (_with_visual('<visual><geometry><box size="nan 1 1"/></geometry></visual>'), "link part visual 0",
+                     "box size holds a NaN"),
+    "infinite cylinder": (_with_visual('<visual><geometry><cylinder radius="inf" length="1"/></geometry></visual>'),
+                          "link part visual 0", "cylinder radius/length holds"),
+    "NaN mesh scale": (_with_visual(mesh("meshes/part.obj", scale=(float("nan"), 1.0, 1.0))), "link part visual 0",
+                       "mesh scale holds a NaN"),
+    "zero mesh scale": (_with_visual(mesh("meshes/part.obj", scale=(0.0, 1.0, 1.0))), "link part visual 0", "zero factor"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_NUMBERS))
+def test_bad_numbers_in_the_urdf_are_rejected_naming_the_element(tmp_path: Path, case: str) -> None:
+    urdf, element, says = BAD_NUMBERS[case]
+    rejected(urdf_asset(tmp_path, urdf, {"meshes/part.obj": TRIANGLE_OBJ}), URDF, element, says=says)
+
+
+@pytest.mark.parametrize("vertex", ["nan 0 0", "inf 0 0", "1e300 0 0"])
+def test_bad_numbers_in_obj_vertices_are_rejected(tmp_path: Path, vertex: str) -> None:
+    obj = f"v 0 0 0\nv {vertex}\nv 0 1 0\nf 1 2 3\n"
+    rejected(urdf_asset(tmp_path, _with_visual(mesh("meshes/part.obj")), {"meshes/part.obj": obj}), "meshes/part.obj", "vertex 1",
+             says="NaN, infinite or farther")
+
+
+# --- cheap uploads must not buy unbounded work: limits checked before the expensive parse -----------
+def _png_header(width: int, height: int) -> bytes:
+    """The first bytes of a PNG declaring ``width`` x ``height`` (enough for a header read; never decoded)."""
+    import struct
+    import zlib
+
+    def chunk(kind: bytes, payload: bytes) -> bytes:
+        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", zlib.crc32(kind + payload))
+
+    ihdr = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    return b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", ihdr) + chunk(b"IDAT", zlib.compress(b"\0" * 1000))
+
+
+def test_too_many_joints_are_refused_before_the_urdf_is_parsed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import app.engine.asset.loader as loader
+
+    monkeypatch.setattr(loader, "parse_urdf", lambda *_: pytest.fail("parsed a URDF over the joint limit"))
+    links = [link(f"l{i}", BOX) for i in range(301)]
+    joints = [joint(f"j{i}", "revolute", f"l{i}", f"l{i + 1}", limit=(0.0, 1.0)) for i in range(300)]
+    rejected(urdf_asset(tmp_path, robot(*links, *joints)), URDF, "link", says="301 <link> elements, more than the limit of 257")
+
+
+@pytest.mark.filterwarnings("ignore::PIL.Image.DecompressionBombWarning")  # PIL warns on the header it just read
+@pytest.mark.parametrize("texture_name", ["textures/huge.png", "textures/huge.dat"])
+def test_a_huge_texture_is_refused_from_its_header(tmp_path: Path, texture_name: str) -> None:
+    """13000 x 13000 pixels (~500 MB decoded) in a few bytes: refused before decoding, under any file name."""
+    mtl = f"newmtl skin\nmap_Kd {texture_name}\n"
+    obj = "mtllib part.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nusemtl skin\nf 1/1 2/2 3/3\n"
+    files = {"meshes/part.obj": obj, "meshes/part.mtl": mtl, f"meshes/{texture_name}": _png_header(13000, 13000)}
+    asset = urdf_asset(tmp_path, two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)),
+                                               child_visual=mesh("meshes/part.obj")), files)
+    rejected(asset, f"meshes/{texture_name}", "texture", says="13000 x 13000 pixels")
+
+
+def test_an_obj_over_the_triangle_budget_is_refused_before_it_is_parsed(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import trimesh
+
+    monkeypatch.setattr(trimesh, "load", lambda *_a, **_k: pytest.fail("parsed a mesh over the triangle budget"))
+    obj = b"v 0 0 0\nv 1 0 0\nv 0 1 0\n" + b"f 1 2 3\n" * 2_000_001
+    asset = urdf_asset(tmp_path, two_link_urdf(joint("hinge", "revolute", "base", "part", limit=(0.0, 1.0)),
+                                               child_visual=mesh("meshes/part.obj")), {"meshes/part.obj": obj})
+    with pytest.raises(AssetError, match="more than 2000000 triangles") as caught:
+        load_asset(asset)
+    assert caught.value.file == "meshes/part.obj"

@@ -12,11 +12,11 @@ import numpy as np
 import pytest
 from PIL import Image
 
+from app import gltf_validation as gltf_validator
 from app.engine.asset.model import Material, MeshPart
 from app.engine.execute.trajectory import Trajectory
 from app.engine.export.glb import export_glb, glb_bytes
 from app.engine.export.gltf_builder import clean_png
-from tests.support import gltf_validator
 from tests.support.glb_cases import ExportCase, build_tiny_asset, build_tiny_trajectory, tiny_png
 from tests.support.gltf_validator import ValidatorUnavailable, assert_valid, validate_glb
 
