@@ -80,7 +80,10 @@ def _ini_config(tmp_path: Path) -> tuple[Path, list[str]]:
     """
     config = tomllib.loads((REPO / "pyproject.toml").read_text(encoding="utf-8"))["tool"]["importlinter"]
     roots = config["root_packages"]
-    lines = ["[importlinter]", "root_packages =", *(f"    {r}" for r in roots), "include_external_packages = True", ""]
+    lines = ["[importlinter]", "root_packages =", *(f"    {r}" for r in roots), "include_external_packages = True"]
+    if config.get("exclude_type_checking_imports"):
+        lines.append("exclude_type_checking_imports = True")
+    lines.append("")
     skipped: list[str] = []
     for number, contract in enumerate(config["contracts"], start=1):
         lines += [f"[importlinter:contract:{number}]", f"name = {contract['name']}", f"type = {contract['type']}"]

@@ -1,7 +1,8 @@
 """Request guards in front of the app: no key in URLs, bounded bodies, no body that trickles forever.
 
 - A query string carrying a credential (``?api_key=``, ``?token=`` ...) is refused (400):
-  keys travel only in the ``Authorization`` header, never in URLs (which land in logs).
+  keys travel only in the ``Authorization`` header, never in URLs (which land in logs). The one
+  exception is a signed share link (``/v1/shared/...?token=``): its token is made for URLs.
 - A body that is not ``multipart/form-data`` (JSON: ``/v1/batches``) may hold at most
   ``max_json_body_bytes`` (413); multipart uploads have their own, larger limits
   (:mod:`app.api.uploads`).
@@ -25,6 +26,10 @@ from starlette.exceptions import HTTPException
 from starlette.types import ASGIApp, Message, Receive, Scope, Send
 
 from app.core.logging import CREDENTIAL_PARAMETERS
+
+SHARED_PREFIX = "/v1/shared/"
+SHARED_LINK_PARAMETERS = frozenset({"token"})
+"""A signed share link carries its own expiring, single-file token in the URL by design (it is still redacted from logs)."""
 
 MULTIPART = b"multipart/form-data"
 
@@ -62,7 +67,8 @@ class RequestGuardMiddleware:
             await self.app(scope, receive, send)
             return
         query = scope.get("query_string", b"").decode("latin-1")
-        if any(name.lower() in CREDENTIAL_PARAMETERS for name, _ in parse_qsl(query, keep_blank_values=True)):
+        allowed = SHARED_LINK_PARAMETERS if str(scope.get("path", "")).startswith(SHARED_PREFIX) else frozenset()
+        if any(name.lower() in CREDENTIAL_PARAMETERS - allowed for name, _ in parse_qsl(query, keep_blank_values=True)):
             await _answer(send, 400, "send the API key in the 'Authorization: Bearer KEY' header, never in the URL "
                                      "(URLs are logged); this request was not processed", "CredentialInUrl")
             return

@@ -210,11 +210,11 @@ def test_hard_time_limit_kill_fails_the_job(settings: Settings) -> None:
 def test_the_worker_sends_nothing_to_a_provider_for_a_bad_job(settings: Settings, monkeypatch: pytest.MonkeyPatch, provider: str,
                                                               options: dict[str, str], says: str) -> None:
     """Jobs stored before the API checked them (or written to the database directly) fail without a request."""
-    from tests.support.replay_server import replay_server
+    from tests.support.model_server import model_server
 
     from app.core.config import get_settings
 
-    with replay_server({}) as (base_url, script):
+    with model_server({}) as (base_url, script):
         monkeypatch.setenv("OPENAI_BASE_URL", base_url)
         monkeypatch.setenv("GEMINI_BASE_URL", base_url)
         if provider == "gemini":
