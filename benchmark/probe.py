@@ -8,6 +8,7 @@ Uses the probe tools of ``../shared/tools/probe`` (``run.py`` runs each prompt a
     python -m benchmark.probe --expect benchmark/heldout/prompts.jsonl --out out/probe-heldout
     python -m benchmark.probe --expect ... --out ... --cli /path/to/other/artimo   # another build, e.g. a baseline
     python -m benchmark.probe --out out/probe-heldout --judge-only                  # re-judge existing runs
+    python -m benchmark.probe --expect ... --out ... --in-process                   # this build, no process per prompt (fast)
 
 The assets root is ``--assets``, else ``$ARTIMO_PARTNET_EXTRA_ROOT``, else ``../shared/assets/partnet-extra``
 beside the repository; the tools folder is ``$ARTIMO_PROBE_TOOLS``, else ``../shared/tools/probe``.
@@ -72,6 +73,35 @@ def summarize(out: Path, expect: Path) -> dict[str, Any]:
     return {"expect": str(expect), "types": table, "cases": cases}
 
 
+def run_in_process(expect: Path, out: Path, assets: Path) -> None:
+    """What ``run.py`` does (one ``artimo animate`` per prompt), in this process: OUT/runs/<id> and run_results.json."""
+    import time
+
+    from app.engine.asset.cache import load_asset_cached
+    from app.engine.config import EngineConfig
+    from app.engine.errors import EngineError
+    from app.engine.offline.roles import offline_roles
+    from app.engine.pipeline import PipelineRequest, run_pipeline
+
+    results: dict[str, dict[str, Any]] = {}
+    loaded: dict[str, Any] = {}
+    config = EngineConfig()
+    for line in expect.read_text().splitlines():
+        if not line.strip():
+            continue
+        row = json.loads(line)
+        began = time.perf_counter()
+        try:
+            if row["asset_dir"] not in loaded:
+                loaded[row["asset_dir"]] = load_asset_cached(assets / row["asset_dir"], None)
+            asset = loaded[row["asset_dir"]]
+            run_pipeline(PipelineRequest(asset=asset, prompt=row["prompt"]), roles=offline_roles(), config=config, out_dir=out / "runs" / row["id"])
+            results[row["id"]] = {"rc": 0, "stderr": "", "wall_s": time.perf_counter() - began}
+        except EngineError as exc:
+            results[row["id"]] = {"rc": 1, "stderr": f"error: {exc}", "wall_s": time.perf_counter() - began}
+    (out / "run_results.json").write_text(json.dumps(results))
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--expect", type=Path, default=REPO / "benchmark" / "heldout" / "prompts.jsonl")
@@ -79,6 +109,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--assets", type=Path, default=None)
     parser.add_argument("--cli", default=None, help="the artimo executable to probe (default: this environment's)")
     parser.add_argument("--judge-only", action="store_true", help="judge and summarise runs already in --out")
+    parser.add_argument("--in-process", action="store_true", help="run this build's offline agent in this process (same outputs, much faster)")
     args = parser.parse_args(argv)
     assets = args.assets or _default("ARTIMO_PARTNET_EXTRA_ROOT", "shared/assets/partnet-extra")
     tools = _default("ARTIMO_PROBE_TOOLS", "shared/tools/probe")
@@ -90,7 +121,9 @@ def main(argv: list[str] | None = None) -> int:
     cli = args.cli or shutil.which("artimo") or str(Path(sys.executable).with_name("artimo"))
     args.out.mkdir(parents=True, exist_ok=True)
     env = {**os.environ, "PYOPENGL_PLATFORM": os.environ.get("PYOPENGL_PLATFORM", "egl")}
-    if not args.judge_only:
+    if args.in_process and not args.judge_only:
+        run_in_process(args.expect, args.out, assets)
+    elif not args.judge_only:
         subprocess.run([sys.executable, str(tools / "run.py"), cli, str(args.out), str(args.expect), str(assets)], check=True, env=env)
     judged = subprocess.run([sys.executable, str(tools / "judge.py")], env={**env, "PROBE_DIR": str(args.out), "PROBE_EXPECT": str(args.expect),
                                                                            "PROBE_ASSETS": str(assets)}, capture_output=True, text=True)

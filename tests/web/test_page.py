@@ -232,7 +232,8 @@ def test_batches_view_with_benchmark_scores(probe: PageProbe, served: Served) ->
     cases = [json.loads(line) for line in (REPO / "benchmark" / "cases" / "dev_examples.jsonl").read_text().splitlines()
              if '"asset": "pedal_bin"' in line][:2]
     with served.client() as client:
-        asset = client.get("/v1/assets").json()["data"][0]
+        files = [("asset", ("pedal_bin/pedal_bin.urdf", PEDAL_URDF.read_bytes()))]
+        asset = client.post("/v1/assets", files=files).json()  # its own upload (201), or the same content stored by another test (200)
         batch = client.post("/v1/benchmarks", json={"name": "pedal bench", "cases": [{**c, "asset": asset["id"]} for c in cases]}).json()
         deadline = time.monotonic() + JOB_TIMEOUT_MS / 1000
         while not client.get(f"/v1/batches/{batch['id']}").json()["done"]:

@@ -181,7 +181,7 @@ def test_gives_up_after_max_attempts(settings: Settings) -> None:
     assert job.error_kind == "WorkerLost" and f"after {settings.job_max_attempts} attempts" in (job.error or "")
 
 
-@pytest.mark.parametrize("job_id", ["not-a-uuid", str(uuid.uuid4())])
+@pytest.mark.parametrize("job_id", ["not-a-uuid", "3f2b8c1e-5d4a-4e7b-9c0d-1a2b3c4d5e6f"])
 def test_malformed_or_unknown_id_is_dropped(settings: Settings, job_id: str) -> None:
     assert execute_job(job_id, settings=settings, worker="w1") is Outcome.skipped
 
@@ -210,9 +210,8 @@ def test_hard_time_limit_kill_fails_the_job(settings: Settings) -> None:
 def test_the_worker_sends_nothing_to_a_provider_for_a_bad_job(settings: Settings, monkeypatch: pytest.MonkeyPatch, provider: str,
                                                               options: dict[str, str], says: str) -> None:
     """Jobs stored before the API checked them (or written to the database directly) fail without a request."""
-    from tests.support.model_server import model_server
-
     from app.core.config import get_settings
+    from tests.support.model_server import model_server
 
     with model_server({}) as (base_url, script):
         monkeypatch.setenv("OPENAI_BASE_URL", base_url)

@@ -78,6 +78,7 @@ END_STATE: Mapping[VerbSense, Mapping[PartClass, GoalState]] = MappingProxyType(
     S.RETURN: _row("previous"),
     S.HOLD: _row("pressed", openable="open", turned="cw"),
     S.YAW: _row("cw"),
+    S.GRASP: _row("rest"),
 })
 """Sense -> part class -> the end state it means (SPIN and friends on a part that cannot spin do the nearest thing)."""
 

@@ -40,6 +40,8 @@ class VerbSense(StrEnum):
     SWITCH_ON = "switch_on"
     SWITCH_OFF = "switch_off"
     RETURN = "return"
+    GRASP = "grasp"
+    """Take hold of a part: no motion of its own (what follows moves it)."""
 
 
 Motion = Literal["any", "hinge", "slide"]
@@ -207,6 +209,17 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("trigger", S.OPERATE),
     VerbInfo("work", S.OPERATE),
     VerbInfo("actuate", S.OPERATE),
+    VerbInfo("grab", S.GRASP, stative=True),
+    VerbInfo("grasp", S.GRASP, stative=True),
+    VerbInfo("grip", S.GRASP, stative=True),
+    VerbInfo("bring", S.MOVE, _p(up=S.RAISE, down=S.LOWER, back=S.RETURN, out=S.PULL_OUT, **{"in": S.PUSH_IN}, around=S.YAW, round=S.YAW),
+             object_sense=S.MOVE),
+    VerbInfo("stand", S.RAISE, _p(up=S.RAISE)),
+    VerbInfo("clip", S.LOCK, _p(shut=S.LOCK, closed=S.LOCK, on=S.LOCK, open=S.UNLATCH)),
+    VerbInfo("snap_shut", S.CLOSE),
+    VerbInfo("fasten", S.LOCK),
+    VerbInfo("buckle", S.LOCK),
+    VerbInfo("secure", S.LOCK),
     # states, time, returns
     VerbInfo("hold", S.HOLD, _p(down=S.PRESS, open=S.HOLD, up=S.HOLD), stative=True),
     VerbInfo("keep", S.HOLD, stative=True),

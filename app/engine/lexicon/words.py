@@ -73,7 +73,9 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "a few": 0.25, "a tad": 0.15,
     "mostly": 0.75, "most of the way": 0.75, "three quarters": 0.75, "three-quarters": 0.75, "a third": 1 / 3, "one third": 1 / 3,
     "two thirds": 2 / 3, "two-thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
-    "a third of the way": 1 / 3, "as far as": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+    "a third of the way": 1 / 3, "as far as": 1.0, "as high as it goes": 1.0, "as high as possible": 1.0, "as low as it goes": 1.0,
+    "as low as possible": 1.0, "as wide as it goes": 1.0, "as far as it will": 1.0, "to the very top": 1.0, "to the top": 1.0,
+    "to the very bottom": 1.0, "to the bottom": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
                            "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
@@ -113,6 +115,7 @@ STATES: Mapping[str, str] = MappingProxyType({
     # adjectives / particles naming an end state
     "open": "open", "opened": "open", "shut": "closed", "closed": "closed", "up": "up", "down": "down",
     "vertical": "vertical", "vertically": "vertical", "upright": "vertical", "perpendicular": "vertical", "straight up": "vertical",
+    "straight": "vertical",
     "flat": "flat", "horizontal": "flat", "horizontally": "flat", "level": "flat",
     "on": "on", "off": "off", "pressed": "pressed", "down position": "down", "in": "in", "out": "out",
 })
@@ -146,6 +149,11 @@ MULTIWORD: tuple[str, ...] = (
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
+    "a couple of seconds", "a couple of", "a few seconds", "a second and a half", "half a second", "do the same", "the same amount",
+    "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
+    "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
+    "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
+    "to the very top", "to the top", "to the very bottom", "to the bottom",
 )
 
 OBJECT_NOUNS: tuple[str, ...] = (
@@ -157,7 +165,9 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "faucet", "tap", "washer", "dishwasher", "machine", "toilet", "kettle", "pot", "saucepan", "bottle", "chest", "crate", "table",
     "chair", "briefcase", "nightstand", "bedside", "locker", "wheelie", "dumpster", "device", "cooker", "sink", "bag", "handbag",
     "purse", "stroller", "pram", "wagon", "buggy", "robot", "truck", "bus", "bookcase", "desk", "crib", "bureau",
-    "sideboard", "credenza", "armoire", "tallboy", "commode", "strongbox", "lockbox", "tote", "blender", "chest_of_drawers",
+    "sideboard", "credenza", "armoire", "tallboy", "commode", "strongbox", "lockbox", "tote", "blender", "chest_of_drawers", "toolbox",
+    "cooler", "trunk", "footlocker", "coffer", "breadbox", "lunchbox", "cashbox", "tin", "suitcase", "saucepan", "casserole", "kettle",
+    "vanity", "hutch", "cubby", "wardrobe", "closet", "pantry", "oven", "range", "toaster", "tap", "faucet", "mixer", "basin",
     "bank_of_drawers", "set_of_drawers",
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
 )
@@ -174,7 +184,14 @@ CAUSATIVES = frozenset({"let", "make", "have", "get", "allow", "watch", "see"})
 """Verbs whose object does the inner verb on its own ("let the lid drop", "make the tray rotate")."""
 LIGHT_VERBS = frozenset({"give"})
 """Verbs whose deverbal object is the real action ("give the car a push")."""
-STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stand", "stands", "standing",
+WISH_WORDS = frozenset({"need", "want", "like", "needs", "wants", "would_like", "i'd_like"})
+""""I need the rack out": a wish names the end state wanted."""
+STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
                            "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks"})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
+PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
+                    "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})
+"""Where an object stands: "lift the pot off the stove" names a place, not a part."""
+OBJECT_SUFFIXES = ("box", "bin", "case", "can", "chest", "pot", "pan", "safe", "cabinet", "oven", "basket", "bag", "machine")
+"""Compound object names end in an object word ("toolbox", "breadbin", "briefcase")."""

@@ -17,6 +17,7 @@ from app.engine.contracts.steps import BaseMotion, JointMove, Why
 from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
+from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
@@ -31,7 +32,7 @@ from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold
-from app.engine.offline.sequences import enter_code, first_then_rest, is_code, object_motion_act
+from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
 
@@ -112,6 +113,7 @@ class Builder:
                 if not found and self.parts:
                     found = self._object_parts(frame, sense)
             elif mention.is_object:
+                self._same_object(mention)
                 found = self._object_parts(frame, sense)
             else:
                 found = self._only_part(frame, mention)
@@ -157,6 +159,13 @@ class Builder:
         return out
 
     def frame_sense(self, frame: Frame, *, means: bool = False) -> VerbSense:
+        if frame.particle == "back" and frame.sense in (VerbSense.OPEN, VerbSense.RECLINE, VerbSense.RAISE) and frame.themes:
+            try:
+                parts, _ = self.ground(frame, VerbSense.RETURN, frame.themes)
+            except GroundingError:
+                parts = []
+            if parts and all(mech.is_control(p) for p in parts):
+                return VerbSense.RETURN  # "flip the switch back": a control goes back, a lid flips open
         if frame.sense is VerbSense.RELEASE and not means and frame.themes and not frame.let:
             # "release the door (by pressing the button)": a door is released by popping it open
             try:
@@ -178,8 +187,13 @@ class Builder:
         if act.condition:
             self._condition(act)
             return
-        if goal.verb is None and not goal.themes:
+        if goal.verb is None and not goal.wish and (not goal.themes or self._nothing_known(goal)):
             self.notes.append(f"ignored '{goal.text}' (no action found)")
+            return
+        if sense is VerbSense.GRASP:
+            parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])
+            self.refs.remember(parts, [])
+            self.notes.append(f"'{goal.text}': taking hold moves nothing by itself")
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
@@ -194,6 +208,9 @@ class Builder:
             return
         if goal.first is not None and act.means is None:
             first_then_rest(self, act)
+            return
+        if goal.in_turn is not None and act.means is None and any(m.plural or m.collective for m in goal.themes):
+            in_turn(self, act)
             return
         if act.means is not None and self._aimless(goal):
             self.notes.append(f"ignored the purpose '{goal.text}': it names no part of {self.asset.name}")
@@ -232,6 +249,7 @@ class Builder:
                                                                    and frame.quantities.amount is not None and not frame.instruments)
         first = targets[0]
         if first.is_object:
+            self._same_object(first)
             if self.tracker.obj.category in OPERATED_OBJECTS and frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF):
                 return False
             return moves_object(frame, pronoun=False, after_part=False) and not (
@@ -242,6 +260,13 @@ class Builder:
             after_part = bool(self.refs.last)
             return moves_object(frame, pronoun=True, after_part=after_part) and (after_part or not self.parts or frame.verb in ("push", "move"))
         return False
+
+    def _same_object(self, mention: Mention) -> None:
+        """"open the trunk" on a microwave names some other object: refuse rather than guess."""
+        category = self.tracker.obj.category
+        if names_other_object(mention.head, category):
+            raise self.refs.refuse(f"'{mention.words or mention.head}' does not name {self.asset.name} (a {category}): "
+                                   f"say 'the {category}' or name one of its parts")
 
     def worked_before(self, part: Part) -> bool:
         """An earlier step pressed or turned this control (it may have sprung back since)."""
@@ -273,6 +298,11 @@ class Builder:
         if motion == "slide" and sideways and all(p.geometry.type != "prismatic" for p in named):
             raise self.refs.refuse(f"'{frame.text}' slides a part in a straight line, but the {_label(named[0])} only rotates")
 
+    def _nothing_known(self, frame: Frame) -> bool:
+        """"It's getting drafty", "check on the roast": no verb we know, and no part or object named."""
+        return all(m.kind is None and not m.is_object and not m.pronoun and not m.anaphor and not self.refs.ground(m).parts
+                   for m in frame.themes)
+
     def _aimless(self, frame: Frame) -> bool:
         """"... to start the wash", "... to make toast": a purpose that names no part (only what the object does)."""
         themes = [m for m in frame.themes if not m.pronoun and not m.is_object]
@@ -293,9 +323,14 @@ class Builder:
         out: list[Move] = []
         for mention in frame.instruments:
             if mention.kind is None or not info(mention.kind).control:
+                if frame.sense in (VerbSense.LOCK, VerbSense.UNLATCH) and mention.kind is None and not self.refs.ground(mention).parts and not (
+                        self._described(frame)):
+                    raise self.refs.refuse(f"'{frame.text}': {self.asset.name} has no movable {mention.head} to do it with")
                 continue
             found = self.refs.ground(mention)
             if not found.parts:
+                if frame.sense in (VerbSense.LOCK, VerbSense.UNLATCH):
+                    raise self.refs.refuse(f"'{frame.text}': {self.asset.name} has no movable {mention.head} to do it with")
                 self.notes.append(f"ignored the {mention.head}: not a movable part of {self.asset.name}")
                 continue
             plain = replace(frame, quantities=Quantities(speed_factor=frame.quantities.speed_factor))  # the amount is the goal's

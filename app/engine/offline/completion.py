@@ -231,7 +231,9 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
             _hold_until_now(builder, move.part.joint)
             out.append(replace(move, release="stays"))
             continue
-        if mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects) and not brief:
+        if brief and move.goal.state != "rest":
+            out.append(replace(move, release="self_return"))  # "tap the lever (down) briefly": pressed and let go
+        elif mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
             out.append(replace(move, release="held"))
         elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat"):
             out.append(replace(move, release="self_return"))

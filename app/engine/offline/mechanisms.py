@@ -48,8 +48,9 @@ def drives(control: Part, effect: Part, parts: list[Part], tracker: Tracker) -> 
 
 
 def controls_for(effect: Part, parts: list[Part], tracker: Tracker, excluded: set[str]) -> list[Part]:
-    """The control a user works to open ``effect`` (a pedal for a pedal bin's lid), if any."""
-    found = [p for p in parts if p.joint not in excluded and p.joint != effect.joint and drives(p, effect, parts, tracker)]
+    """The control a user works to open ``effect`` (a pedal for a pedal bin's lid), if any: only a control whose effect
+    it holds (a release button or handle is one way among others to open a door, not implied)."""
+    found = [p for p in parts if p.joint not in excluded and p.joint != effect.joint and holds(p) and drives(p, effect, parts, tracker)]
     return found[:1]
 
 

@@ -7,15 +7,30 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
+import numpy as np
+
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
+from app.engine.lexicon.words import Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
-from app.engine.offline.grounding import Grounding, How, Part, by_kind, by_name, narrow, position, similar
+from app.engine.offline.grounding import (
+    Grounding,
+    How,
+    Part,
+    by_kind,
+    by_name,
+    narrow,
+    position,
+    reading_order,
+    similar,
+)
 from app.engine.offline.naming import link_words
 from app.engine.offline.reading.mentions import Mention
 
+EXTREME_GAP_M = 0.01
+"""A part at least this much further toward the named side than the next one is "the bottom one"."""
 _FEATURES = frozenset({PartKind.LATCH, PartKind.HANDLE})
 """Kinds a user may name as a feature of a part that is not movable on its own ("the door latch", "the lid handle")."""
 _NUMBER_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight", 9: "nine"}
@@ -74,6 +89,8 @@ class Referents:
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
         kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced)
+        if mention.relation is not None and kept:
+            kept = self._placed(mention.relation, kept)
         if overflow is not None:
             return Grounding(how=how, ordinal_overflow=overflow, ambiguous=tuple(candidates))
         if not kept:
@@ -82,6 +99,15 @@ class Referents:
             return Grounding(parts=tuple(kept), how=how, notes=tuple(notes))
         if self.assigned.get(mention.head) in kept:
             return Grounding(parts=(self.assigned[mention.head],), how=how, notes=tuple(notes))
+        if mention.one_of:
+            chosen = reading_order(kept, self.obj)[0]
+            notes.append(f"'{mention.words}' leaves the choice: took {chosen.link} (the first in reading order)")
+            return Grounding(parts=(chosen,), how=how, notes=tuple(notes))
+        if mention.sides and not any(side is Side.MIDDLE for side, _ in mention.sides):
+            extreme = self._most_extreme(mention, kept)
+            if extreme is not None:
+                notes.append(f"'{mention.words}' fits {len(kept)} parts; took the one furthest that way ({extreme.link})")
+                return Grounding(parts=(extreme,), how=how, notes=tuple(notes))
         if prefer:
             preferred = [p for p in kept if p in prefer]
             if len(preferred) == 1:
@@ -164,6 +190,37 @@ class Referents:
             if found.parts:
                 note = f"{self.asset.name} has no movable {mention.kind.value if mention.kind else mention.head}: read '{mention.words}' as the {word}"
                 return list(found.parts), [*found.notes, note]
+        return None
+
+    def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
+        """The candidate nearest to the reference part in the named direction ("the key right below it")."""
+        side, reference_mention = relation
+        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
+        if len(reference) != 1:
+            return candidates
+        anchor = position(reference[0], self.obj)
+        axis, sign = {"below": (2, -1.0), "above": (2, 1.0), "left": (1, -1.0), "right": (1, 1.0)}.get(side, (None, 0.0))
+        scored = []
+        for part in candidates:
+            if part.joint == reference[0].joint:
+                continue
+            offset = position(part, self.obj) - anchor
+            if axis is not None and offset[axis] * sign <= 1e-6:
+                continue
+            across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else 0.0
+            scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
+        return [min(scored)[3]] if scored else []
+
+    def _most_extreme(self, mention: Mention, kept: list[Part]) -> Part | None:
+        """Among parts all near the named side, the one strictly furthest that way ("the bottom rack")."""
+        side = mention.sides[-1][0]
+        axis_of = {Side.TOP: (2, 1.0), Side.BOTTOM: (2, -1.0), Side.LEFT: (1, -1.0), Side.RIGHT: (1, 1.0), Side.FRONT: (0, 1.0), Side.BACK: (0, -1.0)}
+        if side not in axis_of:
+            return None
+        axis, sign = axis_of[side]
+        values = sorted(((sign * float(position(p, self.obj)[axis]), p.joint, p) for p in kept), reverse=True)
+        if len(values) > 1 and values[0][0] - values[1][0] > EXTREME_GAP_M:
+            return values[0][2]
         return None
 
     def _did_you_mean(self, word: str) -> str:

@@ -90,3 +90,24 @@ def first_then_rest(builder: Builder, act: Act) -> None:
     for index, part in enumerate(ordered):
         moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
         builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0), sense, [], moves)
+
+
+_ORDER_KEYS = {"left_to_right": (1, False), "right_to_left": (1, True), "top_to_bottom": (2, True), "bottom_to_top": (2, False)}
+
+
+def in_turn(builder: Builder, act: Act) -> None:
+    """"press the three keys of the top row, left to right", "open the drawers one by one": one step per part."""
+    from app.engine.offline.grounding import position, reading_order
+
+    goal = act.goal
+    sense = builder.frame_sense(goal)
+    parts, words = builder.ground(goal, sense, goal.themes)
+    order = goal.in_turn or "reading"
+    if order in _ORDER_KEYS:
+        axis, descending = _ORDER_KEYS[order]
+        ordered = sorted(parts, key=lambda p: -position(p, builder.tracker.obj)[axis] if descending else position(p, builder.tracker.obj)[axis])
+    else:
+        ordered = reading_order(parts, builder.tracker.obj)
+    for index, part in enumerate(ordered):
+        moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
+        builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)

@@ -364,7 +364,7 @@ ROWS: list[Row] = [
     R("laptop_10101", "tilt the screen back 20 degrees", joints={"joint_1": E(end=math.radians(20))}),
     R("laptop_10101", "open the laptop to 90 degrees", joints={"joint_1": E(end=-2.092 + PI / 2)}),
     R("examples/microwave", "opne the microwve door all teh way", joints={"door_hinge": E(end="upper")}),
-    R("examples/oven", "pull the trey out", refuse=True),
+    R("examples/oven", "pull the trey out", joints={"tray_slide": E(end="lower"), "door_hinge": E(moves=True)}, order=(("door_hinge", "tray_slide"),)),
     R("refrigerator_11178", "open the fridge door", refuse=True),
     R("storage_19179", "open a drawer", refuse=True),
     R("storage_19179", "open the third drawer", refuse=True),

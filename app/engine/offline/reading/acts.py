@@ -36,7 +36,14 @@ class Act:
 
 def _carry(frame: Frame, previous: Frame | None) -> Frame:
     """A verbless clause takes the verb of the one before ("open the left door, then the right one");
-    an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back")."""
+    an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back"); "do the same
+    with the other one" and "the same amount" take its verb and amount."""
+    if frame.same and previous is not None and previous.verb is not None:
+        quantities = replace(frame.quantities, amount=frame.quantities.amount or previous.quantities.amount)
+        if frame.verb is None or frame.verb == "do":
+            return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
+                           themes=frame.themes or previous.themes)
+        return replace(frame, quantities=quantities)
     if frame.verb is not None or previous is None or previous.verb is None:
         return frame
     amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None)
@@ -82,10 +89,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, replace(frame, themes=previous.themes, subject_theme=True)))
             continue
         if frame.link is Link.CONDITION or frame.stative:
-            if frame.link is Link.CONDITION and acts and frame.clause > acts[-1].goal.clause:
-                acts.insert(len(acts) - 1, Act(goal=frame, condition=True))
+            if frame.link is Link.CONDITION and acts and frame.clause > acts[-1].goal.clause and frame.marker in ("while", "whilst", "as"):
+                acts.insert(len(acts) - 1, Act(goal=frame, condition=True))  # "B while the door is open": before B
             elif frame.link is Link.CONDITION or frame.marker in ("once", "when", "after"):
-                pending_conditions.append(frame)
+                pending_conditions.append(frame)  # "A and, once it is out, B": a state to reach before B
             else:
                 acts.append(Act(goal=frame, condition=True))  # "the drawer is sticking out; push it shut": sets "it"
             continue
@@ -107,6 +114,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         else:
             acts.append(act)
         previous_goal = frame
+    for condition in pending_conditions:  # "B once the door is open": the state comes before B
+        acts.insert(max(len(acts) - 1, 0), Act(goal=condition, condition=True))
     if pending_wait and acts:
         acts[-1] = replace(acts[-1], hold_s=acts[-1].hold_s + pending_wait)
     return acts

@@ -29,6 +29,7 @@ from app.engine.lexicon.words import (
     SIZES,
     SPATIAL,
     SPEEDS,
+    STATIVE_VERBS,
 )
 from app.engine.offline.reading.mentions import kind_at
 from app.engine.offline.reading.tokens import Token
@@ -89,6 +90,8 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     previous = tokens[i - 1].text if i > 0 else ""
     if previous in _NOT_BEFORE_VERB:
         return False
+    if token.text in STATIVE_VERBS and token.text.endswith("ing"):
+        return False  # "standing at the sink, ...": where the user is, not an action
     if token.text in SPATIAL and token.text != token.lemma:
         return False  # "left" is not "leave"
     if token.text in SPATIAL or kind_at(tokens, i) is not None:

@@ -17,6 +17,7 @@ from app.engine.lexicon.words import (
     INSTRUMENT,
     LIGHT_VERBS,
     ORDINALS,
+    PLACES,
     SIMULTANEOUS,
     SPATIAL,
     STATIVE_VERBS,
@@ -74,6 +75,14 @@ class Frame:
     """"open both doors, left one first": which of the themes goes first."""
     brief: bool = False
     """A brief press ("tap", "briefly", "a quick press"): a control that would hold is let go at once."""
+    same: bool = False
+    """"do the same (with the other one)", "the same amount": the previous act's verb and amount."""
+    in_turn: str | None = None
+    """"one by one", "left to right": the themes move one after another, in this order."""
+    wish: bool = False
+    """"I need the rack out": the clause names the end state wanted (its state word gives the sense)."""
+    explicit_return: bool = False
+    """Said in words ("to where it was", "its original angle"), not only a "back" particle."""
 
 
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
@@ -125,6 +134,9 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
             if word == "on" and not adjacent and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
                 continue  # "push the bin on its wheels"
             if word == "off" and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
+                place = next((t for t in tokens[i + 1:i + 4] if t.text not in DETERMINERS), None)
+                if place is not None and place.lemma in PLACES:
+                    continue  # "lift the pot off the stove": where from, not a particle
                 return "off", i  # "take the lid off the box"
             return word, i
         hinge = VERBS.get(tokens[verb].lemma)
@@ -238,8 +250,25 @@ def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
     return None, tokens
 
 
+_SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
+_IN_TURN = {"one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
+            "in_sequence": "reading", "in_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
+            "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
+_WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
+_STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": VerbSense.OPEN, "closed": VerbSense.CLOSE, "shut": VerbSense.CLOSE,
+                 "up": VerbSense.RAISE, "down": VerbSense.LOWER, "in": VerbSense.PUSH_IN}
+
+
+def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
+    """"I need the rack out": drop the wish; what is left names a part and its wanted state."""
+    if tokens and tokens[0].text in _WISHES:
+        return True, tokens[1:]
+    return False, tokens
+
+
 def build_frame(clause: Clause) -> Frame:
-    first, tokens = _first_of(_light_verb(list(clause.tokens)))
+    wish, wished = _wish(list(clause.tokens))
+    first, tokens = _first_of(_light_verb(wished))
     quantities = read_quantities(tokens)
     verb_index = _find_verb(tokens)
     verb = tokens[verb_index].lemma if verb_index is not None else None
@@ -267,7 +296,10 @@ def build_frame(clause: Clause) -> Frame:
         if inner is not None:  # "let the lid drop": the lid does what the inner verb says, on its own
             verb = tokens[inner].lemma
             particle, _ = _particle(tokens, inner, objects)
+            themes = [m for m in themes if not m.start <= inner < m.end]  # "make some toast": toast is the action
     sense = _sense(verb, particle) if verb in VERBS else None
+    if wish and verb is None:
+        sense = next((_STATE_SENSES[t.text] for t in tokens if t.text in _STATE_SENSES), VerbSense.OPEN)
     if let and verb in CAUSATIVES:
         sense = VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)  # "let the door down", "let go"
     elif let and (sense is None or particle == "go"):
@@ -281,13 +313,15 @@ def build_frame(clause: Clause) -> Frame:
     if verb_index is None and "back" in words:
         particle = "back"  # "then 0.3 m back"
     returning = sense is VerbSense.RETURN or bool(words & _RETURN_WORDS) or (particle == "back" and sense in (VerbSense.RETURN, None))
-    hold = sense is VerbSense.HOLD or "hold" in extra or "keep" in extra
+    hold = sense is VerbSense.HOLD or verb in ("hold", "keep") or "hold" in extra or "keep" in extra
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra,
         codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
+        same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
+        explicit_return=bool(words & _RETURN_WORDS),
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )
 

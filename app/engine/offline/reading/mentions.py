@@ -20,6 +20,7 @@ from app.engine.lexicon.words import (
     COLLECTIVE,
     DETERMINERS,
     OBJECT_NOUNS,
+    OBJECT_SUFFIXES,
     ORDINALS,
     OTHER_WORDS,
     PRONOUNS,
@@ -38,7 +39,8 @@ _STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", 
                    "again", "fully", "halfway", "slightly", "way", "there", "here", "away", "together", "apart",
                    "of", "on", "in", "at", "from", "inside", "behind", "near", "under", "below", "above", "beside", "next_to",
                    "in_front_of", "on_top_of", "out_of", "against", "beneath", "underneath", "where", "when", "once",
-                   "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just",
+                   "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
+                   "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must",
                    "still", "really", "right_away", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 _NOT_HEADS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
@@ -78,6 +80,10 @@ class Mention:
     owner: Mention | None = None
     whose: str | None = None
     """The object that owns the part, when the prompt says so ("the stapler's magazine", "the magazine of the stapler")."""
+    one_of: bool = False
+    """"one of the knobs": the user leaves the choice among them."""
+    relation: tuple[str, Mention] | None = None
+    """"the key right below it", "the knob next to the door": (below / above / beside / left / right, the reference)."""
     start: int = 0
     end: int = 0
     """Token span inside the clause."""
@@ -190,6 +196,12 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             sides.append(SPATIAL[word])
         elif word in SIZES:
             size = SIZES[word]
+        elif word in ("one", "any", "either") and not nouns and not unknown and i + 1 < len(tokens) and tokens[i + 1].text == "of":
+            inner, _ = _phrase(tokens, i + 2, used)  # "one of the (two) knobs on the left": the user leaves the choice
+            if inner is not None:
+                inner = _trailing(tokens, inner, used, [])
+                return replace(inner, one_of=True, plural=False, collective=False, start=begin, words=_words(tokens, begin, inner.end)), inner.end
+            return None, i + 1
         elif word in PRONOUNS or (word in ("one", "ones") and (sides or other or ordinal or size or determiner)):
             pronoun = Mention(head=word, pronoun=word in PRONOUNS, anaphor=word in ("one", "ones"), other=other, sides=tuple(sides),
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
@@ -203,6 +215,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             sides.extend(SPATIAL[part] for part in word.split("-"))  # "upper-left", "bottom-right"
         elif word in PARTICLES:
             break
+        elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
+            nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
         elif (token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word:
             unknown.append(i)
         elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):
@@ -260,8 +274,33 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
     return replace(mention, column=index, end=end, words=_words(tokens, mention.start, end))
 
 
+_RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
+              "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right"}
+_ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
+
+
+def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
+    """"the key (right) below it", "the knob to the left of the dial": a part placed relative to another."""
+    i = mention.end
+    while i < len(tokens) and tokens[i].text in _ADVERBS:
+        i += 1
+    if i >= len(tokens) or tokens[i].text not in _RELATIONS:
+        return None
+    relation = _RELATIONS[tokens[i].text]
+    j = i + 1
+    if j < len(tokens) and tokens[j].text == "of":
+        j += 1
+    reference, end = _phrase(tokens, j, used)
+    if reference is None or not (reference.pronoun or reference.kind is not None or reference.anaphor):
+        return None
+    return replace(mention, relation=(relation, reference), end=end, words=_words(tokens, mention.start, end))
+
+
 def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earlier: list[Mention]) -> Mention:
-    """Attach "on the left", "from the top", "in the bottom row", "of the door" after a phrase."""
+    """Attach "on the left", "from the top", "in the bottom row", "of the door", "below it" after a phrase."""
+    related = _related(tokens, mention, used)
+    if related is not None:
+        return related
     i = mention.end
     if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from"}:
         return mention

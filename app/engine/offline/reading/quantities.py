@@ -39,6 +39,22 @@ _FRACTION_WORDS = {"quarter": 0.25, "half": 0.5, "full": 1.0, "complete": 1.0, "
 _CLOSED_WORDS = frozenset({"closed", "shut", "close"})
 
 
+_DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second_and_a_half": 1.5, "half_a_second": 0.5}
+_POSITION_DIRECTIONS = {"to_the_top": "up", "to_the_very_top": "up", "to_the_bottom": "down", "to_the_very_bottom": "down",
+                        "as_high_as_it_goes": "up", "as_high_as_possible": "up", "as_low_as_it_goes": "down", "as_low_as_possible": "down"}
+_SIDE_PREPS = frozenset({"toward", "towards", "against", "onto", "over"})
+_SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right"}
+
+
+def _side_after(tokens: list[Token], j: int) -> str | None:
+    """"(toward) the front / the back of the bucket / the left side": a side of the object as a direction."""
+    while j < len(tokens) and tokens[j].text in ("the", "its", "their", "it's"):
+        j += 1
+    if j < len(tokens) and tokens[j].text in _SIDE_DIRECTIONS:
+        return _SIDE_DIRECTIONS[tokens[j].text]
+    return None
+
+
 @dataclass(frozen=True)
 class Amount:
     """How far: a fraction of the part's range, or an angle (rad) or a distance (m)."""
@@ -193,6 +209,17 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             used.update((i, i + 1))
             i += 2
             continue
+        if token.text in _DURATION_PHRASES:
+            values["duration_s"] = _DURATION_PHRASES[token.text]
+            used.add(i)
+            i += 1
+            continue
+        if token.text in _POSITION_DIRECTIONS and "direction" not in values:
+            values["direction"] = _POSITION_DIRECTIONS[token.text]  # "to the very top": all the way up
+        if token.text in _SIDE_PREPS and nxt is not None:
+            side = _side_after(tokens, i + 1)
+            if side is not None and "direction" not in values:
+                values["direction"] = side  # "fold the handle down toward the front", "let it fall against the back"
         if token.text in MULTIPLIERS:
             values["times"] = int(MULTIPLIERS[token.text])
             used.add(i)

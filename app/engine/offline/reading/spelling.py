@@ -119,9 +119,36 @@ def correct(token: Token, known: frozenset[str]) -> Token:
     from app.engine.offline.reading.tokens import lemma_of
 
     lemma, _ = lemma_of(word)
-    if lemma in domain_words() or lemma in known or _is_english(word):
+    if lemma in domain_words() or lemma in known:
         return token
     fixed = suggest(word, domain_words() | known)
     if fixed is None:
         return token
+    if _is_english(word) and not _rare_beside(word, fixed):
+        return token
     return replace(token, text=fixed, lemma=fixed, corrected_from=word)
+
+
+RARE_WORD_COUNT = 1000
+MUCH_COMMONER = 10
+
+
+def _rare_beside(word: str, candidate: str) -> bool:
+    """A rare English word one slip away from a much commoner domain word is a typo of it ("dor" -> "door",
+    "pul" -> "pull", "trey" -> "tray"); a common word is left alone."""
+    frequency = _english()
+    own, other = int(frequency[word]), int(frequency[candidate])  # type: ignore[index]
+    return own < RARE_WORD_COUNT and other >= MUCH_COMMONER * max(own, 1) and candidate in content_words()
+
+
+@lru_cache(maxsize=1)
+def content_words() -> frozenset[str]:
+    """Domain words that name parts, objects and actions (never function words)."""
+    words: set[str] = set()
+    for entry in REGISTRY.values():
+        for phrase in entry.words:
+            words.update(phrase.replace("-", " ").split())
+    words.update(VERBS)
+    words.update(OBJECT_NOUNS)
+    words.update(w for w in SPATIAL if w.isalpha())
+    return frozenset(words)

@@ -1,0 +1,61 @@
+"""What users call each kind of object, by the asset's own category (the stem of its name).
+
+"open the trunk" on a microwave names some other object: the agent refuses rather than open the
+microwave's door. A noun in no family ("the thing", "the unit", "the machine") fits any object, and
+an asset whose category is not listed here is never second-guessed.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
+
+_CONTAINERS = frozenset({"box", "case", "chest", "crate", "container", "tin", "carton", "package", "coffer", "cashbox", "lockbox",
+                         "strongbox", "toolbox", "lunchbox", "breadbox", "trunk", "footlocker", "cooler", "casket", "storage"})
+_FURNITURE = frozenset({"cabinet", "cupboard", "dresser", "wardrobe", "storage", "nightstand", "bedside", "locker", "bookcase", "desk",
+                        "bureau", "sideboard", "credenza", "armoire", "tallboy", "commode", "chest", "chest_of_drawers", "vanity", "hutch",
+                        "cubby", "closet", "pantry", "bank_of_drawers", "set_of_drawers", "table", "furniture", "drawers", "unit"})
+_BINS = frozenset({"bin", "trash", "trashcan", "can", "dustbin", "garbage", "wheelie", "dumpster", "hamper", "basket"})
+_COOKERS = frozenset({"oven", "stove", "cooker", "range", "grill"})
+_TAPS = frozenset({"faucet", "tap", "mixer", "spigot", "basin", "sink", "valve"})
+_BAGS = frozenset({"bag", "handbag", "purse", "tote", "case", "luggage", "suitcase", "briefcase"})
+_POTS = frozenset({"pot", "saucepan", "casserole", "pan", "kettle"})
+_VEHICLES = frozenset({"car", "toy", "cart", "trolley", "vehicle", "truck", "bus", "wagon", "stroller", "pram", "buggy"})
+
+OBJECT_FAMILIES: Mapping[str, frozenset[str]] = MappingProxyType({
+    "storage": _FURNITURE | _CONTAINERS,
+    "cabinet": _FURNITURE | _CONTAINERS,
+    "box": _CONTAINERS | _FURNITURE | {"suitcase", "briefcase"},
+    "safe": frozenset({"safe", "vault", "strongbox", "lockbox", "box", "cabinet", "locker", "chest", "coffer", "cashbox"}),
+    "trash": _BINS | {"container"},
+    "pedal": _BINS | {"container"},
+    "bucket": frozenset({"bucket", "pail", "tub", "basket", "can", "container"}),
+    "microwave": frozenset({"microwave", "oven", "cooker"}),
+    "oven": _COOKERS | {"microwave"},
+    "refrigerator": frozenset({"fridge", "refrigerator", "freezer", "cooler", "cabinet"}),
+    "dishwasher": frozenset({"dishwasher", "washer", "cabinet"}),
+    "washing": frozenset({"washer", "washing", "dryer", "laundry"}),
+    "toaster": frozenset({"toaster"}),
+    "coffee": frozenset({"coffee", "espresso", "brewer", "maker", "coffeemaker"}),
+    "faucet": _TAPS,
+    "laptop": frozenset({"laptop", "computer", "notebook", "macbook", "pc", "screen"}),
+    "suitcase": _BAGS | {"trunk", "box"},
+    "bag": _BAGS,
+    "kitchen": _POTS,
+    "kettle": _POTS,
+    "stapler": frozenset({"stapler"}),
+    "toilet": frozenset({"toilet", "loo", "lavatory", "commode"}),
+    "toy": _VEHICLES,
+    "car": _VEHICLES,
+    "cart": _VEHICLES,
+})
+"""Asset category -> the object nouns that can name it."""
+
+NAMED_OBJECTS = frozenset().union(*OBJECT_FAMILIES.values())
+"""Nouns that name some particular kind of object (a noun outside every family fits any object)."""
+
+
+def names_other_object(noun: str, category: str | None) -> bool:
+    """``noun`` names a kind of object this asset (of ``category``) is not."""
+    family = OBJECT_FAMILIES.get(category or "")
+    return family is not None and noun in NAMED_OBJECTS and noun not in family
