@@ -45,10 +45,11 @@ ORDINALS: Mapping[str, int] = MappingProxyType({
 SIZES: Mapping[str, str] = MappingProxyType({
     **dict.fromkeys(("large", "larger", "largest", "big", "bigger", "biggest", "main", "wide", "wider", "widest", "tall", "taller", "tallest",
                      "long", "longer", "longest", "spoked", "huge", "giant"), "large"),
-    **dict.fromkeys(("small", "smaller", "smallest", "little", "tiny", "mini", "narrow", "narrower", "narrowest", "short", "shorter", "shortest"), "small"),
+    **dict.fromkeys(("small", "smaller", "smallest", "little", "tiny", "mini", "narrow", "narrower", "narrowest", "short", "shorter", "shortest",
+                     "stubby", "slim", "thin", "petite", "wee"), "small"),
 })
 COLLECTIVE = frozenset({"both", "all", "every", "each"})
-DETERMINERS = frozenset({"the", "a", "an", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
+DETERMINERS = frozenset({"the", "a", "an", "some", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
 PRONOUNS = frozenset({"it", "them", "they", "itself"})
 OTHER_WORDS = frozenset({"other", "another", "remaining", "opposite"})
 NEGATIONS = frozenset({"not", "never", "don't", "dont", "without", "avoid", "except", "but", "cannot", "can't", "doesn't", "won't", "mustn't"})
@@ -75,7 +76,7 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "two thirds": 2 / 3, "two-thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
     "a third of the way": 1 / 3, "as far as": 1.0, "as high as it goes": 1.0, "as high as possible": 1.0, "as low as it goes": 1.0,
     "as low as possible": 1.0, "as wide as it goes": 1.0, "as far as it will": 1.0, "to the very top": 1.0, "to the top": 1.0,
-    "to the very bottom": 1.0, "to the bottom": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+    "to the very bottom": 1.0, "to the bottom": 1.0, "the rest of the way": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
                            "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
@@ -153,7 +154,7 @@ MULTIWORD: tuple[str, ...] = (
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
-    "to the very top", "to the top", "to the very bottom", "to the bottom",
+    "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "the rest of the way", "rest of the way",
 )
 
 OBJECT_NOUNS: tuple[str, ...] = (
@@ -186,9 +187,12 @@ LIGHT_VERBS = frozenset({"give"})
 """Verbs whose deverbal object is the real action ("give the car a push")."""
 WISH_WORDS = frozenset({"need", "want", "like", "needs", "wants", "would_like", "i'd_like"})
 """"I need the rack out": a wish names the end state wanted."""
+COUPLING_WORDS = frozenset({"linked", "connected", "coupled", "hooked", "attached", "tied", "geared", "joined", "wired", "chained", "ganged"})
+"""Participles that describe how parts are tied together ("the two carriages are linked"): a description, not an action."""
 STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
-                           "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks"})
+                           "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks",
+                           *COUPLING_WORDS})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
 PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
                     "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})

@@ -23,7 +23,7 @@ from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for
-from app.engine.offline.grounding import Part, movable_parts, openable
+from app.engine.offline.grounding import Part, movable_parts, narrow, openable
 from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.frames import CODE_VERBS, Frame
@@ -95,6 +95,11 @@ class Builder:
         group = [p for p in found if p.kind == first_kind]
         if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):
             return group
+        sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ())
+        if sides and len(group) > 1:  # "open the lower oven": the door on that side
+            placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, self.asset, self.tracker.obj, [], set())
+            if len(placed) == 1:
+                return placed
         largest = group[0].geometry.size
         same = [p for p in group if p.geometry.size >= largest / 1.5]
         if len(same) == 1:
@@ -129,7 +134,7 @@ class Builder:
     def _only_part(self, frame: Frame, mention: Mention) -> list[Part]:
         """A part name we do not know, tied to the object ("the stapler's magazine") on an object with one
         movable part, with a verb that part can do: that part, with a warning; never a bare guess."""
-        if mention.whose is None or len(self.parts) != 1 or self.refs.ground(mention).parts:
+        if mention.whose is None or mention.kind is not None or len(self.parts) != 1 or self.refs.ground(mention).parts:
             return []
         part = self.parts[0]
         sense = frame.sense
@@ -153,6 +158,11 @@ class Builder:
             if loose and amount is not None and choice.goal.amount is not None:
                 self.notes.append(f"read '{amount.words}' as {amount.value:.0%} of the way for {part.link}")
             limit = beyond_limit(choice.goal, part, self.tracker)
+            if limit is not None and choice.goal.state in ("cw", "ccw") and frame.quantities.sense is None:
+                flipped = choice.goal.model_copy(update={"state": "ccw" if choice.goal.state == "cw" else "cw"})
+                if abs(limit - self.tracker.value(part.joint)) <= 1e-6 and beyond_limit(flipped, part, self.tracker) is None:
+                    self.notes.append(f"turned {part.link} ({part.joint}) {flipped.state}: it cannot turn {choice.goal.state} from where it is")
+                    choice, limit = replace(choice, goal=flipped), None
             if limit is not None:
                 self.notes.append(f"{part.link} ({part.joint}) cannot go that far: it stops at its limit {limit:.4g}")
             out.append(Move(part, own_role, choice.goal, words=said, loose=loose))
@@ -164,7 +174,8 @@ class Builder:
                 parts, _ = self.ground(frame, VerbSense.RETURN, frame.themes)
             except GroundingError:
                 parts = []
-            if parts and all(mech.is_control(p) for p in parts):
+            moved = any(abs(self.tracker.value(p.joint) - p.geometry.rest) > 1e-6 or self.worked_before(p) for p in parts)
+            if parts and all(mech.is_control(p) for p in parts) and moved:
                 return VerbSense.RETURN  # "flip the switch back": a control goes back, a lid flips open
         if frame.sense is VerbSense.RELEASE and not means and frame.themes and not frame.let:
             # "release the door (by pressing the button)": a door is released by popping it open

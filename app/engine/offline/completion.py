@@ -79,11 +79,14 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     if sense is VerbSense.RELEASE:
         effects = effects + _let_fall(builder, controls)
     original_controls = list(controls)
+    for move in controls:
+        if builder.reached(move) and move.release != "held" and why == "asked":
+            builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {_as_far(move.goal.state)}: it did not move")
     controls = [m for m in controls if not builder.reached(m) or m.release == "held"]
     kept = []
     for move in effects:
         if builder.reached(move):
-            builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {move.goal.state}")
+            builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {_as_far(move.goal.state)}")
             continue
         kept.append(move)
     if not controls and not kept and (effects or original_controls):
@@ -142,10 +145,11 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
         themes = tuple(m for m in frame.themes if not m.pronoun)
         current = [m.part for m in out] or implicit or [m.part for m in controls]
         try:
-            parts, words = builder.ground(frame, sense, themes) if themes else (current or builder.refs.pronoun(), [])
-        except GroundingError:
+            parts, words = builder.ground(frame, sense, themes, prefer=current) if themes else (current or builder.refs.pronoun(), [])
+        except GroundingError as exc:
             if not themes:
                 raise
+            builder.notes.append(f"left out '{frame.text}': {str(exc).split('. Movable parts')[0]}")
             parts, words = [], []
         if not parts and not themes and not out:
             continue
@@ -235,6 +239,8 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
             out.append(replace(move, release="self_return"))  # "tap the lever (down) briefly": pressed and let go
         elif mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
             out.append(replace(move, release="held"))
+        elif move.goal.state == "closed" and sense in (VerbSense.LOCK, VerbSense.CLOSE):
+            out.append(replace(move, release="stays"))  # "lock the latch": it stays locked
         elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat"):
             out.append(replace(move, release="self_return"))
         else:
@@ -274,3 +280,10 @@ def _let_fall(builder: Builder, controls: list[Move]) -> list[Move]:
             part = next(p for p in builder.parts if p.joint == effect_joint)
             out.append(Move(part, "effect", Goal(state="previous"), words=""))
     return out
+
+
+def _as_far(state: str) -> str:
+    """"already closed", "already as far left as it goes"."""
+    directions = {"left": "left", "right": "right", "forward": "forward", "backward": "back", "up": "up", "down": "down", "toward": "that way",
+                  "cw": "clockwise", "ccw": "counter-clockwise"}
+    return f"as far {directions[state]} as it goes" if state in directions else state

@@ -10,14 +10,14 @@ front (where doors, drawers and controls face), up (+Z) and the viewer's right.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 
 import numpy as np
 
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.lexicon.kinds import CONTROL_KINDS, PartKind, kind_of_label
+from app.engine.lexicon.kinds import CONTROL_KINDS, HINGED_KINDS, PartKind, info, kind_of_label
 from app.engine.offline.naming import link_kind, tokens
 from app.engine.types import FloatArray
 
@@ -266,6 +266,26 @@ def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
     return front
 
 
+def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeometry]) -> dict[str, JointGeometry]:
+    """A latch whose shape does not say which end is shut was modelled in the state of the door or lid it holds:
+    with its host modelled open it rests unlatched, with its host modelled shut it rests latched."""
+    hosts = [g for g in joints.values() if g.category in HINGED_KINDS and g.closed_value is not None]
+    out = dict(joints)
+    for name, latch in joints.items():
+        kind = latch.category
+        if kind is None or not info(kind).latches_host or latch.closed_value is not None or latch.lower is None or latch.upper is None:
+            continue
+        mine = [h for h in hosts if latch.child in asset.descendants(h.child)] or (hosts if len(hosts) == 1 else [])
+        if len(mine) != 1:
+            continue
+        host = mine[0]
+        other = latch.upper if abs(latch.rest - latch.lower) <= abs(latch.rest - latch.upper) else latch.lower
+        host_open = abs(host.rest - (host.closed_value or 0.0)) > 1e-3
+        closed, opened = (other, latch.rest) if host_open else (latch.rest, other)
+        out[name] = replace(latch, closed_value=closed, open_value=opened)
+    return out
+
+
 @lru_cache(maxsize=64)
 def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     points = _local_points(asset)
@@ -273,7 +293,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     everything = _posed(points, rest, asset.visual_links)
     low, high = everything.min(axis=0), everything.max(axis=0)
     center = (low + high) / 2.0
-    joints = {j: _joint_geometry(asset, j, points, rest) for j in asset.controllable_joints}
+    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest) for j in asset.controllable_joints})
     front = infer_front(joints, center, asset)
     right = np.cross(-front, UP)
     return ObjectGeometry(

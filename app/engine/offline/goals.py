@@ -71,7 +71,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     geometry = part.geometry
     rotates = geometry.type in ("revolute", "continuous")
     absolute = quantities.amount is not None and quantities.amount.reference == "closed"
-    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS):
+    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
+                                                  or frame.explicit_return):
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:
         return "open"  # "let it fall back to 60 degrees": a position measured from closed
@@ -91,6 +92,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "closed"  # "push it back 10 cm": toward closed, from where it is
     if quantities.axis is not None and sense is not VerbSense.SPIN and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None):
         return "toward"  # "swing the handle down onto the rim on the -X side"
+    if (frame.particle == "back" and quantities.direction is None and rotates and part_class_ is not PartClass.OPENABLE and not frame.returning
+            and geometry.open_value is None):
+        return "backward"  # "flip the handle back" (from where it rests): toward the back of the object
     rolls = part.kind is not None and info(part.kind).rolls
     if quantities.direction in _DIRECTIONAL and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None) and not (
             part_class_ is PartClass.PUSHED and geometry.type == "prismatic"):
@@ -102,6 +106,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         if not lid and geometry.up_value is not None and geometry.down_value is not None and geometry.open_value is not None:
             return "up" if sense is VerbSense.RAISE else "down"  # an oven door lowers open, a lid lifts open
     state = END_STATE[sense][part_class_]
+    if state == "rest" and sense in (VerbSense.LOCK, VerbSense.CLOSE) and geometry.closed_value is not None:
+        return "closed"  # a latch whose shut end is known (from the lid it holds)
     if state == "open" and geometry.open_value is None and part_class_ is PartClass.OPENABLE and geometry.up_value is not None and sense is VerbSense.RAISE:
         return "up"
     if sense is VerbSense.RAISE and part_class_ is not PartClass.OPENABLE and geometry.up_value is None:

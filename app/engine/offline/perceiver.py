@@ -69,6 +69,12 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     for act in acts:
+        if act.goal.heading and act is not acts[-1]:
+            try:
+                builder.add(act)
+            except GroundingError:
+                builder.notes.append(f"read '{act.goal.text}' as a heading for what follows")
+            continue
         builder.add(act)
     if not builder.steps:
         raise builder.refs.refuse(f"could not find an action in '{prompt}'")

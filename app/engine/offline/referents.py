@@ -56,8 +56,11 @@ class Referents:
         movable = [p.describe(self.asset) for p in self.parts]
         if candidates:
             names = name_each(candidates, self.asset, self.obj)
-            choice = ", ".join(names[:-1]) + f" or {names[-1]}"
             listing = "; ".join(movable)
+            if len(names) == 1:
+                return GroundingError(f"{why}: the only one is {names[0]}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable,
+                                      candidates=names)
+            choice = ", ".join(names[:-1]) + f" or {names[-1]}"
             return GroundingError(f"{why}: say which — {choice}. Movable parts of {self.asset.name}: {listing}", movable_parts=movable, candidates=names)
         if not movable:
             return GroundingError(f"{why}: {self.asset.name} has no movable parts to animate (it can only move as a whole: push, lift or turn it)",
@@ -88,6 +91,11 @@ class Referents:
             return Grounding()
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
+        if mention.region and len(candidates) > 1:
+            candidates = self._compartment(mention, candidates) or candidates
+        hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
+        if mention.possessive and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
+            candidates = self._behind(hosts[0], candidates) or candidates  # "open the top door; its rack ...": the rack behind it
         kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced)
         if mention.relation is not None and kept:
             kept = self._placed(mention.relation, kept)
@@ -112,10 +120,20 @@ class Referents:
             preferred = [p for p in kept if p in prefer]
             if len(preferred) == 1:
                 return Grounding(parts=(preferred[0],), how=how, notes=tuple(notes))
+        seen = [p for p in kept if p.joint in self.referenced]
+        if len(seen) == 1 and not _qualified(mention):
+            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one the prompt already worked ({seen[0].link})")
+            return Grounding(parts=(seen[0],), how=how, notes=tuple(notes))
         front = [p for p in kept if position(p, self.obj)[0] > 0]
         if all(p.kind is not None and info(p.kind).control for p in kept) and len(front) == 1:
             notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one on the front ({front[0].link})")
             return Grounding(parts=(front[0],), how=how, notes=tuple(notes))
+        if (kind is not None and info(kind).lid_like) or all(p.kind is not None and info(p.kind).lid_like for p in kept):
+            heights = sorted(((position(p, self.obj)[2], p) for p in kept), key=lambda hp: hp[0], reverse=True)
+            if heights[0][0] - heights[1][0] > 0.25 * self.obj.extents[2]:
+                top = heights[0][1]
+                notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one on top ({top.link})")
+                return Grounding(parts=(top,), how=how, notes=tuple(notes))
         if not similar(kept):
             chosen = max(kept, key=lambda p: p.geometry.size)
             label = kind.value if kind is not None else mention.head
@@ -140,7 +158,7 @@ class Referents:
             candidates_of[key] = candidates
         for key, group in pools.items():
             heads = {m.head for m in group}
-            if len(heads) < 2:
+            if len({h.split()[-1] for h in heads}) < 2:  # "the oven door ... the door": one noun, not two names
                 continue
             taken: dict[str, Part] = {}
             for mention in group:
@@ -191,6 +209,30 @@ class Referents:
                 note = f"{self.asset.name} has no movable {mention.kind.value if mention.kind else mention.head}: read '{mention.words}' as the {word}"
                 return list(found.parts), [*found.notes, note]
         return None
+
+    def _compartment(self, mention: Mention, candidates: list[Part]) -> list[Part]:
+        """"the rack of the top oven": the candidates the door on that side of the object closes in."""
+        doors = [p for p in self.parts if p.kind is not None and info(p.kind).hinged and p not in candidates]
+        if len(doors) < 2:
+            return []
+        door_mention = Mention(head="door", kind=doors[0].kind, sides=mention.region)
+        chosen, _ = narrow(door_mention, doors, self.asset, self.obj, [], set())
+        if len(chosen) != 1:
+            return []
+        return self._behind(chosen[0], candidates)
+
+    def _behind(self, door: Part, candidates: list[Part]) -> list[Part]:
+        """The candidates ``door`` closes in (its closed leaf blocks their way out)."""
+        from app.engine.offline.collisions import blocking_joints
+        from app.engine.offline.resolve import closed_of, open_of
+
+        state = {door.joint: closed_of(door.geometry)}
+        inside = []
+        for part in candidates:
+            target = open_of(part.geometry)
+            if target is not None and door.joint in blocking_joints(self.asset, part.joint, target, state):
+                inside.append(part)
+        return inside
 
     def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
         """The candidate nearest to the reference part in the named direction ("the key right below it")."""

@@ -23,8 +23,14 @@ from tests.conftest import EXAMPLES, partnet_root
 
 @cache
 def asset(name: str) -> ArticulatedAsset:
-    """``examples/<x>`` from the repo, anything else from the PartNet folder."""
-    path = EXAMPLES / name.split("/", 1)[1] if name.startswith("examples/") else partnet_root() / name
+    """``examples/<x>`` from the repo, ``extra/<x>`` from the partnet-extra folder next to the PartNet one (dev assets
+    only: the held-out split's assets never appear in these tests), anything else from the PartNet folder."""
+    if name.startswith("examples/"):
+        path = EXAMPLES / name.split("/", 1)[1]
+    elif name.startswith("extra/"):
+        path = partnet_root().parent / "partnet-extra" / name.split("/", 1)[1]
+    else:
+        path = partnet_root() / name
     return load_asset(Path(path))
 
 

@@ -378,6 +378,28 @@ ROWS: list[Row] = [
     R("examples/cabinet", "open the cupboard door without touching the knob", joints={"door_hinge": E(end="lower"), "latch_knob_turn": E(still=True)}),
     R("toilet_102622", "flush the toilet", refuse=True),
     R("examples/toy_car", "push the car forward 20 cm, then turn it around", base=None, yaw_deg=180.0),
+    # --- blind dev probe, round 2 (benchmark/probes/dev_prompts.jsonl; dev assets from partnet-extra) ---
+    R("examples/microwave", "open the trunk", refuse=True),
+    R("extra/oven_7179", "I need the rack out of the top oven.", joints={"joint_4": E(end="upper"), "joint_0": E(end="upper"), "joint_1": E(still=True)},
+      order=(("joint_4", "joint_0"),)),
+    R("extra/oven_7179", "Open the lower oven, then shut the door.", joints={"joint_3": E(end=0.0), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "Open the upper oven door; its rack is hooked to the door and slides out 15 cm as the door comes down.",
+      joints={"joint_4": E(end="upper"), "joint_0": E(end=0.15)}),
+    R("extra/oven_7179", "Pull out the rack of the lower oven.", refuse=True),
+    R("extra/box_100214", "clsoe the lid and lock both latchs", joints={"joint_0": E(end="lower"), "joint_1": E(end="upper"), "joint_2": E(end="upper")}),
+    R("extra/box_100214", "Lower the lid until it is open only about 45 degrees.", joints={"joint_0": E(end=-1.6755 + PI / 4)}),
+    R("extra/coffee_machine_102145", "Raise the lid.", joints={"joint_1": E(end="upper"), "joint_2": E(still=True)}),
+    R("extra/coffee_machine_102145", "Flick the stubby lever on top of the brewing head to the right and let it go.", joints={"joint_0": E(peak="upper")}),
+    R("extra/toaster_103473", "Hold the back lever down for a second and a half, then release it.", joints={"joint_1": E(end=0.0), "joint_0": E(still=True)}),
+    R("extra/toaster_103473", "Press the front lever down; the two carriages are linked, so the back lever follows it down.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("extra/safe_101623", "Lock up the safe: swing the door shut and give the spoked wheel a quarter turn clockwise.", joints={"joint_2": E(still=True)}),
+    R("extra/storage_20279", "Open the second drawer of the desk.", refuse=True),
+    R("extra/storage_24644", "Turn the side table around so the drawer faces the wall.", joints={"joint_0": E(still=True)}, yaw_deg=180.0),
+    R("extra/suitcase_100550", "Flip the handle back, then swing the front half of the case open.", joints={"joint_0": E(end="upper")}),
+    R("refrigerator_11178", "Open the left door 90 degrees and close it, then open the other one the same amount.", joints={"joint_1": E(end=PI / 2)}),
+    R("faucet_148", "Standing at the sink facing the faucet, swing its lever 90 degrees to the left.", joints={"joint_0": E(end=PI / 2)},
+      base=(0.0, 0.0, 0.0)),
 ]
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 
 from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.words import COUPLING_WORDS
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 
@@ -34,15 +35,17 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
-def _carry(frame: Frame, previous: Frame | None) -> Frame:
+def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     """A verbless clause takes the verb of the one before ("open the left door, then the right one");
     an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back"); "do the same
     with the other one" and "the same amount" take its verb and amount."""
     if frame.same and previous is not None and previous.verb is not None:
-        quantities = replace(frame.quantities, amount=frame.quantities.amount or previous.quantities.amount)
+        source = previous if previous.quantities.amount is not None or measured is None else measured  # "the same amount": the last one said
+        quantities = replace(frame.quantities, amount=frame.quantities.amount or source.quantities.amount)
         if frame.verb is None or frame.verb == "do":
+            themes = frame.themes or frame.instruments  # "do the same with the other one": the other one is the theme
             return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
-                           themes=frame.themes or previous.themes)
+                           themes=themes or previous.themes, instruments=() if not frame.themes else frame.instruments)
         return replace(frame, quantities=quantities)
     if frame.verb is not None or previous is None or previous.verb is None:
         return frame
@@ -72,8 +75,23 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     pending_wait = 0.0
     pending_conditions: list[Frame] = []
     previous_goal: Frame | None = None
+    measured: Frame | None = None
+    said: Frame | None = None  # the frame before, whatever became of it
     for frame in frames:
-        frame = _carry(frame, previous_goal)
+        if frame.marker == "which" and not frame.themes and said is not None and said.themes:
+            frame = replace(frame, themes=said.themes[-1:], subject_theme=True)  # "..., which flips up": the noun just before
+        if said is not None and said.stative and COUPLING_WORDS & set(said.text.split()) and said.themes and acts and (
+                frame.conjoined and not frame.themes and frame.verb is not None):
+            # "its rack is hooked to the door and slides out 15 cm": what the tied part does, with the act before
+            acts[-1] = replace(acts[-1], results=(*acts[-1].results, replace(frame, themes=said.themes[:1], subject_theme=True)))
+            said = frame
+            continue
+        said = frame
+        if frame.stative and COUPLING_WORDS & set(frame.text.split()):
+            continue  # "the two carriages are linked": how the parts are tied, told for what follows
+        frame = _carry(frame, previous_goal, measured)
+        if frame.quantities.amount is not None:
+            measured = frame
         if frame.sense is VerbSense.WAIT and not frame.themes:
             pending_wait += frame.quantities.duration_s or DEFAULT_WAIT_S
             continue
@@ -81,14 +99,15 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             if acts:
                 acts[-1] = replace(acts[-1], exclusions=(*acts[-1].exclusions, frame))
             continue
-        if (frame.link is Link.RESULT and acts) or (_is_event(frame) and acts):
+        waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
+        if (frame.link is Link.RESULT and acts) or (_is_event(frame) and acts and not waits_for):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue
         if _is_subjectless_event(frame) and acts and acts[-1].results:
             previous = acts[-1].results[-1]
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, replace(frame, themes=previous.themes, subject_theme=True)))
             continue
-        if frame.link is Link.CONDITION or frame.stative:
+        if frame.link is Link.CONDITION or frame.stative or (waits_for and _is_event(frame)):
             if frame.link is Link.CONDITION and acts and frame.clause > acts[-1].goal.clause and frame.marker in ("while", "whilst", "as"):
                 acts.insert(len(acts) - 1, Act(goal=frame, condition=True))  # "B while the door is open": before B
             elif frame.link is Link.CONDITION or frame.marker in ("once", "when", "after"):

@@ -10,7 +10,7 @@ touching the knob", "don't move the drawer").
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import StrEnum
 
 from app.engine.lexicon.verbs import VERBS
@@ -20,6 +20,7 @@ from app.engine.lexicon.words import (
     CAUSATIVES,
     DETERMINERS,
     FILLERS,
+    LIGHT_VERBS,
     NEGATIONS,
     ORDINALS,
     PARALLEL,
@@ -64,6 +65,8 @@ class Clause:
     """Joined to the previous clause by "and" or a comma (not by a sequence word)."""
     marker: str = ""
     """The connective that opened it ("after", "once", "while", ...)."""
+    heading: bool = False
+    """It ends in a colon: it may only name what the clauses after it do ("Lock up the safe: swing ...")."""
 
     @property
     def text(self) -> str:
@@ -107,14 +110,15 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     j = i
     while j < len(tokens) and (tokens[j].text in FILLERS or tokens[j].text in SPEEDS):
         j += 1
-    if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES):
+    if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
         if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in _NOT_BEFORE_VERB:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
-        if tokens[k].text in _AUX and k > j:
+        stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
+        if (tokens[k].text in _AUX or stative) and k > j:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         k += 1
     return False
@@ -193,7 +197,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             current.append(token)
             i += 1
             continue
+        count = len(clauses)
         close()
+        if word == ":" and len(clauses) > count:
+            clauses[-1] = replace(clauses[-1], heading=True)
         current = []
         link, marker, conjoined = boundary
         if word in ("while", "whilst", "as", "once", "when", "after") and _condition(tokens, nxt):

@@ -64,6 +64,7 @@ class Frame:
     goes_first: bool = False
     conjoined: bool = False
     marker: str = ""
+    heading: bool = False
     simultaneous: bool = False
     manual: bool = False
     stative: bool = False
@@ -231,7 +232,8 @@ def _code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[
             continue
         if i in used:
             continue
-        if token.number is not None and token.number == int(token.number) and token.number >= 0:
+        counts = i + 1 < len(tokens) and tokens[i + 1].lemma in ("key", "button")  # "the three keys of the top row": a count
+        if token.number is not None and token.number == int(token.number) and token.number >= 0 and not counts:
             items.extend(("digit", d) for d in token.text.split(".")[0])
             continue
         segment.append(token)
@@ -286,7 +288,9 @@ def build_frame(clause: Clause) -> Frame:
     stative = verb_index is None and any(t.text in STATIVE_VERBS for t in tokens)
     intransitive = _intransitive(tokens, verb_index)
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
-    subject_theme = bool(subject) and (not themes or stative or intransitive)
+    subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
+    if verb == "follow" and subject:
+        themes = []  # "the back lever follows it (down)": the subject moves, "it" is the leader
     if subject_theme:
         themes = subject + themes
     let = causative or particle == "go"
@@ -317,7 +321,7 @@ def build_frame(clause: Clause) -> Frame:
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
-        goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker,
+        goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra,
         codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,

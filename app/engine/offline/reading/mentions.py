@@ -31,6 +31,7 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.tokens import Token
 
+_REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
 _STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", "until", "while", "for", "into", "onto", "toward",
@@ -78,6 +79,10 @@ class Mention:
     modifiers: tuple[str, ...] = ()
     """Other words before the head ("release" in "the release button")."""
     owner: Mention | None = None
+    region: tuple[tuple[Side, bool], ...] = ()
+    possessive: bool = False
+    """"its rack", "their handles": owned by what the clause before was about."""
+    """Sides of the object the part sits in: "the rack of the top oven" (the compartment behind the top door)."""
     whose: str | None = None
     """The object that owns the part, when the prompt says so ("the stapler's magazine", "the magazine of the stapler")."""
     one_of: bool = False
@@ -157,7 +162,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
     collective = other = False
     nouns: list[tuple[int, int, PartKind | None, bool]] = []  # (start, length, kind, is_object)
     unknown: list[int] = []
-    determiner = False
+    determiner = possessive = False
     whose: str | None = None
     owner: Mention | None = None
     while i < len(tokens) and i not in used and (_nominal(tokens[i]) or _inner(tokens, i, begin) or tokens[i].text == "'s"):
@@ -175,7 +180,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             continue
         if (nouns or unknown) and (word in DETERMINERS or word in COLLECTIVE or word in ORDINALS or word in SPATIAL or word in SIZES):
             break  # "open the right door | first": a qualifier after the head is not part of it
-        if token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and kind_at(tokens, i) is None and not nouns:
+        if (token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and word not in SIZES and kind_at(tokens, i) is None
+                and not nouns and not _object_after(tokens, i, begin)):
             return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
         found = kind_at(tokens, i)
         if found is not None and not (word in SPATIAL and i + 1 < len(tokens) and _nominal(tokens[i + 1]) and kind_at(tokens, i + 1)):
@@ -186,6 +192,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             pass  # "all four wheels", "the closed pedal bin": a count or a state, the noun follows
         elif word in DETERMINERS:
             determiner = True
+            possessive = possessive or word in ("its", "their")
         elif word in COLLECTIVE:
             collective = True
         elif word in OTHER_WORDS:
@@ -247,13 +254,27 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         plural = tokens[head_index].plural or collective
         head_word = tokens[head_index].lemma
     return Mention(head=head_word, kind=kind, is_object=is_object, other=other, sides=tuple(sides), ordinal=ordinal, size=size, plural=plural,
-                   collective=collective, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
+                   collective=collective, possessive=possessive, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
                    words=_words(tokens, begin, end)), end
+
+
+_PLACE_PREPS = frozenset({"on", "off", "onto", "from", "along", "across", "against", "over", "under", "at", "to", "toward", "towards", "into",
+                          "in", "by", "near", "beside", "next_to", "on_top_of"})
+
+
+def _object_after(tokens: list[Token], i: int, begin: int) -> bool:
+    """"turn the (side) table around": the object itself, unless a preposition makes it a place ("push it along the table")."""
+    if begin > 0 and tokens[begin - 1].text in _PLACE_PREPS:
+        return False
+    j = i + 1 if tokens[i].lemma not in _OBJECT_WORDS else i
+    return j < len(tokens) and tokens[j].lemma in _OBJECT_WORDS
 
 
 def _inner(tokens: list[Token], i: int, begin: int) -> bool:
     """A count or state adjective inside a phrase ("all four wheels", "the closed lid"): a noun follows."""
     token = tokens[i]
+    if token.text == "back" and i > begin and i + 1 < len(tokens) and kind_at(tokens, i + 1) is not None:
+        return True  # "the back lever", "the back door": a side, not the particle
     inside = i > begin and (token.number is not None or token.text in ("open", "closed", "shut", "opened"))
     return inside and i + 1 < len(tokens) and _nominal(tokens[i + 1])
 
@@ -302,7 +323,7 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     if related is not None:
         return related
     i = mention.end
-    if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from"}:
+    if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of"}:
         return mention
     prep = tokens[i].text
     j = i + 1
@@ -322,16 +343,21 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
             placed = replace(mention, sides=(*mention.sides, SPATIAL[word]), end=end, words=_words(tokens, mention.start, end))
             return _trailing(tokens, placed, used, earlier) if end < len(tokens) and tokens[end].text == "of" else placed
         return mention
-    if prep in ("of", "on", "in", "at", "inside"):
+    if prep in ("of", "on", "in", "at", "inside", "out_of", "from"):
         owner, end = _phrase(tokens, j, used)
+        if prep in ("out_of", "from") and not (owner is not None and owner.is_object and owner.sides):
+            return mention  # "pull the tray out of the oven": where it goes, not which one
         if owner is not None and owner.head in _LINE_WORDS and (owner.ordinal is not None or owner.sides):
             index = owner.ordinal if owner.ordinal is not None else _line_index(owner.sides[0][0].value)
             return _lined(mention, owner.head, index, end, tokens)  # "the keypad's second row"
         if owner is not None and (owner.kind is not None or owner.is_object or owner.pronoun):
             owner = _trailing(tokens, owner, used, earlier)
             end = max(end, owner.end)
+            if owner.is_object and mention.kind is None and mention.head in _REGION_NOUNS:
+                return replace(owner, sides=(*mention.sides, *owner.sides), start=mention.start, end=end,
+                               words=_words(tokens, mention.start, end))  # "the front half of the case": the case, on that side
             if owner.is_object:
-                return replace(mention, end=end, words=_words(tokens, mention.start, end), whose=owner.head)
+                return replace(mention, end=end, words=_words(tokens, mention.start, end), whose=owner.head, region=owner.sides)
             return replace(mention, owner=owner, end=end, words=_words(tokens, mention.start, end))
         if owner is not None and owner.kind is None and not owner.anaphor:
             return replace(mention, end=end)  # "the button on the control strip": a place on the object, not a part

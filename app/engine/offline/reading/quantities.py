@@ -21,6 +21,7 @@ from app.engine.lexicon.words import (
     MULTIPLIERS,
     RATE_UNITS,
     ROTATION_SENSE,
+    SPATIAL,
     SPEEDS,
     STATES,
     TIME_UNITS,
@@ -105,12 +106,17 @@ def _axis(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int]
     return None
 
 
+_STATE_COPULAS = frozenset({"is", "it's", "stands", "sits", "stays", "remains", "be", "hangs", "left", "leave", "keep"})
+
+
 def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     """What an amount at tokens[start:end] is measured from, from the words around it."""
-    before = [t.text for t in tokens[max(0, start - 3):start] if t.text not in _ABOUT]
+    before = [t.text for t in tokens[max(0, start - 4):start] if t.text not in _ABOUT and t.text not in ("only", "just")]
     after = [t.text for t in tokens[end:end + 3]]
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
+    if before and before[-1] in ("open", "opened", "ajar") and len(before) > 1 and before[-2] in _STATE_COPULAS:
+        return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"]:
         return "closed"
     if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] == "the" and len(after) > 2 and after[2] in _CLOSED_WORDS)):
@@ -123,6 +129,13 @@ def _markers(tokens: list[Token], start: int, end: int) -> set[int]:
     out = {j for j in range(max(0, start - 2), start) if tokens[j].text in _RELATIVE_BEFORE | _ABOUT | _TO}
     out.update(j for j in range(end, min(len(tokens), end + 1)) if tokens[j].text in _RELATIVE_AFTER)
     return out
+
+
+def _region_noun(tokens: list[Token], i: int) -> bool:
+    """"the front half of the case", "the top half": a part of the object, not an amount."""
+    previous = tokens[i - 1].text if i > 0 else ""
+    following = tokens[i + 1].text if i + 1 < len(tokens) else ""
+    return tokens[i].text == "half" and (previous in SPATIAL or (previous in ("the", "its") and following == "of"))
 
 
 def read_quantities(tokens: list[Token]) -> Quantities:
@@ -223,7 +236,7 @@ def read_quantities(tokens: list[Token]) -> Quantities:
         if token.text in MULTIPLIERS:
             values["times"] = int(MULTIPLIERS[token.text])
             used.add(i)
-        elif token.text.replace("_", " ") in AMOUNTS and amount is None:
+        elif token.text.replace("_", " ") in AMOUNTS and amount is None and not _region_noun(tokens, i):
             phrase = token.text.replace("_", " ")
             amount = Amount(AMOUNTS[phrase], "fraction", loose=phrase in LOOSE_AMOUNTS, words=phrase)
             used.add(i)
