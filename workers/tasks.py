@@ -40,8 +40,8 @@ from app.engine.agents.roles import Roles
 from app.engine.asset.stored import StoredAsset
 from app.engine.config import EngineConfig
 from app.engine.errors import CancelledError, EngineError, ProviderError
+from app.engine.providers.names import MODEL_NAME_PATTERN
 from app.engine.report import RunReport
-from app.schemas.jobs import MODEL_NAME_PATTERN
 from workers.broker import RUN_JOB_TASK
 from workers.cancel_watch import CancelWatch
 from workers.celery_app import app

@@ -8,15 +8,12 @@ from typing import Any, Literal
 from pydantic import BaseModel, ConfigDict, Field, field_validator, model_validator
 
 from app.db.models import JobStatus
+from app.engine.providers.names import MODEL_NAME_PATTERN
 from app.schemas.common import Name, Text, UtcDatetime
 
 MAX_PROMPT_CHARS = 2000
 MAX_MODEL_NAME_CHARS = 200
 MAX_PLAN_CHARS = 1_000_000
-MODEL_NAME_PATTERN = r"^[A-Za-z0-9][A-Za-z0-9._:@+-]*(?:/[A-Za-z0-9][A-Za-z0-9._:@+-]*)*$"
-"""A model name: letters, digits and ``. _ : @ + -``, in ``/``-separated segments that start with a
-letter or digit (``gpt-4.1``, ``gemini-2.5-pro``, ``meta-llama/Llama-3.1-8B``). No ``..`` segment,
-no ``?``, ``#``, ``%`` or spaces: a name never changes the provider URL it may be placed in."""
 
 
 class JobOptions(BaseModel):

@@ -19,6 +19,7 @@ from typing import Any
 from app.engine.errors import ProviderBlocked, ProviderError, ProviderResponseError, ReplyTruncated
 from app.engine.providers.base import Message, ModelRequest, ModelResponse
 from app.engine.providers.http import Exchange, Timeouts, make_client, post_json
+from app.engine.providers.names import valid_model_name
 from app.engine.providers.profiles import OUTPUT_MODES, ModelProfile, OutputMode
 from app.engine.providers.schemas import gemini_schema
 from app.engine.report import TokenUsage
@@ -60,10 +61,12 @@ class GeminiModel:
 
     def __init__(self, model: str, *, api_key: str | None, base_url: str, profile: ModelProfile | None = None,
                  timeouts: Timeouts | None = None, attempts: int = 4) -> None:
+        if not valid_model_name(model):
+            raise ProviderError(f"invalid Gemini model name {model[:100]!r}: letters, digits and . _ : @ + - in /-separated segments")
         self.model = model
         self.profile = profile or ModelProfile()
         self._key = api_key
-        self._url = f"{base_url.rstrip('/')}/models/{model}:generateContent"
+        self._url = f"{base_url.rstrip('/')}/models/{model}:generateContent"  # the name cannot leave this path (checked above)
         self._attempts = attempts
         self._timeouts = timeouts or Timeouts()
         self._mode: OutputMode = self.profile.output_mode

@@ -69,3 +69,19 @@ def test_transport_attempts_and_the_retry_budget() -> None:
         exchange = asyncio.run(call(url))
     assert [a.outcome for a in exchange.attempts] == ["rate_limited"] * 3 and len(script.requests) == 3
     assert all(a.status == 429 for a in exchange.attempts)
+
+
+@pytest.mark.parametrize("name", ["../../admin/delete?confirm=1#", "gemini pro", "models/../x", "a%2Fb", ""])
+def test_a_gemini_model_name_cannot_change_the_url(name: str) -> None:
+    """The name goes into the URL path: anything but plain segments is refused before a request is built."""
+    from app.engine.providers.gemini import GeminiModel
+
+    with pytest.raises(ProviderError, match="invalid Gemini model name"):
+        GeminiModel(name, api_key="k", base_url="http://127.0.0.1:9")
+
+
+@pytest.mark.parametrize("name", ["gemini-2.5-pro", "tunedModels/my-model-1", "gemini-1.5-flash-001"])
+def test_ordinary_gemini_model_names_are_accepted(name: str) -> None:
+    from app.engine.providers.gemini import GeminiModel
+
+    assert GeminiModel(name, api_key="k", base_url="http://127.0.0.1:9").model == name
