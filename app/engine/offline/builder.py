@@ -16,15 +16,16 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import BaseMotion, JointMove, Why
 from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
-from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
+from app.engine.lexicon.kinds import info
 from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for
-from app.engine.offline.grounding import Part, movable_parts, narrow, openable
+from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
+from app.engine.offline.object_parts import object_parts
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.frames import CODE_VERBS, Frame
 from app.engine.offline.reading.mentions import Mention
@@ -41,6 +42,8 @@ REACHED = 1e-6
 
 def _label(part: Part) -> str:
     return part.kind.value if part.kind is not None else "part"
+
+
 _OPENING = frozenset({VerbSense.OPEN, VerbSense.RAISE, VerbSense.PULL_OUT, VerbSense.RECLINE})
 _PRESSING = frozenset({VerbSense.PRESS, VerbSense.OPERATE, VerbSense.PUSH_IN, VerbSense.TOGGLE, VerbSense.SWITCH_ON, VerbSense.HOLD,
                        VerbSense.UNLATCH, VerbSense.TURN, VerbSense.LOWER})
@@ -68,46 +71,7 @@ class Builder:
 
     # --- grounding -----------------------------------------------------------------
     def _object_parts(self, frame: Frame, sense: VerbSense) -> list[Part]:
-        """What a clause on the whole object ("open the microwave", "turn on the tap", "flush the toilet") works."""
-        implied = VERBS[frame.verb].implies if frame.verb is not None and frame.verb in VERBS else ()
-        if implied:
-            found = [p for kind in implied for p in self.refs.of_kind(kind)]
-            if found:
-                return found[:1]
-        if sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF, VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE) or (
-                self.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE)):
-            controls = [p for p in self.parts if mech.is_control(p)]
-            if len(controls) == 1:
-                return controls
-            if controls and sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF):
-                raise self.refs.refuse(f"'{frame.text}' could mean {len(controls)} controls", controls)
-        if sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RAISE, VerbSense.LOWER, VerbSense.PULL_OUT, VerbSense.PUSH_IN):
-            return self._openables(frame)
-        return []
-
-    def _openables(self, frame: Frame) -> list[Part]:
-        """"Open the cabinet": its doors (all of one size class), else its lids, drawers, caps."""
-        found = openable(self.parts)
-        if not found:
-            caps = [p for p in self.parts if p.kind in (PartKind.CAP, PartKind.LID) and p.geometry.open_value is None]
-            return caps[:1]
-        first_kind = found[0].kind
-        group = [p for p in found if p.kind == first_kind]
-        if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):
-            return group
-        sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ())
-        if sides and len(group) > 1:  # "open the lower oven": the door on that side
-            placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, self.asset, self.tracker.obj, [], set())
-            if len(placed) == 1:
-                return placed
-        largest = group[0].geometry.size
-        same = [p for p in group if p.geometry.size >= largest / 1.5]
-        if len(same) == 1:
-            return same
-        if first_kind in HINGED_KINDS and len(same) == 2:
-            self.notes.append(f"'{frame.text}': opened both {first_kind.value}s")
-            return same
-        raise self.refs.refuse(f"'{frame.text}' could mean {len(same)} parts", same)
+        return object_parts(self, frame, sense)
 
     def ground(self, frame: Frame, sense: VerbSense, mentions: tuple[Mention, ...], *, prefer: list[Part] | None = None) -> tuple[list[Part], list[str]]:
         parts: list[Part] = []

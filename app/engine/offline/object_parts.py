@@ -1,0 +1,62 @@
+"""What a clause on the whole object works: "open the microwave" (its door), "turn on the tap" (its
+one control), "flush the toilet" (the lever the verb implies), "open the lower oven" (the door on
+that side)."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from app.engine.lexicon.kinds import HINGED_KINDS, PartKind
+from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.words import OPERATED_OBJECTS
+from app.engine.offline import mechanisms as mech
+from app.engine.offline.grounding import Part, narrow, openable
+from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.mentions import Mention
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder
+
+
+def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]:
+    """What a clause on the whole object ("open the microwave", "turn on the tap", "flush the toilet") works."""
+    implied = VERBS[frame.verb].implies if frame.verb is not None and frame.verb in VERBS else ()
+    if implied:
+        found = [p for kind in implied for p in builder.refs.of_kind(kind)]
+        if found:
+            return found[:1]
+    if sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF, VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE) or (
+            builder.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE)):
+        controls = [p for p in builder.parts if mech.is_control(p)]
+        if len(controls) == 1:
+            return controls
+        if controls and sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF):
+            raise builder.refs.refuse(f"'{frame.text}' could mean {len(controls)} controls", controls)
+    if sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RAISE, VerbSense.LOWER, VerbSense.PULL_OUT, VerbSense.PUSH_IN):
+        return _openables(builder, frame)
+    return []
+
+
+def _openables(builder: Builder, frame: Frame) -> list[Part]:
+    """"Open the cabinet": its doors (all of one size class), else its lids, drawers, caps."""
+    found = openable(builder.parts)
+    if not found:
+        caps = [p for p in builder.parts if p.kind in (PartKind.CAP, PartKind.LID) and p.geometry.open_value is None]
+        return caps[:1]
+    first_kind = found[0].kind
+    group = [p for p in found if p.kind == first_kind]
+    if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):
+        return group
+    sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ())
+    if sides and len(group) > 1:  # "open the lower oven": the door on that side
+        placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())
+        if len(placed) == 1:
+            return placed
+    largest = group[0].geometry.size
+    same = [p for p in group if p.geometry.size >= largest / 1.5]
+    if len(same) == 1:
+        return same
+    if first_kind in HINGED_KINDS and len(same) == 2:
+        builder.notes.append(f"'{frame.text}': opened both {first_kind.value}s")
+        return same
+    raise builder.refs.refuse(f"'{frame.text}' could mean {len(same)} parts", same)
