@@ -88,7 +88,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("close", S.CLOSE, _p(up=S.CLOSE, back=S.RETURN)),
     VerbInfo("shut", S.CLOSE),
     VerbInfo("seal", S.CLOSE),
-    VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE)),
+    VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE, down=S.PRESS, closed=S.CLOSE)),
     VerbInfo("fold", S.CLOSE, _FOLDING, motion="hinge"),
     VerbInfo("swing", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.OPEN, up=S.RAISE, down=S.LOWER, back=S.RETURN), motion="hinge"),
     VerbInfo("flip", S.TOGGLE, _p(open=S.OPEN, up=S.OPEN, back=S.OPEN, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, on=S.SWITCH_ON, off=S.SWITCH_OFF), motion="hinge"),
@@ -96,6 +96,10 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("recline", S.RECLINE, motion="hinge"),
     VerbInfo("lean", S.RECLINE, _p(back=S.RECLINE, forward=S.CLOSE), motion="hinge"),
     VerbInfo("crack", S.OPEN, _p(open=S.OPEN)),
+    VerbInfo("fling", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE, closed=S.CLOSE, down=S.LOWER), motion="hinge"),
+    VerbInfo("throw", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE), motion="hinge"),
+    VerbInfo("prop", S.OPEN, _p(open=S.OPEN, up=S.RAISE)),
+    VerbInfo("flop", S.LOWER, _p(down=S.LOWER, open=S.OPEN, back=S.OPEN, over=S.LOWER), motion="hinge"),
     VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE)),
     # press / release
     VerbInfo("press", S.PRESS, _p(down=S.PRESS, **{"in": S.PRESS}, open=S.OPEN), displaces=False),
@@ -151,7 +155,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("loosen", S.OPEN),
     VerbInfo("tighten", S.CLOSE),
     VerbInfo("run", S.SPIN),
-    VerbInfo("start", S.SPIN),
+    VerbInfo("start", S.SPIN, implies=(PartKind.LEVER,)),
     # raise / lower
     VerbInfo("lift", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("raise", S.RAISE, _RAISING, object_sense=S.MOVE),
@@ -233,6 +237,11 @@ _VERBS: tuple[VerbInfo, ...] = (
 )
 
 VERBS: Mapping[str, VerbInfo] = MappingProxyType({v.lemma: v for v in _VERBS})
+
+GENERIC = VerbInfo("generic", S.MOVE, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, up=S.RAISE, down=S.LOWER, back=S.OPEN,
+                                       **{"in": S.PUSH_IN}, on=S.SWITCH_ON, off=S.SWITCH_OFF))
+"""What an imperative verb we do not know does ("jiggle the lid open"), read from its particle; the
+explanation warns that the verb was guessed."""
 
 PARTICLES = frozenset({"out", "in", "open", "shut", "closed", "up", "down", "back", "away", "off", "on", "over", "around", "round", "go", "forward"})
 """Words that may follow a verb and change its sense (``VerbInfo.particles``)."""

@@ -133,7 +133,7 @@ AFTER = frozenset({"after", "once", "when"})
 PURPOSE = frozenset({"to", "in_order_to", "so_as_to"})
 RESULT = frozenset({"so", "so_that", "which", "making", "causing", "until"})
 MEANS = frozenset({"by"})
-INSTRUMENT = frozenset({"with", "using", "via", "through"})
+INSTRUMENT = frozenset({"with", "using", "via", "through", "that_has", "which_has", "that_have", "which_have"})
 HOLD_WORDS = frozenset({"keep", "hold", "leave", "stay", "remain"})
 
 MULTIWORD: tuple[str, ...] = (
@@ -154,7 +154,8 @@ MULTIWORD: tuple[str, ...] = (
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
-    "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "the rest of the way", "rest of the way",
+    "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
+    "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in the same direction", "right angle", "rest of the way",
 )
 
 OBJECT_NOUNS: tuple[str, ...] = (
@@ -169,9 +170,20 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "sideboard", "credenza", "armoire", "tallboy", "commode", "strongbox", "lockbox", "tote", "blender", "chest_of_drawers", "toolbox",
     "cooler", "trunk", "footlocker", "coffer", "breadbox", "lunchbox", "cashbox", "tin", "suitcase", "saucepan", "casserole", "kettle",
     "vanity", "hutch", "cubby", "wardrobe", "closet", "pantry", "oven", "range", "toaster", "tap", "faucet", "mixer", "basin",
-    "bank_of_drawers", "set_of_drawers",
+    "bank_of_drawers", "set_of_drawers", "pan", "light", "lamp", "espresso", "blender", "jug",
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
 )
+PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody"})
+"""The user and other people: a clause about them is not about the asset ("so I can reach in")."""
+MODALS = frozenset({"can", "could", "will", "would", "may", "might", "should", "must", "won't", "can't"})
+_PROGRESS = tuple((when, who, state) for when in ("when", "once", "after") for who in ("i'm", "you're", "we're", "i've", "you've", "we've")
+                  for state in ("done", "finished", "ready", "through"))
+ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is", "done"), ("when", "that", "is", "done"),
+                                              ("after", "that", "is", "done"), ("once", "that's", "done"), ("when", "that's", "done"),
+                                              ("once", "done"))
+"""The user's own progress ("when I'm done"): read as "then"."""
+ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers"})
+"""Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})
 """Words that may open a clause before its verb."""

@@ -122,6 +122,9 @@ class Builder:
             if loose and amount is not None and choice.goal.amount is not None:
                 self.notes.append(f"read '{amount.words}' as {amount.value:.0%} of the way for {part.link}")
             limit = beyond_limit(choice.goal, part, self.tracker)
+            value, low, high = choice.goal.value, part.geometry.lower, part.geometry.upper
+            if choice.goal.state == "value" and value is not None and low is not None and high is not None and not low - 1e-9 <= value <= high + 1e-9:
+                limit = min(max(value, low), high)
             if limit is not None and choice.goal.state in ("cw", "ccw") and frame.quantities.sense is None:
                 flipped = choice.goal.model_copy(update={"state": "ccw" if choice.goal.state == "cw" else "cw"})
                 if abs(limit - self.tracker.value(part.joint)) <= 1e-6 and beyond_limit(flipped, part, self.tracker) is None:
@@ -159,6 +162,8 @@ class Builder:
             self._exclude(exclusion)
         goal = act.goal
         sense = self.frame_sense(goal)
+        if goal.guessed_verb:
+            self.notes.append(f"read the verb '{goal.guessed_verb}' as '{sense.value}' (not a verb the agent knows)")
         if act.condition:
             self._condition(act)
             return
@@ -223,6 +228,11 @@ class Builder:
             return (not self.parts and frame.verb is not None) or (self.refs.last_object and frame.verb in VERBS and frame.sense is not None
                                                                    and frame.quantities.amount is not None and not frame.instruments)
         first = targets[0]
+        if first.is_object and first.sides and openable(self.parts):
+            return False  # "lower the front half of the suitcase": the part on that side
+        implied = VERBS[frame.verb].implies if frame.verb is not None and frame.verb in VERBS else ()
+        if first.is_object and any(self.refs.of_kind(kind) for kind in implied):
+            return False  # "start the toaster", "flush the toilet": the part the verb works
         if first.is_object:
             self._same_object(first)
             if self.tracker.obj.category in OPERATED_OBJECTS and frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF):
@@ -326,6 +336,13 @@ class Builder:
     def _condition(self, act: Act) -> None:
         """A state to reach first ("while the door is open"), or a description that only sets "it"."""
         frame = act.goal
+        if frame.heading:
+            self.notes.append(f"read '{frame.text}' as a summary of the steps after it")
+            try:
+                self.refs.remember(self.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
+            except GroundingError:
+                pass  # "Quick anim: ...": a summary that names no part
+            return
         parts, words = self.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
         words_in = set(frame.text.split())
         wanted = frame.sense if frame.sense is not None else (

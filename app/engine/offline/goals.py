@@ -131,6 +131,9 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
                                         quantities.speed_factor, quantities.direction)
         if geometry.type == "continuous":
             return GoalChoice(Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9)))
+    if quantities.target is not None and any(m.head in (part.joint, part.link) and "_" in m.head for m in frame.themes):
+        # "set joint_1 to -1.0 rad": a raw joint value, for users who name joints as the URDF does
+        return GoalChoice(Goal(state="value", value=round(quantities.target, 9), measured_from="current"))
     state = state_for(frame, sense, part, tracker)
     value, unit = _amount(quantities.amount)
     if value is not None and unit == "m" and geometry.type != "prismatic":

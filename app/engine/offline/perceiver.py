@@ -16,13 +16,14 @@ from typing import Any
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
+from app.engine.lexicon.verbs import VERBS
 from app.engine.offline.builder import Builder
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
 from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import build_acts
 from app.engine.offline.reading.clauses import split_clauses
-from app.engine.offline.reading.frames import read_frames
+from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.tracker import resolve_steps
 
@@ -53,6 +54,14 @@ def _corrections(tokens_: list[Token]) -> list[str]:
     return [f"read '{t.corrected_from}' as '{t.text.replace('_', ' ')}'" for t in tokens_ if t.corrected_from]
 
 
+def _incidental(frame: Frame) -> bool:
+    """A clause that may only set the scene when it names nothing movable: a heading ("Lock up the safe: ..."), a
+    clause with no action verb ("The dishes are done."), one about a person, or one whose verb we do not know
+    ("Check on the roast: ..."). A known action verb on a missing part is still refused ("open the trunk")."""
+    return (frame.heading or frame.verb is None or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
+            or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to")))  # "To unlock it, press ...": why, told first
+
+
 def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     """Deterministic reading of ``prompt`` on ``asset``.
 
@@ -68,15 +77,18 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
+    skipped: list[GroundingError] = []
     for act in acts:
-        if act.goal.heading and act is not acts[-1]:
-            try:
-                builder.add(act)
-            except GroundingError:
-                builder.notes.append(f"read '{act.goal.text}' as a heading for what follows")
-            continue
-        builder.add(act)
+        try:
+            builder.add(act)
+        except GroundingError as exc:
+            if len(acts) < 2 or not _incidental(act.goal):
+                raise
+            skipped.append(exc)
+            builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
     if not builder.steps:
+        if skipped:
+            raise skipped[0]
         raise builder.refs.refuse(f"could not find an action in '{prompt}'")
     extension = Extension(steps=builder.steps)
     notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes]))

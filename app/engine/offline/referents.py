@@ -76,6 +76,9 @@ class Referents:
         notes: list[str] = []
         if not _qualified(mention) and not mention.plural and mention.head in self.assigned:
             return Grounding(parts=(self.assigned[mention.head],), how="kind")
+        exact = [p for p in self.parts if mention.head in (p.joint, p.link)]
+        if exact:
+            return Grounding(parts=tuple(exact[:1]), how="name")  # "joint_1", "link_0": the URDF's own name
         if kind is None:
             candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
             how: How = "name" if candidates else "none"
@@ -237,6 +240,8 @@ class Referents:
     def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
         """The candidate nearest to the reference part in the named direction ("the key right below it")."""
         side, reference_mention = relation
+        if side == "near":
+            return self._nearest(reference_mention, candidates)
         reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
         if len(reference) != 1:
             return candidates
@@ -252,6 +257,19 @@ class Referents:
             across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else 0.0
             scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
         return [min(scored)[3]] if scored else []
+
+    def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
+        """"the knob nearest the lid's hinge", "the lever closest to me" (the user stands at the front)."""
+        if reference_mention.head == "viewer":
+            return [max(candidates, key=lambda p: (round(float(position(p, self.obj)[0]), 4), p.joint))]
+        hinge = "hinge" in reference_mention.modifiers
+        mention = replace(reference_mention, modifiers=tuple(m for m in reference_mention.modifiers if m != "hinge"))
+        reference = self.pronoun() if mention.pronoun else list(self.ground(mention).parts)
+        if len(reference) != 1:
+            return candidates
+        anchor = self.obj.local(reference[0].geometry.pivot_world) if hinge else position(reference[0], self.obj)
+        others = [p for p in candidates if p.joint != reference[0].joint]
+        return [min(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
 
     def _most_extreme(self, mention: Mention, kept: list[Part]) -> Part | None:
         """Among parts all near the named side, the one strictly furthest that way ("the bottom rack")."""

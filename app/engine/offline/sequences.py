@@ -105,7 +105,10 @@ def in_turn(builder: Builder, act: Act) -> None:
     sense = builder.frame_sense(goal)
     parts, words = builder.ground(goal, sense, goal.themes)
     order = goal.in_turn or "reading"
-    if order in _ORDER_KEYS:
+    if order == "reverse":  # "close them in the reverse order": the last one worked goes first
+        worked = [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
+        ordered = sorted(parts, key=lambda p: -max((i for i, j in enumerate(worked) if j == p.joint), default=-1))
+    elif order in _ORDER_KEYS:
         axis, descending = _ORDER_KEYS[order]
         ordered = sorted(parts, key=lambda p: -position(p, builder.tracker.obj)[axis] if descending else position(p, builder.tracker.obj)[axis])
     else:

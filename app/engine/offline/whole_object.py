@@ -42,6 +42,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
         return False
     quantities = frame.quantities
     directional = quantities.direction in ("forward", "backward", "left", "right", "sideways") or quantities.axis is not None
+    if pronoun and after_part and quantities.amount is not None and quantities.amount.unit == "fraction":
+        return False  # "lift it halfway back up": a fraction of a part's range, not of the object's
     if pronoun and after_part:
         explicit_back = frame.particle != "back" or any(w in frame.text.split() for w in ("backward", "backwards"))
         if not (quantities.axis is not None or frame.verb in _OBJECT_ONLY or (directional and explicit_back)):

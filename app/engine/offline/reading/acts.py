@@ -47,6 +47,10 @@ def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) 
             return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
                            themes=themes or previous.themes, instruments=() if not frame.themes else frame.instruments)
         return replace(frame, quantities=quantities)
+    if frame.verb is not None and not frame.themes and not frame.instruments and previous is not None and previous.themes and (
+            frame.text.split()[0] not in ("it", "they", "the")) and frame.quantities.axis is None and frame.sense not in (None, VerbSense.WAIT) and (
+            not frame.let and frame.marker in ("then", "and_then", "after_that", "next", "afterwards", "finally")):
+        return replace(frame, themes=previous.themes)  # "the handle swings up, then drops back down": the same part
     if frame.verb is not None or previous is None or previous.verb is None:
         return frame
     amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None)
@@ -77,7 +81,18 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     previous_goal: Frame | None = None
     measured: Frame | None = None
     said: Frame | None = None  # the frame before, whatever became of it
+    manner: Frame | None = None  # "Slowly, over about 3 seconds, ...": how the next action goes
+    together = False  # a summary said the steps after it go at the same time
     for frame in frames:
+        if frame.verb is None and not frame.themes and not frame.returning and (
+                frame.quantities.duration_s is not None or frame.quantities.speed_factor != 1.0) and frame.quantities.amount is None:
+            manner = frame
+            continue
+        if manner is not None:
+            q, m = frame.quantities, manner.quantities
+            frame = replace(frame, quantities=replace(q, duration_s=q.duration_s if q.duration_s is not None else m.duration_s,
+                                                      speed_factor=q.speed_factor if q.speed_factor != 1.0 else m.speed_factor))
+            manner = None
         if frame.marker == "which" and not frame.themes and said is not None and said.themes:
             frame = replace(frame, themes=said.themes[-1:], subject_theme=True)  # "..., which flips up": the noun just before
         if said is not None and said.stative and COUPLING_WORDS & set(said.text.split()) and said.themes and acts and (
@@ -87,6 +102,15 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             said = frame
             continue
         said = frame
+        if frame.heading and frame is not frames[-1]:
+            # "Turn both knobs at the same time: the top one ..., the bottom one ...": a summary of what follows;
+            # it names the parts ("it"), the clauses after the colon say what each does
+            acts.append(Act(goal=replace(frame, sense=None, verb=None, quantities=replace(frame.quantities, amount=None)), condition=True))
+            together = frame.simultaneous
+            previous_goal = frame  # the clauses after the colon may only name a part and an amount: they take its verb
+            continue
+        if frame.aside and frame.link in (Link.RESULT, Link.PURPOSE) and acts:
+            continue  # "..., so I can put my plate in": why, not what
         if frame.stative and COUPLING_WORDS & set(frame.text.split()):
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
         frame = _carry(frame, previous_goal, measured)
@@ -100,7 +124,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 acts[-1] = replace(acts[-1], exclusions=(*acts[-1].exclusions, frame))
             continue
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
-        if (frame.link is Link.RESULT and acts) or (_is_event(frame) and acts and not waits_for):
+        after_act = bool(acts) and not acts[-1].condition  # a summary or a state has no results of its own
+        if (frame.link is Link.RESULT and after_act) or (_is_event(frame) and after_act and not waits_for):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue
         if _is_subjectless_event(frame) and acts and acts[-1].results:
@@ -126,7 +151,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         for condition in pending_conditions:
             acts.append(Act(goal=condition, condition=True))
         pending_conditions = []
-        act = Act(goal=frame, parallel=frame.link is Link.PARALLEL, conjoined=frame.conjoined, wait_before_s=pending_wait)
+        parallel = frame.link is Link.PARALLEL or (together and any(not a.condition for a in acts))
+        act = Act(goal=frame, parallel=parallel, conjoined=frame.conjoined, wait_before_s=pending_wait)
         pending_wait = 0.0
         if frame.goes_first and acts:
             acts.insert(len(acts) - 1, act)

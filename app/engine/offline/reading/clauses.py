@@ -21,9 +21,11 @@ from app.engine.lexicon.words import (
     DETERMINERS,
     FILLERS,
     LIGHT_VERBS,
+    MODALS,
     NEGATIONS,
     ORDINALS,
     PARALLEL,
+    PERSONS,
     PURPOSE,
     SEQUENCE,
     SIMULTANEOUS,
@@ -76,7 +78,7 @@ class Clause:
 _NOT_BEFORE_VERB = DETERMINERS | frozenset(SPATIAL) | frozenset(ORDINALS) | frozenset(SIZES) | frozenset(
     {"of", "each", "every", "both", "all", "another", "other", "this", "that", "no", "any", "some", "toggle", "rocker", "light", "power",
      "control", "wall"})
-_VERB_CUE = frozenset({"and", ",", "then", "to", "by", "after", "before", "once", "when", "while", "whilst", "so", "please", "now",
+_VERB_CUE = frozenset({"and", ",", "then", "but", "to", "by", "after", "before", "once", "when", "while", "whilst", "so", "please", "now",
                        "first", "firstly", "just", "also", "and_then", "next", "finally", "lastly", "afterwards", "afterward",
                        "after_that", "subsequently", "in_order_to", "so_as_to", "without", "until", "or", "as", "at_the_same_time",
                        "simultaneously", "which", "that", "then,", "gently", "slowly", "quickly", "carefully", "fully",
@@ -112,6 +114,11 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         j += 1
     if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
+    if j < len(tokens) and tokens[j].text in ("it's", "they're", "that's", "it'll"):
+        return True  # "so it's not in the way"
+    if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
+            tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and tokens[j + 1].lemma in VERBS)):
+        return True  # "so I can put my plate in", "so they can air-dry"
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
@@ -122,6 +129,23 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         k += 1
     return False
+
+
+def _elaboration(current: list[Token]) -> bool:
+    """A verbless part-and-amount clause ("the top one a quarter turn clockwise")."""
+    from app.engine.offline.reading.quantities import read_quantities
+
+    return current[0].text in DETERMINERS and not any(verb_at(current, k, strict=True) for k in range(len(current))) and (
+        read_quantities(current).amount is not None)
+
+
+def _other_verb(tokens: list[Token], i: int) -> bool:
+    """"to check the food", "to rinse it": a verb we have no sense for, taking an object."""
+    from lemminflect import getAllLemmas
+
+    token = tokens[i]
+    follows = tokens[i + 1].text if i + 1 < len(tokens) else ""
+    return token.text.isalpha() and "VERB" in getAllLemmas(token.text) and (follows in DETERMINERS or follows in ("it", "them", "that", "this"))
 
 
 def _ing(token: Token) -> bool:
@@ -143,7 +167,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             body.pop(0)
         while body and (body[-1].is_punct or body[-1].text in ("and", "or", "then")):
             body.pop()
-        while body and body[0].text in FILLERS and not (len(body) > 1 and body[0].text == "first" and not verb_at(body, 1)):
+        while body and body[0].text in FILLERS and not (len(body) > 1 and body[0].text == "first" and not verb_at(body, 1)
+                                                        and body[1].lemma not in VERBS):
             body.pop(0)
         if body:
             first = Link.FIRST if link not in (Link.CONDITION, Link.NEGATED) else link
@@ -170,11 +195,15 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.PARALLEL, word, False)
         elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current):
             boundary = (Link.SEQUENCE, word, True)
+        elif word == "," and current and _elaboration(current) and nxt < len(tokens) and tokens[nxt].text in DETERMINERS:
+            boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
+        elif word == "but" and current and _starts_clause(tokens, nxt):
+            boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
             boundary = (Link.SEQUENCE, word, False)
-        elif word in PURPOSE and nxt < len(tokens) and verb_at(tokens, nxt, strict=True) and current:
+        elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current:
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)

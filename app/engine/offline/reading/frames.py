@@ -10,13 +10,15 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from app.engine.lexicon.verbs import PARTICLES, VERBS, VerbSense
+from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
 from app.engine.lexicon.words import (
     CAUSATIVES,
     DETERMINERS,
     INSTRUMENT,
     LIGHT_VERBS,
+    MODALS,
     ORDINALS,
+    PERSONS,
     PLACES,
     SIMULTANEOUS,
     SPATIAL,
@@ -32,8 +34,10 @@ _BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
+                           "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
 _MANUAL = frozenset({"manually", "by_hand"})
+_CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
 _REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
                               "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around",
                               "away", "clear"})
@@ -68,6 +72,10 @@ class Frame:
     simultaneous: bool = False
     manual: bool = False
     stative: bool = False
+    aside: bool = False
+    guessed_verb: str | None = None
+    """A verb we do not know, read from its particle ("fling it back": open)."""
+    """Said about the user or the story, not the asset ("so I can put my plate in", "so they can air-dry")."""
     """Describes a state ("the door is open"), not a motion."""
     extra_verbs: tuple[str, ...] = ()
     codes: tuple[tuple[str, ...], ...] = ()
@@ -151,7 +159,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
 def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     if verb is None:
         return None
-    info = VERBS[verb]
+    info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:
         return info.particles[particle]
     return info.sense
@@ -253,7 +261,7 @@ def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
 
 
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
-_IN_TURN = {"one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
+_IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
 _WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
@@ -274,6 +282,9 @@ def build_frame(clause: Clause) -> Frame:
     quantities = read_quantities(tokens)
     verb_index = _find_verb(tokens)
     verb = tokens[verb_index].lemma if verb_index is not None else None
+    guessed = None
+    if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1:
+        verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     causative = verb_index is not None and tokens[verb_index].text in CAUSATIVES
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
@@ -293,6 +304,8 @@ def build_frame(clause: Clause) -> Frame:
         themes = []  # "the back lever follows it (down)": the subject moves, "it" is the leader
     if subject_theme:
         themes = subject + themes
+    if any(m.head not in _CONTAINERS and m.kind is not None for m in themes):
+        themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad": the keypad is where
     let = causative or particle == "go"
     if let and verb_index is not None:
         inner = next((i for i in range(verb_index + 1, len(tokens)) if tokens[i].lemma in VERBS and tokens[i].lemma != "let"
@@ -301,7 +314,7 @@ def build_frame(clause: Clause) -> Frame:
             verb = tokens[inner].lemma
             particle, _ = _particle(tokens, inner, objects)
             themes = [m for m in themes if not m.start <= inner < m.end]  # "make some toast": toast is the action
-    sense = _sense(verb, particle) if verb in VERBS else None
+    sense = _sense(verb, particle) if verb in VERBS or verb == GENERIC.lemma else None
     if wish and verb is None:
         sense = next((_STATE_SENSES[t.text] for t in tokens if t.text in _STATE_SENSES), VerbSense.OPEN)
     if let and verb in CAUSATIVES:
@@ -317,17 +330,39 @@ def build_frame(clause: Clause) -> Frame:
     if verb_index is None and "back" in words:
         particle = "back"  # "then 0.3 m back"
     returning = sense is VerbSense.RETURN or bool(words & _RETURN_WORDS) or (particle == "back" and sense in (VerbSense.RETURN, None))
-    hold = sense is VerbSense.HOLD or verb in ("hold", "keep") or "hold" in extra or "keep" in extra
+    hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
-        simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra,
+        simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=_aside(tokens),
+        guessed_verb=guessed,
         codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool(words & _RETURN_WORDS),
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )
+
+
+def _unknown_verb(token: Token) -> bool:
+    """An imperative verb the lexicon does not know ("jiggle", "nudge"): a base-form verb that is not a part name."""
+    from lemminflect import getAllLemmas
+
+    from app.engine.offline.reading.mentions import kind_of_word
+
+    word = token.text
+    if not word.isalpha() or word in DETERMINERS or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None:
+        return False
+    lemmas = getAllLemmas(word)
+    return word in lemmas.get("VERB", ())
+
+
+def _aside(tokens: list[Token]) -> bool:
+    """The clause is about a person ("I can put my plate in", "you can reach in") or says what something
+    else may then do ("they can air-dry")."""
+    first = tokens[0].text if tokens else ""
+    second = tokens[1].text if len(tokens) > 1 else ""
+    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS)
 
 
 def _intransitive(tokens: list[Token], verb_index: int | None) -> bool:

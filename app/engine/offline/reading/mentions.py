@@ -43,7 +43,7 @@ _STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", 
                    "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must",
-                   "still", "really", "right_away", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
+                   "still", "really", "right_away", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 _NOT_HEADS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
@@ -130,6 +130,8 @@ def _line_index(word: str) -> int | None:
 
 def _nominal(token: Token) -> bool:
     word = token.text
+    if token.ident:
+        return True  # "joint_1", "link_0": a part by its URDF name
     if word in _OBJECT_WORDS:
         return True  # "chest_of_drawers"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
@@ -162,7 +164,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
     collective = other = False
     nouns: list[tuple[int, int, PartKind | None, bool]] = []  # (start, length, kind, is_object)
     unknown: list[int] = []
-    determiner = possessive = False
+    determiner = possessive = chosen_freely = False
     whose: str | None = None
     owner: Mention | None = None
     while i < len(tokens) and i not in used and (_nominal(tokens[i]) or _inner(tokens, i, begin) or tokens[i].text == "'s"):
@@ -183,6 +185,10 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         if (token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and word not in SIZES and kind_at(tokens, i) is None
                 and not nouns and not _object_after(tokens, i, begin)):
             return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
+        if token.ident:
+            unknown.append(i)
+            i += 1
+            continue
         found = kind_at(tokens, i)
         if found is not None and not (word in SPATIAL and i + 1 < len(tokens) and _nominal(tokens[i + 1]) and kind_at(tokens, i + 1)):
             nouns.append((i, found[1], found[0], False))
@@ -209,6 +215,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                 inner = _trailing(tokens, inner, used, [])
                 return replace(inner, one_of=True, plural=False, collective=False, start=begin, words=_words(tokens, begin, inner.end)), inner.end
             return None, i + 1
+        elif word in ("any", "either", "whichever") and not nouns and not unknown:
+            chosen_freely = True  # "press any key in the second row": the user leaves the choice
         elif word in PRONOUNS or (word in ("one", "ones") and (sides or other or ordinal or size or determiner)):
             pronoun = Mention(head=word, pronoun=word in PRONOUNS, anaphor=word in ("one", "ones"), other=other, sides=tuple(sides),
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
@@ -253,8 +261,11 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         modifiers = tuple(tokens[j].text for j in unknown[:-1])
         plural = tokens[head_index].plural or collective
         head_word = tokens[head_index].lemma
+    if possessive and kind is None and head_word in _REGION_NOUNS:
+        # "press in its lower half": a place on the part "it" names
+        return Mention(head="it", pronoun=True, sides=tuple(sides), start=begin, end=end, words=_words(tokens, begin, end)), end
     return Mention(head=head_word, kind=kind, is_object=is_object, other=other, sides=tuple(sides), ordinal=ordinal, size=size, plural=plural,
-                   collective=collective, possessive=possessive, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
+                   collective=collective, possessive=possessive, one_of=chosen_freely, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
                    words=_words(tokens, begin, end)), end
 
 
@@ -275,6 +286,8 @@ def _inner(tokens: list[Token], i: int, begin: int) -> bool:
     token = tokens[i]
     if token.text == "back" and i > begin and i + 1 < len(tokens) and kind_at(tokens, i + 1) is not None:
         return True  # "the back lever", "the back door": a side, not the particle
+    if token.text == "half" and i > begin and tokens[i - 1].text in SPATIAL:
+        return True  # "the front half of the case": a region, not an amount
     inside = i > begin and (token.number is not None or token.text in ("open", "closed", "shut", "opened"))
     return inside and i + 1 < len(tokens) and _nominal(tokens[i + 1])
 
@@ -296,24 +309,40 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
 
 
 _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
-              "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right"}
+              "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
+              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near"}
+_VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
 
 
 def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
     """"the key (right) below it", "the knob to the left of the dial": a part placed relative to another."""
     i = mention.end
+    if i + 2 < len(tokens) and tokens[i].text in ("on", "at") and tokens[i + 1].text in DETERMINERS and tokens[i + 2].text in ("end", "side"):
+        i += 3  # "the lever on the end closest to me"
     while i < len(tokens) and tokens[i].text in _ADVERBS:
         i += 1
     if i >= len(tokens) or tokens[i].text not in _RELATIONS:
         return None
     relation = _RELATIONS[tokens[i].text]
     j = i + 1
-    if j < len(tokens) and tokens[j].text == "of":
+    if j < len(tokens) and tokens[j].text in ("of", "to"):
         j += 1
-    reference, end = _phrase(tokens, j, used)
+    if relation == "near" and j < len(tokens) and tokens[j].text in _VIEWER:
+        viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front
+        return replace(mention, relation=(relation, viewer), end=j + 1, words=_words(tokens, mention.start, j + 1))
+    owned = next((k for k in range(j, min(len(tokens) - 1, j + 5)) if tokens[k].text == "'s" and tokens[k + 1].text == "hinge"), None)
+    if relation == "near" and owned is not None:  # "the knob nearest the lid's hinge"
+        reference, _ = _phrase(tokens[:owned], j, used)
+        end = owned + 1
+    else:
+        reference, end = _phrase(tokens, j, used)
     if reference is None or not (reference.pronoun or reference.kind is not None or reference.anaphor):
         return None
+    if relation == "near" and end < len(tokens) and tokens[end].text == "hinge":
+        end += 1  # "the knob nearest the door hinge"
+    if relation == "near" and any(tokens[k].text == "hinge" for k in range(j, end)):
+        reference = replace(reference, modifiers=(*reference.modifiers, "hinge"))
     return replace(mention, relation=(relation, reference), end=end, words=_words(tokens, mention.start, end))
 
 

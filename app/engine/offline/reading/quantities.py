@@ -77,6 +77,8 @@ class Quantities:
     speed_mps: float | None = None
     direction: str | None = None
     """forward, backward, left, right, up, down, sideways (as seen facing the object)."""
+    target: float | None = None
+    """A signed joint value after "to" (used when a part is named by its URDF joint or link name)."""
     sense: str | None = None
     """cw / ccw as seen facing the part."""
     axis: tuple[float, float, float] | None = None
@@ -115,6 +117,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     after = [t.text for t in tokens[end:end + 3]]
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
+    if any(word in ("sticks", "sticking", "stick", "protrudes", "protruding", "showing", "shows") for word in after + [t.text for t in tokens[end + 3:end + 5]]):
+        return "closed"  # "until only 5 cm of it sticks out": how far out, measured from closed
     if before and before[-1] in ("open", "opened", "ajar") and len(before) > 1 and before[-2] in _STATE_COPULAS:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"]:
@@ -153,18 +157,18 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             i += axis[1]
             continue
         if token.number is not None and nxt is not None and nxt.text in ("full", "complete", "whole") and i + 2 < len(tokens) and tokens[i + 2].lemma in TURN_UNITS:
-            amount = Amount(token.number * 2 * math.pi, "rad", words=f"{token.text} {nxt.text} {tokens[i + 2].text}")  # "two full turns"
+            amount = Amount(abs(token.number) * 2 * math.pi, "rad", words=f"{token.text} {nxt.text} {tokens[i + 2].text}")  # "two full turns"
             used.update((i, i + 1, i + 2))
             i += 3
             continue
         if token.number is not None and nxt is not None:
             unit = nxt.lemma
             if unit in ANGLE_UNITS:
-                amount = Amount(token.number * ANGLE_UNITS[unit], "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+                amount = Amount(abs(token.number) * ANGLE_UNITS[unit], "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
             elif unit in TURN_UNITS:
-                amount = Amount(token.number * 2 * math.pi, "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+                amount = Amount(abs(token.number) * 2 * math.pi, "rad", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
             elif unit in LENGTH_UNITS and not (unit == "in" and i + 2 < len(tokens) and tokens[i + 2].text in ("the", "a", "its")):
-                amount = Amount(token.number * LENGTH_UNITS[unit], "m", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
+                amount = Amount(abs(token.number) * LENGTH_UNITS[unit], "m", _reference(tokens, i, i + 2), words=f"{token.text} {nxt.text}")
             elif unit in TIME_UNITS:
                 values["duration_s"] = token.number * TIME_UNITS[unit]
                 used.update(j for j in (i - 1,) if j >= 0 and tokens[j].text in _DURATION_BEFORE)
@@ -204,7 +208,8 @@ def read_quantities(tokens: list[Token]) -> Quantities:
         if "-" in token.text and token.text.split("-")[0] in DIRECTIONS and "direction" not in values:
             values["direction"] = DIRECTIONS[token.text.split("-")[0]]  # "the forward-rolling direction"
             used.add(i)
-        if token.text in _FRACTION_WORDS and nxt is not None:
+        pronoun_one = token.text == "one" and i > 0 and (tokens[i - 1].text in SPATIAL or tokens[i - 1].text in ("the", "other", "that"))
+        if token.text in _FRACTION_WORDS and nxt is not None and not pronoun_one:
             # "a quarter turn", "half a turn", "a full rotation", "one complete turn"
             j = i + 1
             fraction = _FRACTION_WORDS[token.text]
@@ -216,11 +221,20 @@ def read_quantities(tokens: list[Token]) -> Quantities:
                 used.update(range(i, j + 1))
                 i = j + 1
                 continue
-        if token.text.replace("_", " ") in AMOUNTS and nxt is not None and nxt.lemma in TURN_UNITS:
-            # "a quarter turn", "a third of a turn"
-            amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=f"{token.text.replace('_', ' ')} {nxt.text}")
-            used.update((i, i + 1))
-            i += 2
+        if token.text.replace("_", " ") in AMOUNTS and nxt is not None:
+            # "a quarter turn", "a third of a turn", "three quarters of a revolution"
+            j = i + 1
+            if tokens[j].text == "of" and j + 1 < len(tokens) and tokens[j + 1].text in ("a", "an", "one"):
+                j += 2
+            if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
+                amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=" ".join(t.text.replace("_", " ") for t in tokens[i:j + 1]))
+                used.update(range(i, j + 1))
+                i = j + 1
+                continue
+        if token.text == "right_angle":
+            amount = Amount(math.pi / 2, "rad", _reference(tokens, i, i + 1) or "closed", words="a right angle")  # a position: 90 degrees open
+            used.add(i)
+            i += 1
             continue
         if token.text in _DURATION_PHRASES:
             values["duration_s"] = _DURATION_PHRASES[token.text]
@@ -264,4 +278,24 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             values.setdefault("duration_s", 1.0)
             used.update((i - 1, i))
         i += 1
+    target = _target(tokens)
+    if target is not None:
+        values["target"] = target
     return Quantities(amount=amount, used=frozenset(used), **values)  # type: ignore[arg-type]
+
+
+def _target(tokens: list[Token]) -> float | None:
+    """"set joint_1 to -1.0 rad", "to 0.2": a signed joint value (SI units; a bare number is taken as is)."""
+    for i in range(len(tokens) - 1):
+        if tokens[i].text not in ("to", "=", "at") or tokens[i + 1].number is None:
+            continue
+        number = tokens[i + 1].number
+        if number is None:
+            continue
+        unit = tokens[i + 2].lemma if i + 2 < len(tokens) else ""
+        if unit in ANGLE_UNITS:
+            return number * ANGLE_UNITS[unit]
+        if unit in LENGTH_UNITS:
+            return number * LENGTH_UNITS[unit]
+        return number
+    return None

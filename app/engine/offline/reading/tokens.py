@@ -15,17 +15,19 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import MULTIWORD, NUMBER_WORDS
+from app.engine.lexicon.words import ASIDE_PHRASES, ASIDE_WORDS, MULTIWORD, NUMBER_WORDS
 
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
     r"|(?P<axis>[+-][xyz])(?![a-z])"
-    r"|(?P<num>\d+(?:\.\d+)?(?:/\d+)?|\.\d+)"
+    r"|(?P<ident>[a-z]+(?:_[a-z0-9]+)*_\d+)(?![a-z0-9_])"
+    r"|(?P<num>(?<![\w.])-?(?:\d+(?:\.\d+)?(?:/\d+)?|\.\d+))"
     r"|(?P<rate>rad/s|m/s|cm/s|deg/s|rad/sec)"
     r"|(?P<word>[a-z]+(?:['’][a-z]+)?(?:-[a-z]+)*)"
     r"|(?P<deg>°)"
     r"|(?P<pct>%)"
     r"|(?P<punct>[.,;:!?])"
+    r"|(?P<paren>[()])"
 )
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
@@ -45,6 +47,8 @@ class Token:
     plural: bool = False
     corrected_from: str | None = None
     """The word as typed, when spelling correction changed it."""
+    ident: bool = False
+    """A name as written in the URDF ("joint_1", "link_0"): never corrected, read as a part name."""
 
     @property
     def is_punct(self) -> bool:
@@ -61,11 +65,19 @@ def _raw_tokens(prompt: str) -> list[Token]:
     # the substitution above only inserts spaces: map offsets back to the original prompt
     offsets = _offset_map(prompt.lower().replace("’", "'").replace("‘", "'"), text)
     tokens = []
+    depth = 0
     for match in _TOKEN.finditer(text):
         kind = match.lastgroup
         word = match.group(0)
         start, end = offsets[match.start()], offsets[max(match.end() - 1, match.start())] + 1
-        if kind == "num":
+        if kind == "paren":
+            depth = max(0, depth + (1 if word == "(" else -1))
+            continue
+        if depth:
+            continue  # "(standard phone layout)": an aside, not part of the request
+        if kind == "ident":
+            tokens.append(Token(word, word, start, end, ident=True))
+        elif kind == "num":
             if "/" in word:
                 top, bottom = word.split("/")
                 value = float(top) / float(bottom) if float(bottom) else float(top)
@@ -130,6 +142,10 @@ _COUNTED = frozenset({"and", "hundred", "full", "complete", "whole", "more", "qu
                       "times", "twist", "spin", "notch", "notches", "click", "clicks", "step", "steps", "°", "percent", "%", "-"})
 
 
+_QUALIFIERS = frozenset({"the", "this", "that", "other", "another", "left", "right", "top", "bottom", "front", "back", "upper", "lower",
+                         "middle", "first", "second", "third", "last", "big", "small", "large", "little", "same", "rear", "inner", "outer"})
+
+
 def _counts(tokens: list[Token], i: int) -> bool:
     """A number word followed by what it counts ("one full turn", "one and a half", "one second")."""
     return i < len(tokens) and (tokens[i].text in _COUNTED or tokens[i].number is not None)
@@ -141,8 +157,9 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
     i = 0
     while i < len(tokens):
         value = _number_word(tokens[i].text) if tokens[i].number is None else None
-        if tokens[i].text == "one" and not _counts(tokens, i + 1):
-            value = None  # "the left one", "one of the doors": a pronoun, not a number
+        after_qualifier = i > 0 and tokens[i - 1].text in _QUALIFIERS
+        if tokens[i].text == "one" and (not _counts(tokens, i + 1) or after_qualifier):
+            value = None  # "the left one", "one of the doors", "the bottom one half a turn": a pronoun, not a number
         hundreds = tokens[i].text == "hundred" and out and out[-1].text in ("a", "one")
         if hundreds:
             start = out.pop().start
@@ -192,6 +209,30 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
     return out
 
 
+def _drop_asides(tokens: list[Token]) -> list[Token]:
+    """Politeness and the beneficiary say nothing about the motion: "please", "for me"."""
+    out: list[Token] = []
+    skip = 0
+    for i, token in enumerate(tokens):
+        if skip:
+            skip -= 1
+            continue
+        if token.text in ASIDE_WORDS:
+            continue
+        phrase = next((p for p in ASIDE_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if phrase is None and tuple(token.text.split("_")) in ASIDE_PHRASES:
+            phrase = (token.text,)  # joined as one expression
+        if phrase is not None:  # "and when I'm done close that door": then
+            out.append(replace(token, text="then", lemma="then"))
+            skip = len(phrase) - 1
+            continue
+        if token.text == "for" and i + 1 < len(tokens) and tokens[i + 1].text in ("me", "you", "us", "them"):
+            skip = 1
+            continue
+        out.append(token)
+    return out
+
+
 @lru_cache(maxsize=4096)
 def lemma_of(word: str) -> tuple[str, bool]:
     """(lemma, plural): the verb lemma when ``word`` is a form of a known verb, else the noun lemma."""
@@ -215,7 +256,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.spelling import correct
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _raw_tokens(prompt)]
-    tokens = _join_numbers(_join_phrases(tokens))
+    tokens = _drop_asides(_join_numbers(_join_phrases(tokens)))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():
