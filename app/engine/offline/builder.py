@@ -78,7 +78,7 @@ class Builder:
         words: list[str] = []
         for mention in mentions:
             if mention.pronoun:
-                found = self.refs.pronoun(release=sense is VerbSense.RELEASE)
+                found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural)
                 if not found and self.parts:
                     found = self._object_parts(frame, sense)
             elif mention.is_object:
@@ -89,6 +89,8 @@ class Builder:
                 if not found:
                     found, notes = self.refs.resolve(mention, prefer=prefer)
                     self.notes.extend(notes)
+                if (mention.plural or mention.collective) and len(found) > 1:
+                    self.refs.group = list(found)
             for part in found:
                 if part not in parts:
                     parts.append(part)

@@ -80,7 +80,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         effects = effects + _let_fall(builder, controls)
     original_controls = list(controls)
     for move in controls:
-        if builder.reached(move) and move.release != "held" and why == "asked" and move.goal.state not in ("previous", "rest"):
+        if builder.reached(move) and move.release != "held" and why == "asked" and move.goal.state not in ("previous", "rest") and (
+                sense is not VerbSense.HOLD):
             builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {_as_far(move.goal.state)}: it did not move")
     controls = [m for m in controls if not builder.reached(m) or m.release == "held"]
     kept = []

@@ -105,7 +105,12 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         lid = part.kind is not None and info(part.kind).lid_like
         if not lid and geometry.up_value is not None and geometry.down_value is not None and geometry.open_value is not None:
             return "up" if sense is VerbSense.RAISE else "down"  # an oven door lowers open, a lid lifts open
+    words = set(frame.text.split())
+    if sense is VerbSense.HOLD and words & {"open", "opened", "shut", "closed"} and geometry.closed_value is not None:
+        return "open" if words & {"open", "opened"} else "closed"  # "leave the left one open"
     state = END_STATE[sense][part_class_]
+    if sense in (VerbSense.LOCK, VerbSense.CLOSE) and geometry.closed_value is not None and part_class_ is not PartClass.OPENABLE:
+        return "closed"  # a latch whose shut end is known (from the lid it holds)
     if state == "rest" and sense in (VerbSense.LOCK, VerbSense.CLOSE) and geometry.closed_value is not None:
         return "closed"  # a latch whose shut end is known (from the lid it holds)
     if state == "open" and geometry.open_value is None and part_class_ is PartClass.OPENABLE and geometry.up_value is not None and sense is VerbSense.RAISE:

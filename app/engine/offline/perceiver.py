@@ -82,8 +82,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         try:
             builder.add(act)
         except GroundingError as exc:
-            if len(acts) < 2 or not _incidental(act.goal):
-                raise
+            if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
+                raise  # a clause that names parts but not which one is never skipped
             skipped.append(exc)
             builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
     if not builder.steps:

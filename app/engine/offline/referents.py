@@ -16,6 +16,7 @@ from app.engine.lexicon.words import Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import (
+    _AXIS_OF,
     Grounding,
     How,
     Part,
@@ -49,6 +50,8 @@ class Referents:
     """Joints named so far ("the other door" is one not named yet)."""
     last_object: bool = False
     """The previous clause moved the whole object: "it" is the object."""
+    group: list[Part] = field(default_factory=list)
+    """The last several parts one plural mention named ("both fridge doors")."""
     assigned: dict[str, Part] = field(default_factory=dict)
     """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
 
@@ -94,6 +97,9 @@ class Referents:
             return Grounding()
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
+        if len(candidates) == 1 and mention.sides and not mention.plural and self._other_side(candidates[0], mention):
+            raise self.refuse(f"'{mention.words or mention.head}' names a side where {self.asset.name} has none: its only "
+                              f"{kind.value if kind is not None else mention.head} is elsewhere", candidates)
         if mention.region and len(candidates) > 1:
             candidates = self._compartment(mention, candidates) or candidates
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
@@ -258,6 +264,18 @@ class Referents:
             scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
         return [min(scored)[3]] if scored else []
 
+    def _other_side(self, part: Part, mention: Mention) -> bool:
+        """The one candidate sits clearly on the other side from the one named ("the left drawer" when the only
+        drawer is on the right)."""
+        for side, _ in mention.sides:
+            if side not in _AXIS_OF:
+                continue
+            axis, positive = _AXIS_OF[side]
+            value = float(position(part, self.obj)[axis])
+            if (value < 0 if positive else value > 0) and abs(value) > 0.1 * self.obj.diag:
+                return True
+        return False
+
     def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
         """"the knob nearest the lid's hinge", "the lever closest to me" (the user stands at the front)."""
         if reference_mention.head == "viewer":
@@ -296,10 +314,13 @@ class Referents:
             return " (did you mean " + " or ".join(f"'{n}'" for n in close) + "?)"
         return ""
 
-    def pronoun(self, *, release: bool = False) -> list[Part]:
-        """What "it" / "them" refers to now ([] when nothing was named yet)."""
+    def pronoun(self, *, release: bool = False, plural: bool = False) -> list[Part]:
+        """What "it" / "them" refers to now ([] when nothing was named yet); "them" after a group was worked one by
+        one is the whole group ("open both doors, the left one first, then close them")."""
         if release and self.last_controls:
             return list(self.last_controls)
+        if plural and len(self.last) < len(self.group) and all(p in self.group for p in self.last):
+            return list(self.group)
         return list(self.last)
 
     def remember(self, themes: list[Part], controls: list[Part]) -> None:

@@ -36,6 +36,14 @@ class Act:
 
 
 def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
+    if frame.same_direction and previous is not None:
+        q, before = frame.quantities, previous.quantities
+        frame = replace(frame, quantities=replace(q, direction=q.direction or before.direction, sense=q.sense or before.sense,
+                                                  axis=q.axis or before.axis))
+    return _carried(frame, previous, measured)
+
+
+def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     """A verbless clause takes the verb of the one before ("open the left door, then the right one");
     an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back"); "do the same
     with the other one" and "the same amount" take its verb and amount."""

@@ -37,6 +37,7 @@ _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "forme
                            "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
 _MANUAL = frozenset({"manually", "by_hand"})
+_PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
 _CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
 _REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
                               "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around",
@@ -73,6 +74,8 @@ class Frame:
     manual: bool = False
     stative: bool = False
     aside: bool = False
+    same_direction: bool = False
+    """"another 40 degrees in the same direction": the direction of the clause before."""
     guessed_verb: str | None = None
     """A verb we do not know, read from its particle ("fling it back": open)."""
     """Said about the user or the story, not the asset ("so I can put my plate in", "so they can air-dry")."""
@@ -304,6 +307,11 @@ def build_frame(clause: Clause) -> Frame:
         themes = []  # "the back lever follows it (down)": the subject moves, "it" is the leader
     if subject_theme:
         themes = subject + themes
+    if themes and all(m.head in _PLACEHOLDERS for m in themes):
+        held = [m for m in objects if m.head not in _PLACEHOLDERS and not m.pronoun]
+        themes = held[:1] or themes  # "I need something from the left drawer": the drawer
+    if any(m.head in _BODY_PARTS and m.owner is not None for m in themes):
+        themes = [m.owner if m.head in _BODY_PARTS and m.owner is not None else m for m in themes]  # "keep your finger on it": it
     if any(m.head not in _CONTAINERS and m.kind is not None for m in themes):
         themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad": the keypad is where
     let = causative or particle == "go"
@@ -336,7 +344,7 @@ def build_frame(clause: Clause) -> Frame:
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=_aside(tokens),
-        guessed_verb=guessed,
+        guessed_verb=guessed, same_direction="in_the_same_direction" in words,
         codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool(words & _RETURN_WORDS),
