@@ -27,7 +27,8 @@ from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
 from app.engine.offline.object_parts import object_parts
 from app.engine.offline.reading.acts import Act
-from app.engine.offline.reading.frames import CODE_VERBS, Frame
+from app.engine.offline.reading.codes import CODE_VERBS
+from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents

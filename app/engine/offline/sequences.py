@@ -13,7 +13,8 @@ from app.engine.offline.goals import goal_for
 from app.engine.offline.keypad import code_keys
 from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
-from app.engine.offline.reading.frames import Frame, place_words
+from app.engine.offline.reading.codes import place_words
+from app.engine.offline.reading.frames import Frame
 from app.engine.offline.revisions import replay
 from app.engine.offline.whole_object import object_motion, returning_motion
 

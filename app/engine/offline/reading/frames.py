@@ -17,7 +17,6 @@ from app.engine.lexicon.words import (
     INSTRUMENT,
     LIGHT_VERBS,
     MODALS,
-    ORDINALS,
     PERSONS,
     PLACES,
     SIMULTANEOUS,
@@ -25,6 +24,7 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
 )
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
+from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token
@@ -196,61 +196,6 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
     return themes[len(prior):], instruments
 
 
-CODE_VERBS = frozenset({"type", "enter", "key", "punch", "input", "press", "tap", "push", "hit"})
-_CODE_SEPARATORS = frozenset({",", "then", "and", "and_then", "followed_by", "-", "next"})
-
-
-_KEY_WORDS = frozenset({"key", "button", "one", "on", "keypad", "of", "in", "at", "code", "combination", "sequence", "pin", "digit",
-                        "number", "passcode", "keycode", "pad"})
-
-
-def place_words(text: str) -> bool:
-    """Only words that place a key ("second-row middle", "bottom-left")."""
-    return all(w in SPATIAL or w in ORDINALS or w in ("row", "column") or (
-        "-" in w and all(p in SPATIAL or p in ORDINALS or p in ("row", "column") for p in w.split("-"))) for w in text.split() if w not in DETERMINERS)
-
-
-def _place_item(tokens: list[Token]) -> tuple[str, ...] | None:
-    """("place", sides..., "row=N" / "column=N") of one key description ("bottom-left", "second-row middle")."""
-    item: list[str] = []
-    words = [t.text for t in tokens if t.text not in DETERMINERS and t.lemma not in _KEY_WORDS]
-    for index, word in enumerate(words):
-        parts = word.split("-")
-        if len(parts) == 2 and parts[0] in ORDINALS and parts[1] in ("row", "column"):
-            item.append(f"{parts[1]}={ORDINALS[parts[0]]}")
-        elif word in ORDINALS and index + 1 < len(words) and words[index + 1] in ("row", "column"):
-            item.append(f"{words[index + 1]}={ORDINALS[word]}")
-        elif word in ("row", "column"):
-            continue
-        elif all(p in SPATIAL for p in parts):
-            item.extend(SPATIAL[p][0].value for p in parts)
-        else:
-            return None
-    return ("place", *item) if item else None
-
-
-def _code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[tuple[str, ...], ...]:
-    """The keys of an entered code, in order: digits, or places on the keypad ("top-left", "second-row middle")."""
-    items: list[tuple[str, ...]] = []
-    segment: list[Token] = []
-    for i in range(start, len(tokens) + 1):
-        token = tokens[i] if i < len(tokens) else None
-        if token is None or token.text in _CODE_SEPARATORS or token.is_punct:
-            place = _place_item(segment) if segment else None
-            if place is not None:
-                items.append(place)
-            segment = []
-            continue
-        if i in used:
-            continue
-        counts = i + 1 < len(tokens) and tokens[i + 1].lemma in ("key", "button")  # "the three keys of the top row": a count
-        if token.number is not None and token.number == int(token.number) and token.number >= 0 and not counts:
-            items.extend(("digit", d) for d in token.text.split(".")[0])
-            continue
-        segment.append(token)
-    return tuple(items)
-
-
 def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
     """"..., left one first": a qualified "one" followed by "first" at the end of the clause."""
     if len(tokens) >= 3 and tokens[-1].text == "first" and tokens[-2].text in ("one", "ones"):
@@ -345,7 +290,7 @@ def build_frame(clause: Clause) -> Frame:
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=_aside(tokens),
         guessed_verb=guessed, same_direction="in_the_same_direction" in words,
-        codes=_code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
+        codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool(words & _RETURN_WORDS),
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
