@@ -165,7 +165,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("lower", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("drop", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("put", S.LOWER, _p(down=S.LOWER, back=S.RETURN, away=S.PUSH_IN, on=S.CLOSE), object_sense=S.MOVE),
-    VerbInfo("lay", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("lay", S.LOWER, _p(down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE, back=S.RECLINE, open=S.OPEN, flat=S.OPEN), object_sense=S.MOVE),
     VerbInfo("place", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("fall", S.LOWER, _p(shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN, back=S.RETURN)),
     VerbInfo("tip", S.LOWER, _p(over=S.TOGGLE, back=S.RECLINE, up=S.RAISE)),

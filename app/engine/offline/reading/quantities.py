@@ -278,6 +278,8 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             values.setdefault("duration_s", 1.0)
             used.update((i - 1, i))
         i += 1
+    if tokens and tokens[0].lemma == "stand" and "orientation" not in values and any(t.text in ("up", "upright") for t in tokens):
+        values["orientation"] = "vertical"  # "stand the handle up (again)": upright
     target = _target(tokens)
     if target is not None:
         values["target"] = target
