@@ -76,8 +76,8 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "two thirds": 2 / 3, "two-thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
     "a third of the way": 1 / 3, "as far as": 1.0, "as high as it goes": 1.0, "as high as possible": 1.0, "as low as it goes": 1.0,
     "as low as possible": 1.0, "as wide as it goes": 1.0, "as far as it will": 1.0, "to the very top": 1.0, "to the top": 1.0,
-    "to the very bottom": 1.0, "to the bottom": 1.0, "the rest of the way": 1.0, "as flat as it can go": 1.0, "as far as it can go": 1.0, "as far as it goes": 1.0,
-    "as flat as possible": 1.0, "as far as possible": 1.0, "as wide as possible": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+    "to the very bottom": 1.0, "to the bottom": 1.0, "the rest of the way": 1.0, "as flat as it can go": 1.0, "as far as it can go": 1.0,
+    "as flat as possible": 1.0, "as wide as possible": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
                            "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
