@@ -184,6 +184,10 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
                                               ("after", "that", "is", "done"), ("once", "that's", "done"), ("when", "that's", "done"),
                                               ("once", "done"))
 """The user's own progress ("when I'm done"): read as "then"."""
+REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
+    ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
+    ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
+"""A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
@@ -206,7 +210,7 @@ COUPLING_WORDS = frozenset({"linked", "connected", "coupled", "hooked", "attache
 STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
                            "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks",
-                           *COUPLING_WORDS})
+                           "starts", "begins", "started", *COUPLING_WORDS})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
 PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
                     "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})

@@ -21,6 +21,7 @@ from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
+from app.engine.offline.conditions import condition
 from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for
 from app.engine.offline.grounding import Part, movable_parts, openable
@@ -337,26 +338,7 @@ class Builder:
                 self.manual = True
 
     def _condition(self, act: Act) -> None:
-        """A state to reach first ("while the door is open"), or a description that only sets "it"."""
-        frame = act.goal
-        if frame.heading:
-            self.notes.append(f"read '{frame.text}' as a summary of the steps after it")
-            try:
-                self.refs.remember(self.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
-            except GroundingError:
-                pass  # "Quick anim: ...": a summary that names no part
-            return
-        parts, words = self.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
-        words_in = set(frame.text.split())
-        wanted = frame.sense if frame.sense is not None else (
-            VerbSense.OPEN if words_in & {"open", "opened"} else VerbSense.CLOSE if words_in & {"closed", "shut"} else None)
-        if wanted is None or not parts:
-            self.refs.remember(parts, [])
-            return
-        moves = [m for m in self.moves(frame, wanted, parts, words, None) if not self.reached(m)]
-        if moves:
-            self.complete(replace(act, goal=replace(frame, sense=wanted)), wanted, [], moves, why="prerequisite")
-        self.refs.remember(parts, [])
+        condition(self, act)
 
     def reached(self, move: Move) -> bool:
         now = self.tracker.value(move.part.joint)

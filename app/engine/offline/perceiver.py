@@ -9,7 +9,7 @@ normalise (:mod:`.reading.tokens`) -> clauses (:mod:`.reading.clauses`) -> frame
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from typing import Any
 
@@ -22,7 +22,7 @@ from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
 from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import build_acts
-from app.engine.offline.reading.clauses import split_clauses
+from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.tracker import resolve_steps
@@ -58,7 +58,7 @@ def _incidental(frame: Frame) -> bool:
     """A clause that may only set the scene when it names nothing movable: a heading ("Lock up the safe: ..."), a
     clause with no action verb ("The dishes are done."), one about a person, or one whose verb we do not know
     ("Check on the roast: ..."). A known action verb on a missing part is still refused ("open the trunk")."""
-    return (frame.heading or frame.verb is None or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
+    return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
             or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to")))  # "To unlock it, press ...": why, told first
 
 
@@ -82,6 +82,11 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         try:
             builder.add(act)
         except GroundingError as exc:
+            if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:
+                # "get the door down, which makes room to slide the baking tray in": the purpose names nothing here
+                builder.notes.append(f"ignored the purpose '{act.goal.text}': {str(exc).split('. Movable parts')[0]}")
+                builder.add(replace(act, goal=act.means, means=None))
+                continue
             if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
                 raise  # a clause that names parts but not which one is never skipped
             skipped.append(exc)

@@ -100,6 +100,9 @@ class Referents:
         if len(candidates) == 1 and mention.sides and not mention.plural and self._other_side(candidates[0], mention):
             raise self.refuse(f"'{mention.words or mention.head}' names a side where {self.asset.name} has none: its only "
                               f"{kind.value if kind is not None else mention.head} is elsewhere", candidates)
+        if len(candidates) > 1 and mention.sides and not mention.plural and not mention.collective and self._same_place(mention, candidates):
+            raise self.refuse(f"'{mention.words or mention.head}' does not tell the {len(candidates)} "
+                              f"{kind.value if kind is not None else mention.head}s apart", candidates)
         if mention.region and len(candidates) > 1:
             candidates = self._compartment(mention, candidates) or candidates
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
@@ -272,8 +275,18 @@ class Referents:
                 continue
             axis, positive = _AXIS_OF[side]
             value = float(position(part, self.obj)[axis])
-            if (value < 0 if positive else value > 0) and abs(value) > 0.1 * self.obj.diag:
-                return True
+            if (value if positive else -value) < 0.05 * self.obj.diag:
+                return True  # "the lower door" of a one-door oven: not clearly on that side, so the user expects another
+        return False
+
+    def _same_place(self, mention: Mention, candidates: list[Part]) -> bool:
+        """The side named does not tell the candidates apart ("the left-hand lever" of a toaster whose levers sit
+        at its front and back)."""
+        for side, _ in mention.sides:
+            if side in _AXIS_OF:
+                values = [float(position(p, self.obj)[_AXIS_OF[side][0]]) for p in candidates]
+                if max(values) - min(values) < 0.03 * self.obj.diag:
+                    return True
         return False
 
     def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:

@@ -70,6 +70,14 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     return frame
 
 
+def _summarises(frame: Frame, after: list[Frame]) -> bool:
+    """A clause on several parts followed by verbless clauses that give each its own amount."""
+    if frame.verb is None or not any(m.plural or m.collective for m in frame.themes) or not after:
+        return False
+    following = after[0]
+    return following.verb is None and bool(following.themes) and following.quantities.amount is not None
+
+
 def _is_subjectless_event(frame: Frame) -> bool:
     """"... and swings open 30 degrees": a finite verb with no subject continues the event before."""
     return frame.conjoined and not frame.themes and frame.verb is not None and frame.text.split()[0] != frame.verb
@@ -91,7 +99,18 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     said: Frame | None = None  # the frame before, whatever became of it
     manner: Frame | None = None  # "Slowly, over about 3 seconds, ...": how the next action goes
     together = False  # a summary said the steps after it go at the same time
-    for frame in frames:
+    for index, frame in enumerate(frames):
+        verbless = frame.verb is None
+        if frame.verb is None and frame.simultaneous and all(m.collective or m.pronoun for m in frame.themes) and len(acts) > 1:
+            acts[-1] = replace(acts[-1], parallel=True)  # "..., both at the same time"
+            continue
+        if frame.verb is None and frame.quantities.amount is None and frame.quantities.target is not None and measured is not None and (
+                measured.quantities.amount is not None and measured.quantities.amount.unit == "rad"):
+            # "the left to 120 degrees, the right to 60": the unit of the one before
+            amount = replace(measured.quantities.amount, value=abs(frame.quantities.target) * 3.141592653589793 / 180.0, words=f"{frame.quantities.target:g}")
+            frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
+        if _summarises(frame, frames[index + 1:]):
+            frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
         if frame.verb is None and not frame.themes and not frame.returning and (
                 frame.quantities.duration_s is not None or frame.quantities.speed_factor != 1.0) and frame.quantities.amount is None:
             manner = frame
@@ -159,7 +178,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         for condition in pending_conditions:
             acts.append(Act(goal=condition, condition=True))
         pending_conditions = []
-        parallel = frame.link is Link.PARALLEL or (together and any(not a.condition for a in acts))
+        parallel = frame.link is Link.PARALLEL or ((together or (frame.simultaneous and verbless)) and any(not a.condition for a in acts))
         act = Act(goal=frame, parallel=parallel, conjoined=frame.conjoined, wait_before_s=pending_wait)
         pending_wait = 0.0
         if frame.goes_first and acts:

@@ -95,7 +95,7 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     previous = tokens[i - 1].text if i > 0 else ""
     if previous in _NOT_BEFORE_VERB:
         return False
-    if token.text in STATIVE_VERBS and token.text.endswith("ing"):
+    if token.text in STATIVE_VERBS and (token.text.endswith("ing") or token.text != token.lemma):
         return False  # "standing at the sink, ...": where the user is, not an action
     if token.text in SPATIAL and token.text != token.lemma:
         return False  # "left" is not "leave"
@@ -110,7 +110,7 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
 def _starts_clause(tokens: list[Token], i: int) -> bool:
     """A new clause starts at ``i`` (after "and" / a comma): a verb, or a subject followed by a verb."""
     j = i
-    while j < len(tokens) and (tokens[j].text in FILLERS or tokens[j].text in SPEEDS):
+    while j < len(tokens) and (tokens[j].text in FILLERS or tokens[j].text in SPEEDS or tokens[j].text in SEQUENCE):
         j += 1
     if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
@@ -127,15 +127,25 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
         if (tokens[k].text in _AUX or stative) and k > j:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
+        if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
+            return True  # "so the steam can escape", "so the camera can see inside"
         k += 1
     return False
 
 
+def _segment(tokens: list[Token], i: int) -> list[Token]:
+    """The tokens from ``i`` to the next punctuation mark."""
+    end = i
+    while end < len(tokens) and not tokens[end].is_punct:
+        end += 1
+    return tokens[i:end]
+
+
 def _elaboration(current: list[Token]) -> bool:
-    """A verbless part-and-amount clause ("the top one a quarter turn clockwise")."""
+    """A verbless part-and-amount clause ("the top one a quarter turn clockwise", "the left to 120 degrees")."""
     from app.engine.offline.reading.quantities import read_quantities
 
-    return current[0].text in DETERMINERS and not any(verb_at(current, k, strict=True) for k in range(len(current))) and (
+    return bool(current) and current[0].text in DETERMINERS and not any(verb_at(current, k, strict=True) for k in range(len(current))) and (
         read_quantities(current).amount is not None)
 
 
@@ -145,7 +155,10 @@ def _other_verb(tokens: list[Token], i: int) -> bool:
 
     token = tokens[i]
     follows = tokens[i + 1].text if i + 1 < len(tokens) else ""
-    return token.text.isalpha() and "VERB" in getAllLemmas(token.text) and (follows in DETERMINERS or follows in ("it", "them", "that", "this"))
+    lemmas = getAllLemmas(token.text)
+    base = token.text in lemmas.get("VERB", ())
+    return token.text.isalpha() and "VERB" in lemmas and (follows in DETERMINERS or follows in ("it", "them", "that", "this") or (
+        base and follows in ("", ",", ".", ";", "!", "?", "and", "then")))
 
 
 def _ing(token: Token) -> bool:
@@ -195,7 +208,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.PARALLEL, word, False)
         elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current):
             boundary = (Link.SEQUENCE, word, True)
-        elif word == "," and current and _elaboration(current) and nxt < len(tokens) and tokens[nxt].text in DETERMINERS:
+        elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
+                tokens[nxt].text in DETERMINERS):
             boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
         elif word == "but" and current and _starts_clause(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"

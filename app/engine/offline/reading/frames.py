@@ -183,6 +183,8 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
         preposition = tokens[before].text if before >= 0 else ""
         if mention.is_object and themes and preposition in _INSTRUMENT_PREPS | _REFERENCE_PREPS:
             continue  # "rotate the box on the table": where, not what
+        if preposition in ("for", "like", "than") and mention.kind is None and not mention.pronoun:
+            continue  # "swing the handle left for hot water": why, not what
         if preposition in _INSTRUMENT_PREPS and (themes or preposition in INSTRUMENT):
             instruments.append(mention)
         elif preposition in _REFERENCE_PREPS and themes and mention.is_object:
@@ -280,8 +282,9 @@ def build_frame(clause: Clause) -> Frame:
         # "take your foot off the pedal", "lift your finger": the user lets go
         sense, let = VerbSense.RELEASE, True
         themes = [m for m in themes if m.head not in _BODY_PARTS] + _reference_mentions(objects, themes)
-    if verb_index is None and "back" in words:
-        particle = "back"  # "then 0.3 m back"
+    inside = {k for m in objects for k in range(m.start, m.end)}
+    if verb_index is None and any(t.text == "back" and k not in inside for k, t in enumerate(tokens)):
+        particle = "back"  # "then 0.3 m back" (not "the back one")
     returning = sense is VerbSense.RETURN or bool(words & _RETURN_WORDS) or (particle == "back" and sense in (VerbSense.RETURN, None))
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
     return Frame(

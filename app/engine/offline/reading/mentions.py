@@ -240,7 +240,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         i += 1
     end = i
     if not nouns and not unknown:
-        at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well")
+        at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well", "to", "by") or (
+            tokens[end].number is not None)
         if other or (determiner and (sides or ordinal or size) and at_end):
             # "the other", "then the second": an anaphoric head with qualifiers
             return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,
@@ -284,7 +285,7 @@ def _object_after(tokens: list[Token], i: int, begin: int) -> bool:
 def _inner(tokens: list[Token], i: int, begin: int) -> bool:
     """A count or state adjective inside a phrase ("all four wheels", "the closed lid"): a noun follows."""
     token = tokens[i]
-    if token.text == "back" and i > begin and i + 1 < len(tokens) and kind_at(tokens, i + 1) is not None:
+    if token.text == "back" and i > begin and i + 1 < len(tokens) and (kind_at(tokens, i + 1) is not None or tokens[i + 1].text in ("one", "ones")):
         return True  # "the back lever", "the back door": a side, not the particle
     if token.text == "half" and i > begin and tokens[i - 1].text in SPATIAL:
         return True  # "the front half of the case": a region, not an amount

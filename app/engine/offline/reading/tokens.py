@@ -15,11 +15,12 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import ASIDE_PHRASES, ASIDE_WORDS, MULTIWORD, NUMBER_WORDS
+from app.engine.lexicon.words import ASIDE_PHRASES, ASIDE_WORDS, MULTIWORD, NUMBER_WORDS, REQUEST_PHRASES
 
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
     r"|(?P<axis>[+-][xyz])(?![a-z])"
+    r"|(?P<pi>(?<![\w.])-?(?:\d+(?:\.\d+)?\s*\*?\s*)?pi(?:\s*/\s*\d+(?:\.\d+)?)?)(?![a-z])"
     r"|(?P<ident>[a-z]+(?:_[a-z0-9]+)*_\d+)(?![a-z0-9_])"
     r"|(?P<num>(?<![\w.])-?(?:\d+(?:\.\d+)?(?:/\d+)?|\.\d+))"
     r"|(?P<rate>rad/s|m/s|cm/s|deg/s|rad/sec)"
@@ -27,6 +28,7 @@ _TOKEN = re.compile(
     r"|(?P<deg>°)"
     r"|(?P<pct>%)"
     r"|(?P<punct>[.,;:!?])"
+    r"|(?P<dash>[—–]|(?<=\s)--?(?=\s))"
     r"|(?P<paren>[()])"
 )
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
@@ -75,8 +77,15 @@ def _raw_tokens(prompt: str) -> list[Token]:
             continue
         if depth:
             continue  # "(standard phone layout)": an aside, not part of the request
-        if kind == "ident":
+        if kind == "dash":  # "open both doors — the left to 120 degrees, ...": a pause, like a comma
+            tokens.append(Token(",", ",", start, end))
+        elif kind == "ident":
             tokens.append(Token(word, word, start, end, ident=True))
+        elif kind == "pi":  # "pi/2", "3*pi/4", "-pi/4": radians
+            value = _pi_value(word)
+            tokens.append(Token(f"{value:g}", f"{value:g}", start, end, number=value))
+            if not re.match(r"\s*rad", text[match.end():]):
+                tokens.append(Token("rad", "rad", start, end))
         elif kind == "num":
             if "/" in word:
                 top, bottom = word.split("/")
@@ -97,6 +106,14 @@ def _raw_tokens(prompt: str) -> list[Token]:
         else:
             tokens.append(Token(word, word, start, end))
     return tokens
+
+
+def _pi_value(text: str) -> float:
+    sign = -1.0 if text.startswith("-") else 1.0
+    head, _, tail = text.lstrip("-").partition("pi")
+    factor = float(head.replace("*", "").strip() or 1.0)
+    divisor = float(tail.replace("/", "").strip() or 1.0)
+    return sign * factor * 3.141592653589793 / divisor
 
 
 _NOT_POSSESSIVE = frozenset({"it", "let", "that", "what", "there", "here", "he", "she", "who", "where", "how"})
@@ -219,6 +236,20 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             continue
         if token.text in ASIDE_WORDS:
             continue
+        request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
+            skip = len(request) - 1
+            continue
+        if token.text == "leave" and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
+            out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
+            continue
+        if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):
+            continue
+        hands = tuple(t.text for t in tokens[i:i + 4])
+        if hands[:3] in (("keep", "your", "hands"), ("keep", "hands", "off")) or hands[:2] == ("hands", "off"):
+            out.append(replace(token, text="without", lemma="without"))  # "keep your hands off the drawer"
+            skip = next(k for k, word in enumerate(hands) if word == "off")
+            continue
         phrase = next((p for p in ASIDE_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if phrase is None and tuple(token.text.split("_")) in ASIDE_PHRASES:
             phrase = (token.text,)  # joined as one expression
@@ -236,8 +267,8 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
 @lru_cache(maxsize=4096)
 def lemma_of(word: str) -> tuple[str, bool]:
     """(lemma, plural): the verb lemma when ``word`` is a form of a known verb, else the noun lemma."""
-    if word in VERBS or not word.isalpha():
-        return word, False
+    if word in VERBS or not word.isalpha() or len(word) < 2:
+        return word, False  # "s", "m": units, not words to lemmatise
     from lemminflect import getLemma  # imported when first needed (data loads on first use)
 
     nouns = getLemma(word, upos="NOUN")

@@ -1,0 +1,41 @@
+"""Clauses that state a condition or set the scene rather than ask for a step: "while the door is open"
+(a state to reach first), "the door starts partly open" (how the scene begins), a summary before a
+colon (it only names the parts the steps after it work)."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+from typing import TYPE_CHECKING
+
+from app.engine.errors import GroundingError
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.reading.acts import Act
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder
+
+
+def condition(builder: Builder, act: Act) -> None:
+    """A state to reach first ("while the door is open"), or a description that only sets "it"."""
+    frame = act.goal
+    if frame.heading:
+        builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
+        try:
+            builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
+        except GroundingError:
+            pass  # "Quick anim: ...": a summary that names no part
+        return
+    parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
+    words_in = set(frame.text.split())
+    if words_in & {"starts", "begins", "started", "already"}:
+        builder.refs.remember(parts, [])  # "the door starts partly open": how the scene begins, not a step
+        return
+    wanted = frame.sense if frame.sense is not None else (
+        VerbSense.OPEN if words_in & {"open", "opened"} else VerbSense.CLOSE if words_in & {"closed", "shut"} else None)
+    if wanted is None or not parts:
+        builder.refs.remember(parts, [])
+        return
+    moves = [m for m in builder.moves(frame, wanted, parts, words, None) if not builder.reached(m)]
+    if moves:
+        builder.complete(replace(act, goal=replace(frame, sense=wanted)), wanted, [], moves, why="prerequisite")
+    builder.refs.remember(parts, [])
