@@ -52,7 +52,8 @@ COLLECTIVE = frozenset({"both", "all", "every", "each"})
 DETERMINERS = frozenset({"the", "a", "an", "some", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
 PRONOUNS = frozenset({"it", "them", "they", "itself"})
 OTHER_WORDS = frozenset({"other", "another", "remaining", "opposite"})
-NEGATIONS = frozenset({"not", "never", "don't", "dont", "without", "avoid", "except", "but", "cannot", "can't", "doesn't", "won't", "mustn't"})
+NEGATIONS = frozenset({"not", "never", "don't", "dont", "without", "avoid", "except", "but", "cannot", "can't", "doesn't", "won't", "mustn't",
+                       "shouldn't", "shouldnt", "mustnt", "doesnt", "wont"})
 
 NUMBER_WORDS: Mapping[str, float] = MappingProxyType({
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
@@ -155,7 +156,7 @@ MULTIWORD: tuple[str, ...] = (
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
-    "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
+    "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
     "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in the same direction", "right angle", "rest of the way",
 )
@@ -185,6 +186,7 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
                                               ("once", "done"))
 """The user's own progress ("when I'm done"): read as "then"."""
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
+    ("no", "more"), ("task", ":"), ("goal", ":"), ("note", ":"),
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""

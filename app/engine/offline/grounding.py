@@ -211,6 +211,13 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
         pick = max if mention.size == "large" else min
         chosen = pick(candidates, key=lambda p: p.geometry.size)
         candidates = [p for p in candidates if abs(p.geometry.size - chosen.geometry.size) <= SIZE_TOLERANCE * chosen.geometry.size] if mention.plural else [chosen]
+    if mention.ordinal is not None and (mention.row is None) != (mention.column is None):
+        # "the third key of the second row": counted along the row (left to right) or down the column
+        axis = 1 if mention.row is not None else 2
+        ordered = sorted(candidates, key=lambda p: float(position(p, obj)[axis]) * (1 if axis == 1 else -1))
+        if mention.ordinal > len(ordered):
+            return [], len(ordered)
+        return [ordered[mention.ordinal - 1 if mention.ordinal > 0 else len(ordered) - 1]], None
     if mention.ordinal is not None and mention.row is None and mention.column is None:
         if mention.ordinal > len(candidates):
             return [], len(candidates)

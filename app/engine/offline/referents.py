@@ -249,8 +249,11 @@ class Referents:
     def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
         """The candidate nearest to the reference part in the named direction ("the key right below it")."""
         side, reference_mention = relation
-        if side == "near":
-            return self._nearest(reference_mention, candidates)
+        if side in ("near", "far"):
+            nearest = self._nearest(reference_mention, candidates)
+            if side == "near" or len(nearest) != 1:
+                return nearest
+            return self._farthest(reference_mention, candidates)
         reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
         if len(reference) != 1:
             return candidates
@@ -288,6 +291,15 @@ class Referents:
                 if max(values) - min(values) < 0.03 * self.obj.diag:
                     return True
         return False
+
+    def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
+        """"the knob furthest from the big one"."""
+        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
+        if len(reference) != 1:
+            return candidates
+        anchor = position(reference[0], self.obj)
+        others = [p for p in candidates if p.joint != reference[0].joint]
+        return [max(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
 
     def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
         """"the knob nearest the lid's hinge", "the lever closest to me" (the user stands at the front)."""

@@ -36,6 +36,13 @@ class Act:
 
 
 def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
+    if frame.link is Link.NEGATED:
+        return frame  # "keep your hands off the drawer": what not to touch takes no verb
+    if frame.verb is None and not frame.themes and previous is not None and previous.verb is None and previous.themes and (
+            frame.quantities.amount is not None or frame.quantities.orientation is not None):
+        # "blender dial: 1/8 turn clockwise": the part before the colon, moved by the amount after it
+        verb = "turn" if frame.quantities.amount is not None and frame.quantities.amount.unit == "rad" else "move"
+        return replace(frame, verb=verb, sense=VerbSense.TURN if verb == "turn" else VerbSense.MOVE, themes=previous.themes)
     if frame.same_direction and previous is not None:
         q, before = frame.quantities, previous.quantities
         frame = replace(frame, quantities=replace(q, direction=q.direction or before.direction, sense=q.sense or before.sense,

@@ -43,7 +43,7 @@ _STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", 
                    "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must",
-                   "still", "really", "right_away", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
+                   "still", "really", "right_away", "furthest", "farthest", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 _NOT_HEADS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
@@ -311,7 +311,7 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
 
 _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
               "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
-              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near"}
+              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far"}
 _VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
 

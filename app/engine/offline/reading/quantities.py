@@ -111,17 +111,23 @@ def _axis(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int]
 _STATE_COPULAS = frozenset({"is", "it's", "stands", "sits", "stays", "remains", "be", "hangs", "left", "leave", "keep"})
 
 
+def unit_is_angle(tokens: list[Token], end: int) -> bool:
+    return end > 0 and tokens[end - 1].lemma in ANGLE_UNITS
+
+
 def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     """What an amount at tokens[start:end] is measured from, from the words around it."""
     before = [t.text for t in tokens[max(0, start - 4):start] if t.text not in _ABOUT and t.text not in ("only", "just")]
     after = [t.text for t in tokens[end:end + 3]]
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
-    if any(word in ("sticks", "sticking", "stick", "protrudes", "protruding", "showing", "shows") for word in after + [t.text for t in tokens[end + 3:end + 5]]):
+    around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
+    if any(word in ("sticks", "sticking", "stick", "protrudes", "protruding", "showing", "shows", "in_total", "gap", "opening", "ajar")
+           for word in around):
         return "closed"  # "until only 5 cm of it sticks out": how far out, measured from closed
     if before and before[-1] in ("open", "opened", "ajar") and len(before) > 1 and before[-2] in _STATE_COPULAS:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
-    if (before and before[-1] in _TO) or before[-2:] == ["up", "to"]:
+    if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):
         return "closed"
     if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] == "the" and len(after) > 2 and after[2] in _CLOSED_WORDS)):
         return "closed"
