@@ -37,6 +37,10 @@ _FEATURES = frozenset({PartKind.LATCH, PartKind.HANDLE})
 _NUMBER_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight", 9: "nine"}
 
 
+_COMPARATIVES = frozenset({"lower", "upper", "higher"})
+"""Sides that compare parts of a kind ("the lower door"): the user expects more than one."""
+
+
 @dataclass
 class Referents:
     asset: ArticulatedAsset
@@ -97,6 +101,9 @@ class Referents:
             return Grounding()
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
+        if len(candidates) == 1 and mention.sides and not mention.plural and set(mention.words.split()) & _COMPARATIVES:
+            raise self.refuse(f"'{mention.words}' sets one {kind.value if kind is not None else mention.head} against another, but "
+                              f"{self.asset.name} has only one: say 'the {kind.value if kind is not None else mention.head}'", candidates)
         if len(candidates) == 1 and mention.sides and not mention.plural and self._other_side(candidates[0], mention):
             raise self.refuse(f"'{mention.words or mention.head}' names a side where {self.asset.name} has none: its only "
                               f"{kind.value if kind is not None else mention.head} is elsewhere", candidates)

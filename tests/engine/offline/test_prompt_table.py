@@ -413,6 +413,15 @@ ROWS: list[Row] = [
     R("kitchen_pot_100038", "Lift the pot lid 20 cm, hold it there for 1.5 seconds to check the food, then put it back on.", joints={"joint_0": E(peak=0.2, end=0.0)}),
     R("faucet_148", "Standing at the sink facing the faucet, swing its lever 90 degrees to the left.", joints={"joint_0": E(end=PI / 2)},
       base=(0.0, 0.0, 0.0)),
+    # --- blind dev probe, round 4 (benchmark/probes/dev_round4_prompts.jsonl), rephrased ---
+    R("extra/box_100214", "Fasten the left catch; the lid stays put.", joints={"joint_1": E(end=0.4363), "joint_0": E(still=True)}),
+    R("extra/box_100214", "Close the left catch. Leave the lid alone.", joints={"joint_1": E(end=0.4363), "joint_0": E(still=True)}),
+    R("safe_101593", "Turn the smaller of the two knobs 45 degrees clockwise.", joints={"joint_2": E(end=-PI / 4), "joint_1": E(still=True)}),
+    R("safe_101593", "Turn the bigger of the knobs a quarter turn anticlockwise.", joints={"joint_1": E(end=PI / 2), "joint_2": E(still=True)}),
+    R("door_8877", "Push the door nearly closed, leaving it 20 degrees ajar.", joints={"joint_1": E(end=-PI / 2 + PI / 9)}),
+    R("door_8877", "Push the door almost shut.", joints={"joint_1": E(end=-0.9 * PI / 2)}),
+    R("toaster_103477", "Turn the browning knob from 12 o'clock to 3 o'clock.", joints={"joint_0": E(end=-PI / 2)}),
+    R("oven_7221", "Open the upper door.", refuse=True),
 ]
 
 

@@ -213,6 +213,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
         elif word == "but" and current and _starts_clause(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"
+        elif word == "leaving" and not current and clauses and marker == "," and nxt < len(tokens) and tokens[nxt].text in ("it", "them", "the"):
+            link, marker, conjoined = Link.RESULT, word, False  # "swing it almost shut, leaving it 10 degrees ajar": the end state
+            i += 1
+            continue
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
@@ -234,7 +238,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in ("do", "does") and nxt < len(tokens) and tokens[nxt].text == "not":
             boundary = (Link.NEGATED, "not", False)
             nxt += 1
-        elif word in ("don't", "dont", "never", "cannot", "can't") and not current:
+        elif word in ("don't", "dont", "never", "cannot", "can't", "without") and not current:
             boundary = (Link.NEGATED, word, False)
         if boundary is None:
             current.append(token)

@@ -205,6 +205,13 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             other = True
         elif word in ORDINALS and not (word == "second" and i > 0 and tokens[i - 1].number is not None):
             ordinal = ORDINALS[word]
+        elif (word in SIZES or word in SPATIAL) and not nouns and not unknown and i + 1 < len(tokens) and tokens[i + 1].text == "of":
+            inner, _ = _phrase(tokens, i + 2, used)  # "the larger of the two knobs", "the upper of the doors": one of them
+            if inner is None or not inner.plural:
+                return None, i + 1
+            inner = _trailing(tokens, inner, used, [])
+            return replace(inner, plural=False, collective=False, start=begin, words=_words(tokens, begin, inner.end),
+                           **({"size": SIZES[word]} if word in SIZES else {"sides": (*inner.sides, SPATIAL[word])})), inner.end
         elif word in SPATIAL:
             sides.append(SPATIAL[word])
         elif word in SIZES:

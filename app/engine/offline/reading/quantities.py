@@ -38,6 +38,7 @@ _ABOUT = frozenset({"about", "around", "roughly", "approximately", "exactly", "j
 _DURATION_BEFORE = frozenset({"for", "over", "during", "in", "within", "taking", "lasting"})
 _FRACTION_WORDS = {"quarter": 0.25, "half": 0.5, "full": 1.0, "complete": 1.0, "whole": 1.0, "one": 1.0, "a": 1.0, "single": 1.0}
 _CLOSED_WORDS = frozenset({"closed", "shut", "close"})
+_NEAR_STATES = _CLOSED_WORDS | {"open", "opened", "flat", "upright", "vertical", "horizontal", "level", "straight", "down", "up"}
 
 
 _DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second_and_a_half": 1.5, "half_a_second": 0.5}
@@ -111,6 +112,20 @@ def _axis(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int]
 _STATE_COPULAS = frozenset({"is", "it's", "stands", "sits", "stays", "remains", "be", "hangs", "left", "leave", "keep"})
 
 
+def _clock_turn(tokens: list[Token], i: int) -> tuple[Amount, str] | None:
+    """"from 12 o'clock to 2 o'clock": the shorter way round the dial face, 30 degrees an hour."""
+    words = [t.text for t in tokens[i:i + 6]]
+    if len(words) < 6 or words[0] != "from" or words[2] != "o'clock" or words[3] != "to" or words[5] != "o'clock":
+        return None
+    start, end = tokens[i + 1].number, tokens[i + 4].number
+    if start is None or end is None:
+        return None
+    hours = (end - start) % 12
+    sense = "cw" if hours <= 6 else "ccw"
+    hours = hours if hours <= 6 else 12 - hours
+    return Amount(hours * math.pi / 6, "rad", reference="current", words=" ".join(words)), sense
+
+
 def unit_is_angle(tokens: list[Token], end: int) -> bool:
     return end > 0 and tokens[end - 1].lemma in ANGLE_UNITS
 
@@ -156,6 +171,12 @@ def read_quantities(tokens: list[Token]) -> Quantities:
     i = 0
     while i < len(tokens):
         token, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else None
+        clock = _clock_turn(tokens, i)
+        if clock is not None and amount is None:
+            amount, values["sense"] = clock
+            used.update(range(i, i + 6))
+            i += 6
+            continue
         axis = _axis(tokens, i)
         if axis is not None:
             values["axis"] = axis[0]
@@ -255,6 +276,9 @@ def read_quantities(tokens: list[Token]) -> Quantities:
                 values["direction"] = side  # "fold the handle down toward the front", "let it fall against the back"
         if token.text in MULTIPLIERS:
             values["times"] = int(MULTIPLIERS[token.text])
+            used.add(i)
+        elif token.text in ("almost", "nearly") and amount is None and nxt is not None and tokens[i + 1].text in _NEAR_STATES:
+            amount = Amount(0.9, "fraction", loose=True, words=f"{token.text} {tokens[i + 1].text}")  # "almost shut": most of the way
             used.add(i)
         elif token.text.replace("_", " ") in AMOUNTS and amount is None and not _region_noun(tokens, i):
             phrase = token.text.replace("_", " ")

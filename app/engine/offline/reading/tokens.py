@@ -226,6 +226,10 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
     return out
 
 
+_STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put"})
+_CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
+
+
 def _drop_asides(tokens: list[Token]) -> list[Token]:
     """Politeness and the beneficiary say nothing about the motion: "please", "for me"."""
     out: list[Token] = []
@@ -244,6 +248,10 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
             continue
         if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):
+            continue
+        if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
+            start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
+            out.insert(start, replace(token, text="without", lemma="without"))
             continue
         hands = tuple(t.text for t in tokens[i:i + 4])
         if hands[:3] in (("keep", "your", "hands"), ("keep", "hands", "off")) or hands[:2] == ("hands", "off"):
