@@ -422,6 +422,11 @@ ROWS: list[Row] = [
     R("door_8877", "Push the door almost shut.", joints={"joint_1": E(end=-0.9 * PI / 2)}),
     R("toaster_103477", "Turn the browning knob from 12 o'clock to 3 o'clock.", joints={"joint_0": E(end=-PI / 2)}),
     R("oven_7221", "Open the upper door.", refuse=True),
+    R("bucket_100454", "Fold the handle down on the back edge, then pull the bucket a quarter of a metre towards me.",
+      joints={"joint_0": E(end=PI / 2)}, base=(-0.25, 0.0, 0.0)),
+    R("window_103135", "shut the window its snowing", joints={"joint_0": E(end=-0.2765)}),
+    R("extra/safe_101623", "Goal: lock the safe. First close the door. Then turn the small dial near the top of the door a quarter turn clockwise.",
+      joints={"joint_1": E(end=-1.1812), "joint_2": E(end=PI / 2)}, order=(("joint_1", "joint_2"),)),
 ]
 
 

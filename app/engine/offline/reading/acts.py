@@ -77,8 +77,22 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     return frame
 
 
+_GOAL_SENSES = frozenset({VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPERATE, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF})
+"""What a task states as its goal on the whole object ("secure the safe", "start the microwave")."""
+
+
+def _task(frame: Frame, after: list[Frame]) -> bool:
+    """"Task: secure the safe. Step 1: close the door. Step 2: ...": a goal on the whole object, a sentence
+    of its own, followed by at least two steps that each name a part."""
+    steps = [f for f in after if f.verb is not None and any(not m.is_object for m in f.themes)]
+    return (frame.clause == 0 and bool(frame.themes) and all(m.is_object for m in frame.themes) and frame.sense in _GOAL_SENSES
+            and bool(after) and after[0].marker == "." and len(steps) >= 2)
+
+
 def _summarises(frame: Frame, after: list[Frame]) -> bool:
     """A clause on several parts followed by verbless clauses that give each its own amount."""
+    if _task(frame, after):
+        return True
     if frame.verb is None or not any(m.plural or m.collective for m in frame.themes) or not after:
         return False
     following = after[0]

@@ -217,6 +217,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             link, marker, conjoined = Link.RESULT, word, False  # "swing it almost shut, leaving it 10 degrees ajar": the end state
             i += 1
             continue
+        elif word == "it's" and len(current) > 1 and verb_at(current, 0) and nxt < len(tokens) and tokens[nxt].text.endswith("ing"):
+            boundary = (Link.SEQUENCE, word, True)  # "close the window it's raining": a run-on second sentence
+            nxt = i
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):

@@ -41,7 +41,8 @@ _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", 
 _CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
 _REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
                               "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around",
-                              "away", "clear"})
+                              "away", "clear", "near"})
+_REGION_WORDS = frozenset({"top", "bottom", "side", "front", "back", "middle", "edge", "corner", "centre", "center", "rear", "left", "right"})
 _INSTRUMENT_PREPS = INSTRUMENT | frozenset({"by", "on", "holding", "gripping"})
 
 
@@ -183,8 +184,13 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
         preposition = tokens[before].text if before >= 0 else ""
         if mention.is_object and themes and preposition in _INSTRUMENT_PREPS | _REFERENCE_PREPS:
             continue  # "rotate the box on the table": where, not what
+        if preposition == "of" and themes and before > 0 and tokens[before - 1].text in _REGION_WORDS:
+            continue  # "the small dial near the top of the door": where the dial is
         if preposition in ("for", "like", "than") and mention.kind is None and not mention.pronoun:
             continue  # "swing the handle left for hot water": why, not what
+        if {t.text for t in tokens[max(0, mention.start - 3):mention.start]} & {"on", "onto"} and themes and mention.kind is None and (
+                not mention.pronoun and not mention.possessive and not mention.is_object):
+            continue  # "lay the handle down on the back rim": where it ends, not a second part
         if preposition in _INSTRUMENT_PREPS and (themes or preposition in INSTRUMENT):
             instruments.append(mention)
         elif preposition in _REFERENCE_PREPS and themes and mention.is_object:
@@ -318,7 +324,8 @@ def _aside(tokens: list[Token]) -> bool:
     else may then do ("they can air-dry")."""
     first = tokens[0].text if tokens else ""
     second = tokens[1].text if len(tokens) > 1 else ""
-    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS)
+    weather = first == "it's" and second.endswith("ing") and len(tokens) > 1 and tokens[1].lemma not in VERBS  # "it's raining"
+    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather
 
 
 def _intransitive(tokens: list[Token], verb_index: int | None) -> bool:

@@ -253,8 +253,12 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             j = i + 1
             if tokens[j].text == "of" and j + 1 < len(tokens) and tokens[j + 1].text in ("a", "an", "one"):
                 j += 2
+            words = " ".join(t.text.replace("_", " ") for t in tokens[i:j + 1])
             if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
-                amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=" ".join(t.text.replace("_", " ") for t in tokens[i:j + 1]))
+                amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=words)
+            elif j > i + 1 and j < len(tokens) and tokens[j].lemma in LENGTH_UNITS:  # "a quarter of a metre"
+                amount = Amount(AMOUNTS[token.text.replace("_", " ")] * LENGTH_UNITS[tokens[j].lemma], "m", words=words)
+            if amount is not None and amount.words == words:
                 used.update(range(i, j + 1))
                 i = j + 1
                 continue

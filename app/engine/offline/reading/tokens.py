@@ -226,6 +226,7 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
     return out
 
 
+_KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
@@ -240,6 +241,8 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             continue
         if token.text in ASIDE_WORDS:
             continue
+        if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS:
+            token = replace(token, text="it's", lemma="it's")  # "its raining": the apostrophe left out
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
             skip = len(request) - 1
