@@ -148,6 +148,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("set", S.TURN, _p(down=S.LOWER, back=S.RETURN)),
     VerbInfo("swivel", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("pivot", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("angle", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("spin", S.SPIN, _p(around=S.SPIN, round=S.SPIN), object_sense=S.YAW),
     VerbInfo("revolve", S.SPIN),
     VerbInfo("screw", S.TURN, _p(on=S.CLOSE, off=S.OPEN, down=S.CLOSE, shut=S.CLOSE)),
@@ -232,6 +233,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("wait", S.WAIT, stative=True),
     VerbInfo("pause", S.WAIT, stative=True),
     VerbInfo("return", S.RETURN),
+    VerbInfo("settle", S.RETURN, _p(back=S.RETURN, down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE)),
     VerbInfo("restore", S.RETURN),
     VerbInfo("reset", S.RETURN),
 )

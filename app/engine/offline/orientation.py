@@ -25,6 +25,8 @@ PEAK_TOLERANCE = 0.08
 """Local best matches this close to the global best count as candidates (about 20 degrees)."""
 UP = np.array([0.0, 0.0, 1.0])
 SNAP_RAD = math.radians(4.0)
+LIMIT_SNAP_RAD = math.radians(8.0)
+"""A limit this close to the best match is where the designer put "flat" (an oven door's stop)."""
 
 
 def _principal_axes(points: FloatArray) -> tuple[FloatArray, FloatArray, FloatArray]:
@@ -66,7 +68,12 @@ def orientation_value(asset: ArticulatedAsset, geometry: JointGeometry, orientat
 
 
 def _snap(geometry: JointGeometry, value: float, reference: float) -> float:
-    """Round to a whole quarter turn from the closed state when within SNAP_RAD (meshes are not perfectly flat)."""
+    """The joint's limit when within LIMIT_SNAP_RAD, else a whole quarter turn from the closed state when within
+    SNAP_RAD (meshes are not perfectly flat)."""
+    limits = [v for v in (geometry.lower, geometry.upper) if v is not None and abs(v - reference) > 1e-6]
+    near = [v for v in limits if abs(v - value) <= LIMIT_SNAP_RAD]
+    if near:
+        return float(min(near, key=lambda v: abs(v - value)))
     quarters = round((value - reference) / (math.pi / 2))
     snapped = reference + quarters * math.pi / 2
     inside = geometry.lower is None or geometry.upper is None or geometry.lower - 1e-9 <= snapped <= geometry.upper + 1e-9

@@ -427,6 +427,10 @@ ROWS: list[Row] = [
     R("window_103135", "shut the window its snowing", joints={"joint_0": E(end=-0.2765)}),
     R("extra/safe_101623", "Goal: lock the safe. First close the door. Then turn the small dial near the top of the door a quarter turn clockwise.",
       joints={"joint_1": E(end=-1.1812), "joint_2": E(end=PI / 2)}, order=(("joint_1", "joint_2"),)),
+    R("trash_can_102155", "Push the bin 30 cm forward and 20 cm to the right", base=(-0.3, -0.2, 0.0)),
+    R("oven_7138", "Lower the oven door flat", joints={"joint_0": E(end=PI / 2)}),
+    R("box_102456", "Raise the lid 30 degrees from where it is, then let it settle back.", joints={"joint_0": E(peak=PI / 6, end=0.0)}),
+    R("storage_20453", "angle the cabinet 45 degrees", yaw_deg=45.0),
 ]
 
 

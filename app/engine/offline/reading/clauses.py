@@ -16,10 +16,12 @@ from enum import StrEnum
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     AFTER,
+    ANGLE_UNITS,
     BEFORE,
     CAUSATIVES,
     DETERMINERS,
     FILLERS,
+    LENGTH_UNITS,
     LIGHT_VERBS,
     MODALS,
     NEGATIONS,
@@ -220,6 +222,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word == "it's" and len(current) > 1 and verb_at(current, 0) and nxt < len(tokens) and tokens[nxt].text.endswith("ing"):
             boundary = (Link.SEQUENCE, word, True)  # "close the window it's raining": a run-on second sentence
             nxt = i
+        elif word == "and" and _measure_at(current, 0) is not None and _measure_at(tokens, nxt) == nxt:
+            boundary = (Link.SEQUENCE, word, True)  # "1 metre to the left and half a metre back": two moves
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
@@ -258,6 +262,17 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         i = nxt
     close()
     return _order(clauses)
+
+
+def _measure_at(tokens: list[Token], start: int) -> int | None:
+    """Where the first amount with a unit at or after ``start`` begins ("1 metre", "half a metre", "30 degrees")."""
+    for i in range(start, len(tokens)):
+        if tokens[i].number is None and tokens[i].text not in ("half", "a", "an", "a_quarter", "quarter"):
+            continue
+        unit = next((t for t in tokens[i + 1:i + 4] if t.number is None and t.text not in ("a", "an", "of")), None)
+        if unit is not None and (unit.lemma in LENGTH_UNITS or unit.lemma in ANGLE_UNITS) and unit.text not in ("in", "m"):
+            return i
+    return None
 
 
 def _subject_only(tokens: list[Token]) -> bool:

@@ -27,7 +27,7 @@ from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.quantities import Quantities, read_quantities
-from app.engine.offline.reading.tokens import Token
+from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 
 _BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
 _BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
@@ -241,6 +241,10 @@ def build_frame(clause: Clause) -> Frame:
     guessed = None
     if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
+    finite = verb_index is None and next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text)
+                                          and tokens[k - 1].text not in DETERMINERS), None)
+    if finite:
+        verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
     causative = verb_index is not None and tokens[verb_index].text in CAUSATIVES
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
@@ -253,7 +257,7 @@ def build_frame(clause: Clause) -> Frame:
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
     stative = verb_index is None and any(t.text in STATIVE_VERBS for t in tokens)
-    intransitive = _intransitive(tokens, verb_index)
+    intransitive = _intransitive(tokens, verb_index) or bool(finite)
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
     if verb == "follow" and subject:

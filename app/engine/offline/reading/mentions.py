@@ -29,7 +29,7 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
-from app.engine.offline.reading.tokens import Token
+from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
@@ -239,6 +239,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             break
         elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
+        elif nouns and finite_unknown_verb(word):
+            break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know
         elif (token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word:
             unknown.append(i)
         elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):

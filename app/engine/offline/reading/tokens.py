@@ -292,6 +292,21 @@ def lemma_of(word: str) -> tuple[str, bool]:
     return word, False
 
 
+_AUXILIARIES = frozenset({"be", "have", "do", "need", "seem", "look", "want", "stay", "remain", "sit", "stand", "hang", "say", "mean",
+                          "use", "let", "get", "make", "keep", "happen", "start", "begin", "stop", "go", "come"})
+
+
+@lru_cache(maxsize=4096)
+def finite_unknown_verb(word: str) -> bool:
+    """A finite form of a verb the lexicon does not know and that is no noun ("the lever waggles")."""
+    if word in VERBS or not word.isalpha() or not (word.endswith("s") or word.endswith("ed")):
+        return False
+    from lemminflect import getAllLemmas
+
+    lemmas = getAllLemmas(word)
+    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and not set(lemmas["VERB"]) & _AUXILIARIES
+
+
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
