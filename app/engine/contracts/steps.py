@@ -18,7 +18,8 @@ Goal semantics (``Goal``), resolved against the asset's geometry by the planner:
   (a limit), ``cw`` / ``ccw`` (a turn as seen facing the part), ``left`` / ``right`` /
   ``forward`` / ``backward`` (the part's motion as seen facing the object), ``toward`` (the part's
   motion along the world direction ``direction_world``: "onto the rim on the -X side"), ``vertical`` /
-  ``flat`` (an orientation of the part), ``previous`` (where the joint was before its last
+  ``flat`` (an orientation of the part; with ``direction_world``, the one reached moving that way:
+  "fold the handle forward until it lies flat"), ``previous`` (where the joint was before its last
   move: "back to where it was"), ``value`` (exactly ``value``), ``velocity`` (spin at
   ``omega_radps``).
 - ``amount`` with ``unit`` says how far toward that end: a ``fraction`` of the way, or an angle
@@ -59,7 +60,7 @@ class Goal(_Strict):
     duration_s: NonNegative | None = None
     """Spin time for ``state: velocity``."""
     direction_world: tuple[Finite, Finite, Finite] | None = None
-    """The world direction for ``state: toward``."""
+    """The world direction for ``state: toward``; for ``vertical`` / ``flat``, the way the part moves to get there."""
 
     @model_validator(mode="after")
     def _complete(self) -> Goal:

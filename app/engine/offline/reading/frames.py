@@ -99,7 +99,7 @@ class Frame:
 
 
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
-                                 "big", "another", "a_quarter", "one"})
+                                 "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3"})
 
 
 def _light_verb(tokens: list[Token]) -> list[Token]:
@@ -245,6 +245,10 @@ def build_frame(clause: Clause) -> Frame:
                                           and tokens[k - 1].text not in DETERMINERS), None)
     if finite:
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
+    progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
+        tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
+    if progressive:
+        verb_index, verb = None, None  # "the screen is leaning back too far": how things are, not a step
     causative = verb_index is not None and tokens[verb_index].text in CAUSATIVES
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
@@ -256,7 +260,7 @@ def build_frame(clause: Clause) -> Frame:
         objects = [m for m in objects if not m.start <= particle_at < m.end]
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
-    stative = verb_index is None and any(t.text in STATIVE_VERBS for t in tokens)
+    stative = verb_index is None and (progressive or any(t.text in STATIVE_VERBS for t in tokens))
     intransitive = _intransitive(tokens, verb_index) or bool(finite)
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")

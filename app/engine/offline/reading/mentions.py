@@ -19,10 +19,12 @@ from app.engine.lexicon.words import (
     AMOUNTS,
     COLLECTIVE,
     DETERMINERS,
+    NOT_PART_NOUNS,
     OBJECT_NOUNS,
     OBJECT_SUFFIXES,
     ORDINALS,
     OTHER_WORDS,
+    PHRASE_BREAKS,
     PRONOUNS,
     SIZES,
     SPATIAL,
@@ -34,23 +36,8 @@ from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
-_STOP = frozenset({"and", "or", ",", "then", "to", "by", "with", "using", "so", "until", "while", "for", "into", "onto", "toward",
-                   "towards", "than", "is", "are", "was", "be", "as", "if", "but", "not", "without", "about", "over", "through",
-                   "along", "across", "around", "back", "up", "down", "out", "off", "open", "shut", "closed", "more", "further",
-                   "again", "fully", "halfway", "slightly", "way", "there", "here", "away", "together", "apart",
-                   "of", "on", "in", "at", "from", "inside", "behind", "near", "under", "below", "above", "beside", "next_to",
-                   "in_front_of", "on_top_of", "out_of", "against", "beneath", "underneath", "where", "when", "once",
-                   "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
-                   "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
-                   "cannot", "can't", "can", "will", "would", "should", "must",
-                   "still", "really", "right_away", "furthest", "farthest", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
-_NOT_HEADS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
-                        "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
-                        "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
-                        "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
-                        "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
-                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click"})
-"""Nouns that never name a part of the asset (units, places, body parts)."""
+_STOP = PHRASE_BREAKS
+_NOT_HEADS = NOT_PART_NOUNS
 _OBJECT_WORDS = frozenset(OBJECT_NOUNS)
 
 

@@ -133,7 +133,7 @@ def unit_is_angle(tokens: list[Token], end: int) -> bool:
 def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     """What an amount at tokens[start:end] is measured from, from the words around it."""
     before = [t.text for t in tokens[max(0, start - 4):start] if t.text not in _ABOUT and t.text not in ("only", "just")]
-    after = [t.text for t in tokens[end:end + 3]]
+    after = [t.text for t in tokens[end:end + 4] if t.text != "measured"][:3]  # "90 degrees (measured) from closed"
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
@@ -144,7 +144,7 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):
         return "closed"
-    if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] == "the" and len(after) > 2 and after[2] in _CLOSED_WORDS)):
+    if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] in ("the", "fully", "completely") and len(after) > 2 and after[2] in _CLOSED_WORDS)):
         return "closed"
     return None
 

@@ -10,6 +10,7 @@ This is the only stage that reads the raw text.
 
 from __future__ import annotations
 
+import itertools
 import re
 from dataclasses import dataclass, replace
 from functools import lru_cache
@@ -20,7 +21,8 @@ from app.engine.lexicon.words import ASIDE_PHRASES, ASIDE_WORDS, MULTIWORD, NUMB
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
     r"|(?P<axis>[+-][xyz])(?![a-z])"
-    r"|(?P<pi>(?<![\w.])-?(?:\d+(?:\.\d+)?\s*\*?\s*)?pi(?:\s*/\s*\d+(?:\.\d+)?)?)(?![a-z])"
+    r"|(?P<pi>(?<![\w.])-?(?:\d+(?:\.\d+)?\s*\*?\s*)?(?:pi|π)(?:\s*/\s*\d+(?:\.\d+)?)?)(?![a-z])"
+    r"|(?P<arrow>->|=>|→)"
     r"|(?P<ident>[a-z]+(?:_[a-z0-9]+)*_\d+)(?![a-z0-9_])"
     r"|(?P<num>(?<![\w.])-?(?:\d+(?:\.\d+)?(?:/\d+)?|\.\d+))"
     r"|(?P<rate>rad/s|m/s|cm/s|deg/s|rad/sec)"
@@ -31,6 +33,10 @@ _TOKEN = re.compile(
     r"|(?P<dash>[—–]|(?<=\s)--?(?=\s))"
     r"|(?P<paren>[()])"
 )
+_LETTERS = frozenset("abcdefgh")
+"""Letters that number steps: "a) close the lid b) ..."."""
+_ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
+""""i.e." / "e.g.": same length, read as a comma (offsets stay put)."""
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
 
@@ -62,18 +68,27 @@ class Token:
 
 
 def _raw_tokens(prompt: str) -> list[Token]:
-    text = prompt.lower().replace("’", "'").replace("‘", "'")
-    text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", text)
+    lowered = _ABBREVIATIONS.sub(lambda m: "," + " " * (len(m.group(0)) - 1), prompt.lower().replace("’", "'").replace("‘", "'"))
+    text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
     # the substitution above only inserts spaces: map offsets back to the original prompt
-    offsets = _offset_map(prompt.lower().replace("’", "'").replace("‘", "'"), text)
-    tokens = []
+    offsets = _offset_map(lowered, text)
+    tokens: list[Token] = []
     depth = 0
     for match in _TOKEN.finditer(text):
         kind = match.lastgroup
         word = match.group(0)
         start, end = offsets[match.start()], offsets[max(match.end() - 1, match.start())] + 1
+        if kind == "paren" and word == ")" and not depth and tokens and (tokens[-1].number is not None or tokens[-1].text in _LETTERS) and (
+                len(tokens) == 1 or tokens[-2].is_sentence_end or tokens[-2].text in (",", ":")):
+            tokens[-1] = Token(".", ".", tokens[-1].start, end)  # "1) lower the lid 2) ...": a numbered step
+            continue
         if kind == "paren":
             depth = max(0, depth + (1 if word == "(" else -1))
+            continue
+        if kind == "arrow":  # "drawer: half open -> pause -> closed": then; "door -> open it": a heading
+            segment = list(itertools.takewhile(lambda t: not (t.is_sentence_end or t.text in (":", "then")), reversed(tokens)))
+            verbless = bool(segment) and not any(t.text in VERBS for t in segment)
+            tokens.append(Token(":" if verbless else "then", ":" if verbless else "then", start, end))
             continue
         if depth:
             continue  # "(standard phone layout)": an aside, not part of the request
@@ -110,7 +125,7 @@ def _raw_tokens(prompt: str) -> list[Token]:
 
 def _pi_value(text: str) -> float:
     sign = -1.0 if text.startswith("-") else 1.0
-    head, _, tail = text.lstrip("-").partition("pi")
+    head, _, tail = text.lstrip("-").replace("π", "pi").partition("pi")
     factor = float(head.replace("*", "").strip() or 1.0)
     divisor = float(tail.replace("/", "").strip() or 1.0)
     return sign * factor * 3.141592653589793 / divisor
@@ -231,6 +246,19 @@ _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
 
+_AS_IS = (("as", "it", "is"), ("as", "they", "are"), ("where", "it", "is"), ("where", "they", "are"))
+
+
+def _as_they_are(tokens: list[Token], i: int) -> bool:
+    """"leave X (exactly) as it is / where they are", within the next ten words and before any other clause."""
+    for j in range(i + 2, min(i + 12, len(tokens))):
+        if tokens[j].is_sentence_end or tokens[j].text in ("then", "but"):
+            return False
+        if tuple(t.text for t in tokens[j:j + 3]) in _AS_IS:
+            return True
+    return False
+
+
 def _drop_asides(tokens: list[Token]) -> list[Token]:
     """Politeness and the beneficiary say nothing about the motion: "please", "for me"."""
     out: list[Token] = []
@@ -247,10 +275,16 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
         if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
             skip = len(request) - 1
             continue
+        if token.text == "leave" and _as_they_are(tokens, i):
+            out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
+            continue
         if token.text == "leave" and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
             out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
             continue
         if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):
+            continue
+        if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
+            skip = 2  # the rest of "leave X as they are"
             continue
         if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
             start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
