@@ -99,6 +99,9 @@ def run_in_process(expect: Path, out: Path, assets: Path) -> None:
             results[row["id"]] = {"rc": 0, "stderr": "", "wall_s": time.perf_counter() - began}
         except EngineError as exc:
             results[row["id"]] = {"rc": 1, "stderr": f"error: {exc}", "wall_s": time.perf_counter() - began}
+        except Exception as exc:  # a crash is a result of the probe, counted, not the end of the run
+            results[row["id"]] = {"rc": 2, "stderr": f"crash: {type(exc).__name__}: {exc}", "wall_s": time.perf_counter() - began}
+            sys.stderr.write(f"{row['id']}: crash: {type(exc).__name__}: {exc}\n")
     (out / "run_results.json").write_text(json.dumps(results))
 
 

@@ -371,7 +371,10 @@ class Builder:
             speed_factor=speed, duration_s=duration, hold_s=hold,
         )
         self.steps.append(step)
-        resolved = self.tracker.apply(step)
+        try:
+            resolved = self.tracker.apply(step)
+        except GroundingError as exc:  # a goal the part cannot reach ("open the turntable")
+            raise self.refs.refuse(f"'{frame.text}': {exc}") from None
         self.explanation.record(act, step, resolved, [m.words for m in (*controls, *effects)])
 
     def joint_move(self, move: Move) -> JointMove:

@@ -15,6 +15,7 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension, JointMove
 from app.engine.contracts.steps import Step as ContractStep
+from app.engine.errors import GroundingError
 from app.engine.offline.geometry import ObjectGeometry, analyse
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Return, Step
 from app.engine.offline.resolve import resolve, target_expression
@@ -42,6 +43,9 @@ class Tracker:
         start = self.value(move.joint)
         resolved = resolve(move.goal, geometry, self.obj, self.asset, start, self.before.get(move.joint))
         returns: Return = "self_return" if move.release == "self_return" else "stays"
+        if resolved.value is None and resolved.omega is None:
+            raise GroundingError(f"could not work out where {move.link} ({move.joint}) should go for '{move.goal.state}': say how far "
+                                 "or which way, e.g. 'turn it a quarter turn clockwise'")
         if resolved.value is None:
             return JointGoal(move.joint, move.link, geometry.category, role, omega=resolved.omega, returns="stays", start=start)  # type: ignore[arg-type]
         value = float(resolved.value)

@@ -444,6 +444,8 @@ ROWS: list[Row] = [
     R("safe_101593", "Give the small dial one full turn clockwise.", joints={"joint_2": E(end=-2 * PI), "joint_1": E(still=True)}),
     R("laptop_10101", "The screen is leaning back too far. Tilt it forward until it forms a right angle with the base.", joints={"joint_1": E(end=-0.5215)}),
     R("dishwasher_11700", "Lower the door all the way and keep it there 2 seconds so the steam clears, then shut it.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
+    R("microwave_7119", "The door swings open, then the turntable makes a quarter revolution.", joints={"joint_0": E(end="upper"), "joint_1": E(abs_end=PI / 2)}),
+    R("microwave_7119", "Open the turntable.", refuse=True),
 ]
 
 

@@ -35,6 +35,9 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
+
+
 def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     if frame.link is Link.NEGATED:
         return frame  # "keep your hands off the drawer": what not to touch takes no verb
@@ -43,6 +46,9 @@ def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) 
         # "blender dial: 1/8 turn clockwise": the part before the colon, moved by the amount after it
         verb = "turn" if frame.quantities.amount is not None and frame.quantities.amount.unit == "rad" else "move"
         return replace(frame, verb=verb, sense=VerbSense.TURN if verb == "turn" else VerbSense.MOVE, themes=previous.themes)
+    amount = frame.quantities.amount
+    if frame.verb is None and frame.themes and amount is not None and amount.unit == "rad" and set(amount.words.split()) & _TURN_WORDS:
+        return replace(frame, verb="turn", sense=VerbSense.TURN)  # "then the turntable makes a half revolution"
     if frame.same_direction and previous is not None:
         q, before = frame.quantities, previous.quantities
         frame = replace(frame, quantities=replace(q, direction=q.direction or before.direction, sense=q.sense or before.sense,
