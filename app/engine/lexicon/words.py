@@ -78,7 +78,9 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "a third of the way": 1 / 3, "as far as": 1.0, "as high as it goes": 1.0, "as high as possible": 1.0, "as low as it goes": 1.0,
     "as low as possible": 1.0, "as wide as it goes": 1.0, "as far as it will": 1.0, "to the very top": 1.0, "to the top": 1.0,
     "to the very bottom": 1.0, "to the bottom": 1.0, "the rest of the way": 1.0, "as flat as it can go": 1.0, "as far as it can go": 1.0,
-    "as flat as possible": 1.0, "as wide as possible": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+    "as flat as possible": 1.0, "as wide as possible": 1.0, "hits its stop": 1.0, "hits the stop": 1.0, "hits its limit": 1.0, "hits the end": 1.0,
+    "reaches its stop": 1.0, "reaches its limit": 1.0, "reaches the end": 1.0, "stops moving": 1.0, "can't go any further": 1.0,
+    "won't go any further": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
                            "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
@@ -156,7 +158,8 @@ MULTIWORD: tuple[str, ...] = (
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
-    "as a result", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
+    "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
+    "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
     "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in the same direction", "right angle", "rest of the way",
 )
@@ -237,5 +240,5 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
-                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click"})
+                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap"})
 """Nouns that never name a part of the asset (units, places, measures)."""

@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass
 
 from app.engine.contracts.steps import Goal, GoalState, MeasuredFrom
+from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.senses import CLOSING_STATES, END_STATE, PartClass, part_class
 from app.engine.lexicon.verbs import VerbSense
@@ -112,6 +113,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     words = set(frame.text.split())
     if sense is VerbSense.HOLD and words & {"open", "opened", "shut", "closed"} and geometry.closed_value is not None:
         return "open" if words & {"open", "opened"} else "closed"  # "leave the left one open"
+    if sense not in END_STATE or part_class_ not in END_STATE[sense]:
+        raise GroundingError(f"'{frame.text}' does not say how {part.link} ({part.joint}) should move")
     state = END_STATE[sense][part_class_]
     if sense in (VerbSense.LOCK, VerbSense.CLOSE) and geometry.closed_value is not None and part_class_ is not PartClass.OPENABLE:
         return "closed"  # a latch whose shut end is known (from the lid it holds)

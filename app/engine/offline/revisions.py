@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.goals import goal_for
@@ -77,6 +78,11 @@ def hold(builder: Builder, act: Act) -> bool:
     frame = act.goal
     duration = frame.quantities.duration_s or 0.0
     pronoun = not frame.themes or all(m.pronoun for m in frame.themes)
+    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1]):
+        # "lift the toilet seat but keep the lid closed" where seat and lid are one part
+        said = " / ".join(m.words or m.head for m in frame.themes)
+        raise builder.refs.refuse(f"'{said}' is the part the step before moves ('{builder.steps[-1].op}'): it cannot move and stay "
+                                  f"{' '.join(sorted(set(frame.text.split()) & _KEPT_STATES))} at once on {builder.asset.name}")
     if builder.steps and (pronoun or same_as_last(builder, frame)):
         last = builder.steps[-1]
         builder.steps[-1] = last.model_copy(update={"hold_s": last.hold_s + duration})
@@ -105,6 +111,18 @@ def refine_last(builder: Builder, act: Act) -> None:
     effects = [m.model_copy(update={"goal": updated[m.joint]}) if m.joint in updated else m for m in last.effects]
     builder.steps[-1] = last.model_copy(update={"effects": effects})
     replay(builder)
+
+
+_KEPT_STATES = frozenset({"closed", "shut", "down", "open", "up"})
+_OPENING = frozenset({"open", "up", "upper", "pressed"})
+
+
+def _undoes(frame: Frame, step: ContractStep) -> bool:
+    """The hold keeps a state the step before leaves ("... keep the cover closed" after opening it)."""
+    words = set(frame.text.split())
+    opened = any(m.goal.state in _OPENING for m in step.effects)
+    closed = any(m.goal.state in ("closed", "down", "lower") for m in step.effects)
+    return (opened and bool(words & {"closed", "shut", "down"})) or (closed and bool(words & {"open", "up"}))
 
 
 def same_as_last(builder: Builder, frame: Frame) -> bool:

@@ -446,6 +446,12 @@ ROWS: list[Row] = [
     R("dishwasher_11700", "Lower the door all the way and keep it there 2 seconds so the steam clears, then shut it.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
     R("microwave_7119", "The door swings open, then the turntable makes a quarter revolution.", joints={"joint_0": E(end="upper"), "joint_1": E(abs_end=PI / 2)}),
     R("microwave_7119", "Open the turntable.", refuse=True),
+    R("oven_7221", "The door is hinged at the bottom. Open it forty degrees.", joints={"joint_0": E(end=math.radians(40))}),
+    R("safe_102387", "The door is ajar. Push it toward closed until only a 10 degree gap is left.", joints={"joint_0": E(end=SAFE_102387_CLOSED + math.radians(10))}),
+    R("storage_19179", "Pull the top drawer out until it hits the end, then push it back in.", joints={"joint_1": E(peak="upper", end=0.0)}),
+    R("coffee_machine_103030", "Lift the container itself 2 cm.", joints={"joint_1": E(end=0.02)}),
+    R("laptop_10248", "fold the screen down, shut onto the base", joints={"joint_1": E(end=-1.71)}),
+    R("toilet_102622", "Lift the seat but keep the lid closed.", refuse=True),
 ]
 
 

@@ -170,7 +170,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         frame = _carry(frame, previous_goal, measured)
         if frame.quantities.amount is not None:
             measured = frame
-        if frame.sense is VerbSense.WAIT and not frame.themes:
+        if frame.sense is VerbSense.WAIT and all(m.pronoun for m in frame.themes):  # "wait 2 s", "pause it"
             pending_wait += frame.quantities.duration_s or DEFAULT_WAIT_S
             continue
         if frame.link is Link.NEGATED:

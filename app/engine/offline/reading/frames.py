@@ -197,6 +197,8 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue
         elif preposition in _REFERENCE_PREPS and themes:
             continue  # "lift the lid off the box": a place, not another theme
+        elif preposition in ("onto", "into", "against") and mention.kind is None and not mention.pronoun and not mention.is_object:
+            continue  # "(and) shut onto the keyboard": where it ends, with the part carried from before
         elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes:
             continue  # "the left door, the one with the handle,": an apposition describing the door
         else:
@@ -241,9 +243,10 @@ def build_frame(clause: Clause) -> Frame:
     guessed = None
     if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
-    finite = verb_index is None and next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text)
-                                          and tokens[k - 1].text not in DETERMINERS), None)
-    if finite:
+    finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
+                  None) if verb_index is None else None
+    described = finite is not None and tokens[finite - 1].text in ("is", "are", "was", "were")  # "the door is hinged on the left"
+    if finite is not None and not described:
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
     progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
         tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
@@ -260,8 +263,8 @@ def build_frame(clause: Clause) -> Frame:
         objects = [m for m in objects if not m.start <= particle_at < m.end]
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
-    stative = verb_index is None and (progressive or any(t.text in STATIVE_VERBS for t in tokens))
-    intransitive = _intransitive(tokens, verb_index) or bool(finite)
+    stative = verb_index is None and (progressive or described or any(t.text in STATIVE_VERBS for t in tokens))
+    intransitive = _intransitive(tokens, verb_index) or finite is not None
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
     if verb == "follow" and subject:

@@ -269,6 +269,8 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             continue
         if token.text in ASIDE_WORDS:
             continue
+        if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
+            continue  # "lift the jug itself": emphasis, the jug
         if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS:
             token = replace(token, text="it's", lemma="it's")  # "its raining": the apostrophe left out
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
