@@ -23,7 +23,7 @@ from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.conditions import condition
 from app.engine.offline.explain import Explanation
-from app.engine.offline.goals import beyond_limit, goal_for
+from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, travel_left
 from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
 from app.engine.offline.object_parts import object_parts
@@ -40,7 +40,6 @@ from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
 
 REACHED = 1e-6
-
 
 def _label(part: Part) -> str:
     return part.kind.value if part.kind is not None else "part"
@@ -134,6 +133,10 @@ class Builder:
                 if abs(limit - self.tracker.value(part.joint)) <= 1e-6 and beyond_limit(flipped, part, self.tracker) is None:
                     self.notes.append(f"turned {part.link} ({part.joint}) {flipped.state}: it cannot turn {choice.goal.state} from where it is")
                     choice, limit = replace(choice, goal=flipped), None
+            if limit is not None and impossible(choice.goal, part, self.tracker, limit):
+                raise self.refs.refuse(f"'{frame.text}': {part.link} ({part.joint}) can move only "
+                                       f"{shown(travel_left(choice.goal, part, self.tracker, limit), choice.goal.unit)} that way "
+                                       f"(it stops at {limit:.4g}), not {shown(choice.goal.amount or 0.0, choice.goal.unit)}")
             if limit is not None:
                 self.notes.append(f"{part.link} ({part.joint}) cannot go that far: it stops at its limit {limit:.4g}")
             out.append(Move(part, own_role, choice.goal, words=said, loose=loose))

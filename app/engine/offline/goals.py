@@ -213,3 +213,27 @@ def beyond_limit(goal: Goal, part: Part, tracker: Tracker) -> float | None:
     if abs(abs(value - start) - wanted) > 1e-6 and value in (geometry.lower, geometry.upper):
         return value
     return None
+
+
+IMPOSSIBLE_FACTOR = 3.0
+"""An explicit amount more than this many times the travel left that way is refused, not clamped."""
+
+
+def travel_left(goal: Goal, part: Part, tracker: Tracker, limit: float) -> float:
+    """How far the part can go from where ``goal`` is measured to ``limit``."""
+    geometry = part.geometry
+    start = closed_of(geometry) if goal.measured_from == "closed" else geometry.rest if goal.measured_from == "rest" else tracker.value(part.joint)
+    return abs(limit - start)
+
+
+def impossible(goal: Goal, part: Part, tracker: Tracker, limit: float) -> bool:
+    """An explicit amount far beyond the travel left that way ("rotate the switch 360 degrees" on an 18 degree
+    rocker, "20 degrees more" at the stop): a refusal, not a clamp."""
+    if goal.amount is None or goal.unit not in ("rad", "m"):
+        return False
+    left = travel_left(goal, part, tracker, limit)
+    return left < LIMIT_EPS or goal.amount > IMPOSSIBLE_FACTOR * left
+
+
+def shown(amount: float, unit: str | None) -> str:
+    return f"{amount:.3g} m" if unit == "m" else f"{math.degrees(amount):.0f} degrees"

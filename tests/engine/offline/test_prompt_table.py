@@ -452,6 +452,9 @@ ROWS: list[Row] = [
     R("coffee_machine_103030", "Lift the container itself 2 cm.", joints={"joint_1": E(end=0.02)}),
     R("laptop_10248", "fold the screen down, shut onto the base", joints={"joint_1": E(end=-1.71)}),
     R("toilet_102622", "Lift the seat but keep the lid closed.", refuse=True),
+    R("switch_100952", "Turn the switch through two full turns.", refuse=True),
+    R("door_8877", "Open the door another 30 degrees.", refuse=True),
+    R("refrigerator_11178", "open the left door 200 degrees", joints={"joint_0": E(end="upper")}),
 ]
 
 
