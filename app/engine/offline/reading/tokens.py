@@ -293,9 +293,10 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             out.insert(start, replace(token, text="without", lemma="without"))
             continue
         hands = tuple(t.text for t in tokens[i:i + 4])
-        if hands[:3] in (("keep", "your", "hands"), ("keep", "hands", "off")) or hands[:2] == ("hands", "off"):
+        off = next((k for k, word in enumerate(hands) if word == "off"), None)
+        if off is not None and (hands[:3] in (("keep", "your", "hands"), ("keep", "hands", "off")) or hands[:2] == ("hands", "off")):
             out.append(replace(token, text="without", lemma="without"))  # "keep your hands off the drawer"
-            skip = next(k for k, word in enumerate(hands) if word == "off")
+            skip = off
             continue
         phrase = next((p for p in ASIDE_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if phrase is None and tuple(token.text.split("_")) in ASIDE_PHRASES:
