@@ -83,6 +83,14 @@ def hold(builder: Builder, act: Act) -> bool:
         said = " / ".join(m.words or m.head for m in frame.themes)
         raise builder.refs.refuse(f"'{said}' is the part the step before moves ('{builder.steps[-1].op}'): it cannot move and stay "
                                   f"{' '.join(sorted(set(frame.text.split()) & _KEPT_STATES))} at once on {builder.asset.name}")
+    amount = frame.quantities.amount
+    base = builder.steps[-1].base if builder.steps else None
+    if pronoun and base is not None and builder.last_base_default and amount is not None and amount.unit == "m":
+        # "pick the laptop up and hold it 30 cm above the desk": the height the lift had no number for
+        builder.steps[-1] = builder.steps[-1].model_copy(update={"base": base.model_copy(update={"distance_m": amount.value})})
+        builder.last_base_default = False
+        replay(builder)
+        builder.notes.append(f"read '{frame.text}' as the distance of the previous motion")
     if builder.steps and (pronoun or same_as_last(builder, frame)):
         last = builder.steps[-1]
         builder.steps[-1] = last.model_copy(update={"hold_s": last.hold_s + duration})

@@ -455,6 +455,8 @@ ROWS: list[Row] = [
     R("switch_100952", "Turn the switch through two full turns.", refuse=True),
     R("door_8877", "Open the door another 30 degrees.", refuse=True),
     R("refrigerator_11178", "open the left door 200 degrees", joints={"joint_0": E(end="upper")}),
+    R("extra/laptop_11395", "Lift the laptop up and hold it 25 cm above the table.", base=(0.0, 0.0, 0.25)),
+    R("trash_can_102155", "Bin lid: raise it to vertical, 3 s pause, then let it drop shut.", joints={"joint_2": E(peak=PI / 2, end=0.0)}),
 ]
 
 

@@ -35,6 +35,7 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
@@ -138,6 +139,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
+        if frame.verb is None and not frame.themes and frame.quantities.duration_s is not None and set(frame.text.split()) & _PAUSE_NOUNS:
+            pending_wait += frame.quantities.duration_s  # "up to vertical, 2 s pause, then ...": a wait, not a manner
+            continue
         if frame.verb is None and not frame.themes and not frame.returning and (
                 frame.quantities.duration_s is not None or frame.quantities.speed_factor != 1.0) and frame.quantities.amount is None:
             manner = frame

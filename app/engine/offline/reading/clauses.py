@@ -109,6 +109,9 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     return True
 
 
+_PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
+
+
 def _starts_clause(tokens: list[Token], i: int) -> bool:
     """A new clause starts at ``i`` (after "and" / a comma): a verb, or a subject followed by a verb."""
     j = i
@@ -118,6 +121,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         return True
     if j < len(tokens) and tokens[j].text in ("it's", "they're", "that's", "it'll"):
         return True  # "so it's not in the way"
+    if j + 2 < len(tokens) and tokens[j].number is not None and tokens[j + 2].text in _PAUSES:
+        return True  # "up to vertical, 2 s pause, then ...": a wait
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
             tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and tokens[j + 1].lemma in VERBS)):
         return True  # "so I can put my plate in", "so they can air-dry"

@@ -17,6 +17,7 @@ from app.engine.lexicon.words import (
     INSTRUMENT,
     LIGHT_VERBS,
     MODALS,
+    OBJECT_NOUNS,
     PERSONS,
     PLACES,
     SIMULTANEOUS,
@@ -324,7 +325,8 @@ def _unknown_verb(token: Token) -> bool:
     from app.engine.offline.reading.mentions import kind_of_word
 
     word = token.text
-    if not word.isalpha() or word in DETERMINERS or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None:
+    if not word.isalpha() or word in DETERMINERS or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
+            word in OBJECT_NOUNS):  # "bin lid: up to vertical": the object, not "to bin"
         return False
     lemmas = getAllLemmas(word)
     return word in lemmas.get("VERB", ())
