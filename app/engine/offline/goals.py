@@ -113,6 +113,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     words = set(frame.text.split())
     if sense is VerbSense.HOLD and words & {"open", "opened", "shut", "closed"} and geometry.closed_value is not None:
         return "open" if words & {"open", "opened"} else "closed"  # "leave the left one open"
+    if sense is VerbSense.HOLD and words & {"up", "down"} and (geometry.up_value if "up" in words else geometry.down_value) is not None:
+        return "up" if "up" in words else "down"  # "leave the front one up"
     if sense not in END_STATE or part_class_ not in END_STATE[sense]:
         raise GroundingError(f"'{frame.text}' does not say how {part.link} ({part.joint}) should move")
     state = END_STATE[sense][part_class_]

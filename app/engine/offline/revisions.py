@@ -78,6 +78,8 @@ def hold(builder: Builder, act: Act) -> bool:
     frame = act.goal
     duration = frame.quantities.duration_s or 0.0
     pronoun = not frame.themes or all(m.pronoun for m in frame.themes)
+    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1]) and _kept_effect(builder, frame):
+        return True
     if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1]):
         # "lift the toilet seat but keep the lid closed" where seat and lid are one part
         said = " / ".join(m.words or m.head for m in frame.themes)
@@ -123,6 +125,20 @@ def refine_last(builder: Builder, act: Act) -> None:
 
 _KEPT_STATES = frozenset({"closed", "shut", "down", "open", "up"})
 _OPENING = frozenset({"open", "up", "upper", "pressed"})
+
+
+def _kept_effect(builder: Builder, frame: Frame) -> bool:
+    """"Press the release button, but keep the door closed": the door the press would free stays; the press stays."""
+    last = builder.steps[-1]
+    parts, _ = builder.ground(frame, VerbSense.HOLD, frame.themes)
+    joints = {p.joint for p in parts}
+    if not last.controls or not joints or not all(m.joint in joints for m in last.effects if m.joint in joints) or not any(
+            m.joint in joints for m in last.effects):
+        return False
+    builder.steps[-1] = last.model_copy(update={"effects": [m for m in last.effects if m.joint not in joints]})
+    replay(builder)
+    builder.notes.append(f"kept {', '.join(sorted(joints))} where it is: '{frame.text}'")
+    return True
 
 
 def _undoes(frame: Frame, step: ContractStep) -> bool:

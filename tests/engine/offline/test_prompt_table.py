@@ -457,6 +457,15 @@ ROWS: list[Row] = [
     R("refrigerator_11178", "open the left door 200 degrees", joints={"joint_0": E(end="upper")}),
     R("extra/laptop_11395", "Lift the laptop up and hold it 25 cm above the table.", base=(0.0, 0.0, 0.25)),
     R("trash_can_102155", "Bin lid: raise it to vertical, 3 s pause, then let it drop shut.", joints={"joint_2": E(peak=PI / 2, end=0.0)}),
+    # --- blind dev probe, round 6 (benchmark/probes/dev_round6_prompts.jsonl), rephrased ---
+    R("washing_machine_103508", "Of the three knobs, turn the middle one 90 degrees clockwise.", joints={"joint_2": E(end=PI / 2), "joint_1": E(still=True), "joint_3": E(still=True)}),
+    R("extra/toaster_103473", "Push the rear lever down halfway and leave the front one up.", joints={"joint_1": E(end=0.202), "joint_0": E(still=True)}),
+    R("toaster_103483", "Move the toaster 15 cm toward me and 0.1 m to the right.", base=(-0.15, -0.1, 0.0)),
+    R("toaster_103483", "Slide the toaster 20 cm away from me.", base=(0.2, 0.0, 0.0)),
+    R("safe_101593", "Robot task: (a) turn the big left-hand knob half a turn clockwise; (b) then open the door 90 degrees.",
+      joints={"joint_1": E(end=-PI), "joint_0": E(end=PI / 2)}),
+    R("extra/microwave_7128", "Press the door release button but keep the door shut.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
+    R("extra/safe_102380", "Turn the safe 90 degrees as seen from above; the door stays as it is.", joints={"joint_2": E(still=True)}, yaw_deg=90.0),
 ]
 
 

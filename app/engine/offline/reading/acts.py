@@ -137,6 +137,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             # "the left to 120 degrees, the right to 60": the unit of the one before
             amount = replace(measured.quantities.amount, value=abs(frame.quantities.target) * 3.141592653589793 / 180.0, words=f"{frame.quantities.target:g}")
             frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
+        if frame.text.startswith("of ") and frame.themes and index + 1 < len(frames):
+            frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist the middle one"
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
         if frame.verb is None and not frame.themes and frame.quantities.duration_s is not None and set(frame.text.split()) & _PAUSE_NOUNS:

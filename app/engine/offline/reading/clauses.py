@@ -277,7 +277,8 @@ def _measure_at(tokens: list[Token], start: int) -> int | None:
         if tokens[i].number is None and tokens[i].text not in ("half", "a", "an", "a_quarter", "quarter"):
             continue
         unit = next((t for t in tokens[i + 1:i + 4] if t.number is None and t.text not in ("a", "an", "of")), None)
-        if unit is not None and (unit.lemma in LENGTH_UNITS or unit.lemma in ANGLE_UNITS) and unit.text not in ("in", "m"):
+        metres = unit is not None and unit.text == "m" and tokens[i].number is not None and tokens[i + 1] is unit  # "0.1 m"
+        if unit is not None and (unit.lemma in LENGTH_UNITS or unit.lemma in ANGLE_UNITS) and (unit.text not in ("in", "m") or metres):
             return i
     return None
 

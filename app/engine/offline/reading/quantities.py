@@ -45,7 +45,9 @@ _DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second
 _POSITION_DIRECTIONS = {"to_the_top": "up", "to_the_very_top": "up", "to_the_bottom": "down", "to_the_very_bottom": "down",
                         "as_high_as_it_goes": "up", "as_high_as_possible": "up", "as_low_as_it_goes": "down", "as_low_as_possible": "down"}
 _SIDE_PREPS = frozenset({"toward", "towards", "against", "onto", "over"})
-_SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right"}
+_SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right",
+                    **dict.fromkeys(("me", "you", "us", "viewer", "camera", "user"), "forward"), "wall": "backward"}
+_VIEWER_WORDS = frozenset({"me", "you", "us", "viewer", "camera", "user"})
 
 
 def _side_after(tokens: list[Token], j: int) -> str | None:
@@ -274,6 +276,9 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             continue
         if token.text in _POSITION_DIRECTIONS and "direction" not in values:
             values["direction"] = _POSITION_DIRECTIONS[token.text]  # "to the very top": all the way up
+        if token.text == "away" and nxt is not None and nxt.text == "from" and i + 2 < len(tokens) and (
+                tokens[i + 2].text in _VIEWER_WORDS or (tokens[i + 2].text == "the" and i + 3 < len(tokens) and tokens[i + 3].text in _VIEWER_WORDS)):
+            values.setdefault("direction", "backward")  # "push it 20 cm away from me"
         if token.text in _SIDE_PREPS and nxt is not None:
             side = _side_after(tokens, i + 1)
             if side is not None and "direction" not in values:

@@ -242,7 +242,7 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
 
 
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
-_STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put"})
+_STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
 
@@ -276,6 +276,9 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
             skip = len(request) - 1
+            since = next((k for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end or out[k].text == ":"), -1)
+            if request[-1] == ":" and 0 < len(out) - since - 1 <= 2:
+                del out[since + 1:]  # "Robot task: ...": the heading's own words go too
             continue
         if token.text == "leave" and _as_they_are(tokens, i):
             out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
