@@ -158,7 +158,7 @@ MULTIWORD: tuple[str, ...] = (
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
-    "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
+    "like that", "like this", "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
     "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
     "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in the same direction", "right angle", "rest of the way",
@@ -189,7 +189,7 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
                                               ("once", "done"))
 """The user's own progress ("when I'm done"): read as "then"."""
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
-    ("no", "more"), ("task", ":"), ("goal", ":"), ("note", ":"),
+    ("no", "more"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
@@ -233,12 +233,12 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
                    "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must",
-                   "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "furthest", "farthest", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
+                   "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
-                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap"})
+                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "like_that", "like_this", "animating", "animation", "moving", "movement"})
 """Nouns that never name a part of the asset (units, places, measures)."""

@@ -178,7 +178,11 @@ class Builder:
             self.notes.append(f"ignored '{goal.text}' (no action found)")
             return
         if sense is VerbSense.GRASP:
-            parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])
+            try:
+                parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])
+            except GroundingError:
+                self.notes.append(f"ignored '{goal.text}': it names no part of {self.asset.name}")  # "while grabbing the milk"
+                return
             self.refs.remember(parts, [])
             self.notes.append(f"'{goal.text}': taking hold moves nothing by itself")
             return

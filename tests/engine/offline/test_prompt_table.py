@@ -466,6 +466,12 @@ ROWS: list[Row] = [
       joints={"joint_1": E(end=-PI), "joint_0": E(end=PI / 2)}),
     R("extra/microwave_7128", "Press the door release button but keep the door shut.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
     R("extra/safe_102380", "Turn the safe 90 degrees as seen from above; the door stays as it is.", joints={"joint_2": E(still=True)}, yaw_deg=90.0),
+    R("dishwasher_11700", "Open the dishwasher 20 degrees to look at the plates, then close it.", joints={"joint_0": E(peak=PI / 9, end=0.0)}),
+    R("microwave_7119", "Open the door 90 degrees, leave it like that for 2 s so the smell escapes, then shut it.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
+    R("extra/microwave_7128", "Upper knob: give it a 90 degree clockwise turn.", joints={"joint_3": E(end=-PI / 2), "joint_2": E(still=True)}),
+    R("storage_27044", "pull the drawer al the way out", joints={"joint_0": E(end="upper")}),
+    R("refrigerator_11178", "swing the left hand fridge door open 45 degrees", joints={"joint_0": E(end=PI / 4), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "Open the right door while grabbing a snack, then close it.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
 ]
 
 

@@ -136,8 +136,9 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
             return True  # "so the steam can escape", "so the camera can see inside"
-        if k > j + 1 and tokens[j].text in DETERMINERS and finite_unknown_verb(tokens[k].text):
-            return True  # "so the steam clears": a verb the lexicon does not know
+        if k > j + 1 and tokens[j].text in DETERMINERS and (finite_unknown_verb(tokens[k].text) or (
+                k == j + 2 and tokens[k].text.endswith("s") and tokens[k].text != tokens[k].lemma and _verb_form(tokens[k].text))):
+            return True  # "so the steam clears / escapes": a verb the lexicon does not know
         k += 1
     return False
 
@@ -167,7 +168,13 @@ def _other_verb(tokens: list[Token], i: int) -> bool:
     lemmas = getAllLemmas(token.text)
     base = token.text in lemmas.get("VERB", ())
     return token.text.isalpha() and "VERB" in lemmas and (follows in DETERMINERS or follows in ("it", "them", "that", "this") or (
-        base and follows in ("", ",", ".", ";", "!", "?", "and", "then")))
+        base and follows in ("", ",", ".", ";", "!", "?", "and", "then", "on", "in", "at", "for", "inside", "up")))  # "to check on the dishes"
+
+
+def _verb_form(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word.isalpha() and any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
 
 
 def _ing(token: Token) -> bool:

@@ -100,7 +100,8 @@ class Frame:
 
 
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
-                                 "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3"})
+                                 "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3", "degree", "degrees",
+                                 "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise", "counter-clockwise"})
 
 
 def _light_verb(tokens: list[Token]) -> list[Token]:
@@ -240,9 +241,12 @@ def build_frame(clause: Clause) -> Frame:
     first, tokens = _first_of(_light_verb(wished))
     quantities = read_quantities(tokens)
     verb_index = _find_verb(tokens)
+    named_side = clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL
+    if verb_index == 0 and named_side:
+        verb_index = None  # "Lower knob: give it a 45 degree turn": a heading names a part, "lower" is its side
     verb = tokens[verb_index].lemma if verb_index is not None else None
     guessed = None
-    if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1:
+    if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1 and not named_side:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None
@@ -332,12 +336,20 @@ def _unknown_verb(token: Token) -> bool:
     return word in lemmas.get("VERB", ())
 
 
+def _unknown_verb_form(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word.isalpha() and "VERB" in getAllLemmas(word)
+
+
 def _aside(tokens: list[Token]) -> bool:
     """The clause is about a person ("I can put my plate in", "you can reach in") or says what something
     else may then do ("they can air-dry")."""
     first = tokens[0].text if tokens else ""
     second = tokens[1].text if len(tokens) > 1 else ""
     weather = first == "it's" and second.endswith("ing") and len(tokens) > 1 and tokens[1].lemma not in VERBS  # "it's raining"
+    if len(tokens) == 2 and first in ("it", "they") and tokens[1].lemma not in VERBS and _unknown_verb_form(second):
+        return True  # "(while) it brews": what the object does, not a part's motion
     return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather
 
 

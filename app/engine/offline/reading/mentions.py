@@ -31,11 +31,12 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
-from app.engine.offline.reading.tokens import Token, finite_unknown_verb
+from app.engine.offline.reading.tokens import Token, finite_unknown_verb, verb_ing
 
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
+_ING_NOUNS = frozenset({"opening", "housing", "casing", "ceiling", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STOP = PHRASE_BREAKS
 _NOT_HEADS = NOT_PART_NOUNS
 _OBJECT_WORDS = frozenset(OBJECT_NOUNS)
@@ -226,7 +227,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             break
         elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
-        elif nouns and finite_unknown_verb(word):
+        elif nouns and (finite_unknown_verb(word) or (word not in _ING_NOUNS and verb_ing(word))):
             break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know
         elif (token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word:
             unknown.append(i)

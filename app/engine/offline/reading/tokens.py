@@ -241,6 +241,7 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
     return out
 
 
+_AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so", "until", "as"})
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
@@ -269,6 +270,12 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             continue
         if token.text in ASIDE_WORDS:
             continue
+        after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+        if token.text == "al" and after == "the":
+            token = replace(token, text="all", lemma="all", corrected_from="al")  # "open it al the way"
+        if token.text in ("left_hand", "right_hand") and after.isalpha() and after not in _AFTER_HAND:
+            side = token.text.split("_")[0]
+            token = replace(token, text=f"{side}-hand", lemma=f"{side}-hand")  # "the right hand fridge door"
         if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
             continue  # "lift the jug itself": emphasis, the jug
         if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS:
@@ -345,6 +352,16 @@ def finite_unknown_verb(word: str) -> bool:
 
     lemmas = getAllLemmas(word)
     return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and not set(lemmas["VERB"]) & _AUXILIARIES
+
+
+@lru_cache(maxsize=4096)
+def verb_ing(word: str) -> bool:
+    """A verb's -ing form ("going", "spinning")."""
+    if not word.endswith("ing") or not word.isalpha():
+        return False
+    from lemminflect import getAllLemmas
+
+    return any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
 
 
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
