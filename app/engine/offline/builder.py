@@ -79,7 +79,7 @@ class Builder:
         words: list[str] = []
         for mention in mentions:
             if mention.pronoun:
-                found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural)
+                found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural, shuts=sense in (VerbSense.OPEN, VerbSense.CLOSE))
                 if not found and self.parts:
                     found = self._object_parts(frame, sense)
             elif mention.is_object:

@@ -56,6 +56,8 @@ class Referents:
     """The previous clause moved the whole object: "it" is the object."""
     group: list[Part] = field(default_factory=list)
     """The last several parts one plural mention named ("both fridge doors")."""
+    earlier: list[list[Part]] = field(default_factory=list)
+    """Every earlier "it", most recent last: "close it" after spinning a turntable means the door opened before."""
     assigned: dict[str, Part] = field(default_factory=dict)
     """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
 
@@ -348,19 +350,24 @@ class Referents:
             return " (did you mean " + " or ".join(f"'{n}'" for n in close) + "?)"
         return ""
 
-    def pronoun(self, *, release: bool = False, plural: bool = False) -> list[Part]:
+    def pronoun(self, *, release: bool = False, plural: bool = False, shuts: bool = False) -> list[Part]:
         """What "it" / "them" refers to now ([] when nothing was named yet); "them" after a group was worked one by
-        one is the whole group ("open both doors, the left one first, then close them")."""
+        one is the whole group ("open both doors, the left one first, then close them"); ``shuts``: the verb opens or
+        closes, so "it" is the latest part that can ("spin the turntable, then close it": the door)."""
         if release and self.last_controls:
             return list(self.last_controls)
         if plural and len(self.last) < len(self.group) and all(p in self.group for p in self.last):
             return list(self.group)
+        if shuts and self.last and not any(_shuts(p) for p in self.last):
+            return next((list(parts) for parts in reversed(self.earlier) if all(_shuts(p) for p in parts)), list(self.last))
         return list(self.last)
 
     def remember(self, themes: list[Part], controls: list[Part]) -> None:
         if themes or controls:
             self.last_object = False
         if themes:
+            if self.last and self.last != list(themes):
+                self.earlier.append(self.last)
             self.last = list(themes)
             kinds = [p.kind for p in themes if p.kind is not None]
             self.last_kind = kinds[0] if kinds else self.last_kind
@@ -370,6 +377,10 @@ class Referents:
 
     def with_kind(self, mention: Mention, kind: PartKind) -> Mention:
         return replace(mention, kind=kind, anaphor=False)
+
+
+def _shuts(part: Part) -> bool:
+    return part.geometry.closed_value is not None and part.geometry.type != "continuous"
 
 
 def _qualified(mention: Mention) -> bool:

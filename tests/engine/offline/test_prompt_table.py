@@ -472,6 +472,7 @@ ROWS: list[Row] = [
     R("storage_27044", "pull the drawer al the way out", joints={"joint_0": E(end="upper")}),
     R("refrigerator_11178", "swing the left hand fridge door open 45 degrees", joints={"joint_0": E(end=PI / 4), "joint_1": E(still=True)}),
     R("refrigerator_11178", "Open the right door while grabbing a snack, then close it.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
+    R("microwave_7119", "Open the door. Then turn the turntable a quarter turn. Finally close it.", joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(abs_end=PI / 2)}),
 ]
 
 
