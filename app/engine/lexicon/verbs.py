@@ -229,6 +229,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     # states, time, returns
     VerbInfo("hold", S.HOLD, _p(down=S.PRESS, open=S.HOLD, up=S.HOLD), stative=True),
     VerbInfo("keep", S.HOLD, stative=True),
+    VerbInfo("rest", S.HOLD, stative=True),
     VerbInfo("leave", S.HOLD, stative=True),
     VerbInfo("wait", S.WAIT, stative=True),
     VerbInfo("pause", S.WAIT, stative=True),

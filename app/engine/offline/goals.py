@@ -16,6 +16,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.senses import CLOSING_STATES, END_STATE, PartClass, part_class
 from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.words import CENTRE_WORDS
 from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Amount
@@ -74,6 +75,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     geometry = part.geometry
     rotates = geometry.type in ("revolute", "continuous")
     absolute = quantities.amount is not None and quantities.amount.reference == "closed"
+    if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
+            geometry.lower < geometry.rest < geometry.upper):
+        return "rest"  # "then back to the middle": a lever resting midway goes back to rest
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
                                                   or frame.explicit_return):
         return "previous" if part.joint in tracker.before else "rest"

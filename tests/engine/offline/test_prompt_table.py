@@ -473,6 +473,11 @@ ROWS: list[Row] = [
     R("refrigerator_11178", "swing the left hand fridge door open 45 degrees", joints={"joint_0": E(end=PI / 4), "joint_1": E(still=True)}),
     R("refrigerator_11178", "Open the right door while grabbing a snack, then close it.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
     R("microwave_7119", "Open the door. Then turn the turntable a quarter turn. Finally close it.", joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(abs_end=PI / 2)}),
+    R("box_102456", "Fling the lid open as far as the hinge allows, then put it back the way it was.", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("faucet_148", "Push the lever right as far as it goes, then back to the middle.", joints={"joint_0": E(peak=-PI / 2, end=0.0)}),
+    R("extra/faucet_1343", "Swing the lever fully to the left, let it run for 3 seconds, then return it to the centre.", joints={"joint_0": E(moves=True, end=0.0)}),
+    R("laptop_10248", "The lid comes down fully shut, rests there for a second, then lifts back up to where it started.", joints={"joint_1": E(peak=-1.71, end=0.0)}),
+    R("extra/bucket_100432", "Let the handle tip 20 degrees further toward the front from where it's resting now.", joints={"joint_0": E(end=-PI / 9)}),
 ]
 
 

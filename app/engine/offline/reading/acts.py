@@ -35,6 +35,8 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
+_STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 _PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
@@ -75,7 +77,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return replace(frame, themes=previous.themes)  # "the handle swings up, then drops back down": the same part
     if frame.verb is not None or previous is None or previous.verb is None:
         return frame
-    amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None)
+    amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None
+                                        or frame.returning)  # "..., then back to the middle"
     if frame.codes and not frame.themes:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
     if frame.themes or amount_only:
@@ -141,6 +144,11 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist the middle one"
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
+        if frame.let and frame.verb in _IDLE_VERBS and frame.quantities.duration_s is not None and all(m.pronoun or m.is_object for m in frame.themes):
+            pending_wait += frame.quantities.duration_s  # "let it run for 4 seconds": time passes, nothing moves
+            continue
+        if frame.verb is None and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
+            frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False)  # "..., rests there for 2 s"
         if frame.verb is None and not frame.themes and frame.quantities.duration_s is not None and set(frame.text.split()) & _PAUSE_NOUNS:
             pending_wait += frame.quantities.duration_s  # "up to vertical, 2 s pause, then ...": a wait, not a manner
             continue

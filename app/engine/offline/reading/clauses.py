@@ -19,6 +19,7 @@ from app.engine.lexicon.words import (
     ANGLE_UNITS,
     BEFORE,
     CAUSATIVES,
+    CENTRE_WORDS,
     DETERMINERS,
     FILLERS,
     LENGTH_UNITS,
@@ -110,6 +111,7 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
 
 
 _PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
+_STAYS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 
 
 def _starts_clause(tokens: list[Token], i: int) -> bool:
@@ -123,6 +125,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         return True  # "so it's not in the way"
     if j + 2 < len(tokens) and tokens[j].number is not None and tokens[j + 2].text in _PAUSES:
         return True  # "up to vertical, 2 s pause, then ...": a wait
+    if j + 1 < len(tokens) and tokens[j].text in _STAYS and tokens[j + 1].text in ("there", "for", "like_that", "open", "shut", "closed"):
+        return True  # "the lid comes down, rests there for two seconds, ...": a hold
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
             tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and tokens[j + 1].lemma in VERBS)):
         return True  # "so I can put my plate in", "so they can air-dry"
@@ -220,6 +224,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.SEQUENCE, word, False)
         elif word in SIMULTANEOUS and not _starts_clause(tokens, nxt) and not (nxt < len(tokens) and _ing(tokens[nxt])):
             boundary = None  # "open both doors at the same time": how, not a second action
+        elif word == "and" and current and nxt < len(tokens) and tokens[nxt].text in CENTRE_WORDS:
+            boundary = (Link.SEQUENCE, word, True)  # "all the way to the left and back to centre"
+        elif word == "as" and len(current) >= 2 and current[-2].text == "as":
+            boundary = None  # "as wide as the hinge allows": a comparison, not a second event
         elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
             boundary = (Link.PARALLEL, word, False)
         elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current):
@@ -233,7 +241,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             link, marker, conjoined = Link.RESULT, word, False  # "swing it almost shut, leaving it 10 degrees ajar": the end state
             i += 1
             continue
-        elif word == "it's" and len(current) > 1 and verb_at(current, 0) and nxt < len(tokens) and tokens[nxt].text.endswith("ing"):
+        elif word == "it's" and len(current) > 1 and verb_at(current, 0) and nxt < len(tokens) and tokens[nxt].text.endswith("ing") and (
+                current[-1].text not in ("where", "what", "how", "when", "as", "that", "because", "since", "while", "from", "if")):
             boundary = (Link.SEQUENCE, word, True)  # "close the window it's raining": a run-on second sentence
             nxt = i
         elif word == "and" and _measure_at(current, 0) is not None and _measure_at(tokens, nxt) == nxt:

@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
 from app.engine.lexicon.words import (
     CAUSATIVES,
+    CENTRE_WORDS,
     DETERMINERS,
     INSTRUMENT,
     LIGHT_VERBS,
@@ -307,7 +308,10 @@ def build_frame(clause: Clause) -> Frame:
     inside = {k for m in objects for k in range(m.start, m.end)}
     if verb_index is None and any(t.text == "back" and k not in inside for k, t in enumerate(tokens)):
         particle = "back"  # "then 0.3 m back" (not "the back one")
-    returning = sense is VerbSense.RETURN or bool(words & _RETURN_WORDS) or (particle == "back" and sense in (VerbSense.RETURN, None))
+    said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
+        t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
+    returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
+        words & CENTRE_WORDS)
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),

@@ -293,7 +293,7 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             phrase = token.text.replace("_", " ")
             amount = Amount(AMOUNTS[phrase], "fraction", loose=phrase in LOOSE_AMOUNTS, words=phrase)
             used.add(i)
-            if token.text == "as_far_as":  # "as far as its hinge allows": the rest of the clause only says "all the way"
+            if token.text in ("as_far_as", "as_wide_as", "as_high_as"):  # "as far as its hinge allows": the rest only says "all the way"
                 j = i + 1
                 while j < len(tokens) and not tokens[j].is_punct and tokens[j].text not in ("then", "and_then"):
                     used.add(j)

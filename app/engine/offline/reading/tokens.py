@@ -278,7 +278,8 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
             token = replace(token, text=f"{side}-hand", lemma=f"{side}-hand")  # "the right hand fridge door"
         if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
             continue  # "lift the jug itself": emphasis, the jug
-        if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS:
+        if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS and (
+                i + 2 >= len(tokens) or tokens[i + 2].is_punct or tokens[i + 2].text in ("and", "so", "then", "outside", "again", "now", "hard")):
             token = replace(token, text="it's", lemma="it's")  # "its raining": the apostrophe left out
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
