@@ -195,6 +195,15 @@ REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
+SHORTHAND: Mapping[str, str] = MappingProxyType({
+    # text-speak and chat abbreviations -> the word they stand for
+    "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "ty": "thanks", "tho": "though",
+    "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
+    "asap": "quickly", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
+})
+"""Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
+VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
+""""to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",

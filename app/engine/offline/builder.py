@@ -36,6 +36,7 @@ from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold
 from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
+from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
 
@@ -88,7 +89,12 @@ class Builder:
             else:
                 found = self._only_part(frame, mention)
                 if not found:
-                    found, notes = self.refs.resolve(mention, prefer=prefer)
+                    try:
+                        found, notes = self.refs.resolve(mention, prefer=prefer)
+                    except GroundingError as exc:
+                        if not stray(mention, exc, mentions):
+                            raise
+                        found, notes = [], [f"ignored the word '{mention.head}': it names no part of {self.asset.name}"]
                     self.notes.extend(notes)
                 if (mention.plural or mention.collective) and len(found) > 1:
                     self.refs.group = list(found)

@@ -17,6 +17,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VERBS
+from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -72,7 +73,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         ambiguous (the message lists the candidates and how to name each).
     """
     words = tokenize(prompt, asset_words(asset))
-    acts = build_acts(read_frames(split_clauses(words)))
+    clauses = split_clauses(words)
+    acts = build_acts(read_frames(clauses))
     builder = Builder(asset)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     if not builder.parts and not any(a.goal.verb for a in acts):
@@ -96,5 +98,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             raise skipped[0]
         raise builder.refs.refuse(f"could not find an action in '{prompt}'")
     extension = Extension(steps=builder.steps)
-    notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes]))
-    return Reading(extension=extension, intent=resolve_steps(extension, asset, prompt, notes), understanding=builder.explanation.entries(), notes=notes)
+    understanding = builder.explanation.entries()
+    checked = audit(clauses, extension, understanding, builder.explanation.obj)
+    notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes, *checked]))
+    return Reading(extension=extension, intent=resolve_steps(extension, asset, prompt, notes), understanding=understanding, notes=notes)

@@ -58,6 +58,10 @@ CASES: list[tuple[str, str]] = [
     ("kitchen_pot_100038", "lift the whole pot, lid and all, 25 cm"),
     ("coffee_machine_103030", "Once the lid is lifted 20 cm off the jar, lift the jar 4 cm."),
     ("stapler_103099", "snap the stapler's staple magazine shut"),
+    ("faucet_148", "cn u push teh tap handel 40 degres towrds the rihgt"),
+    ("microwave_7119", "open the door 30 degrees, then 20 more"),
+    ("box_102456", "Drag the toy box 30 cm to my right."),
+    ("storage_27044", "pull the drawer out 20 cm, then shove it bak shut"),
     ("washing_machine_103508", "Close the lid, then turn the large cycle dial on the right of the control panel a quarter turn clockwise to start the wash."),
 ]
 STAGES = ("tokens", "clauses", "frames", "acts", "contract")

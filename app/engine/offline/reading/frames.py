@@ -28,7 +28,7 @@ from app.engine.lexicon.words import (
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.mentions import Mention, parse_mentions
-from app.engine.offline.reading.quantities import Quantities, read_quantities
+from app.engine.offline.reading.quantities import Quantities, Unit, read_quantities, said_unit
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 
 _BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
@@ -163,12 +163,17 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
     return None, None
 
 
+_STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
+
+
 def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     if verb is None:
         return None
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:
         return info.particles[particle]
+    if particle in _STATE_PARTICLES and info.sense in (VerbSense.MOVE, VerbSense.PRESS, VerbSense.PULL_OUT, VerbSense.TURN):
+        return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
     return info.sense
 
 
@@ -237,10 +242,10 @@ def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
     return False, tokens
 
 
-def build_frame(clause: Clause) -> Frame:
+def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
     wish, wished = _wish(list(clause.tokens))
     first, tokens = _first_of(_light_verb(wished))
-    quantities = read_quantities(tokens)
+    quantities = read_quantities(tokens, carried)
     verb_index = _find_verb(tokens)
     named_side = clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL
     if verb_index == 0 and named_side:
@@ -336,7 +341,7 @@ def _unknown_verb(token: Token) -> bool:
     from app.engine.offline.reading.mentions import kind_of_word
 
     word = token.text
-    if not word.isalpha() or word in DETERMINERS or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
+    if not word.isalpha() or word in DETERMINERS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
             word in OBJECT_NOUNS):  # "bin lid: up to vertical": the object, not "to bin"
         return False
     lemmas = getAllLemmas(word)
@@ -375,4 +380,9 @@ def _reference_mentions(objects: list[Mention], themes: list[Mention]) -> list[M
 
 
 def read_frames(clauses: list[Clause]) -> list[Frame]:
-    return [build_frame(clause) for clause in clauses]
+    frames: list[Frame] = []
+    carried: tuple[Unit, float] | None = None
+    for clause in clauses:
+        frames.append(build_frame(clause, carried))
+        carried = said_unit(list(clause.tokens)) or carried
+    return frames

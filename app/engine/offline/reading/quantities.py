@@ -139,6 +139,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
+    if after and after[0] in ("open", "opened") and before[-1:] != ["by"]:
+        return "closed"  # "nearly shut, just 10 degrees open": a position, measured from closed
     if any(word in ("sticks", "sticking", "stick", "protrudes", "protruding", "showing", "shows", "in_total", "gap", "opening", "ajar")
            for word in around):
         return "closed"  # "until only 5 cm of it sticks out": how far out, measured from closed
@@ -165,8 +167,32 @@ def _region_noun(tokens: list[Token], i: int) -> bool:
     return tokens[i].text == "half" and (previous in SPATIAL or (previous in ("the", "its") and following == "of"))
 
 
-def read_quantities(tokens: list[Token]) -> Quantities:
-    """Everything quantitative in one clause's tokens."""
+def said_unit(tokens: list[Token]) -> tuple[Unit, float] | None:
+    """The unit of the last measured amount in ``tokens`` ("30 degrees" -> rad per degree), for a bare "20 more" after it."""
+    found: tuple[Unit, float] | None = None
+    for i in range(len(tokens) - 1):
+        if tokens[i].number is None:
+            continue
+        unit = tokens[i + 1].lemma
+        if unit in ANGLE_UNITS:
+            found = ("rad", ANGLE_UNITS[unit])
+        elif unit in TURN_UNITS:
+            found = ("rad", 2 * math.pi)
+        elif unit in LENGTH_UNITS and unit != "in":
+            found = ("m", LENGTH_UNITS[unit])
+    return found
+
+
+def _bare_relative(tokens: list[Token], i: int) -> bool:
+    """A number without a unit that says how much more: "20 more", "another 15", "back 5"."""
+    after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+    before = tokens[i - 1].text if i > 0 else ""
+    return after in _RELATIVE_AFTER or before in ("another", "additional", "back", "by")
+
+
+def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = None) -> Quantities:
+    """Everything quantitative in one clause's tokens; ``carried`` is the unit of the amount said before
+    (a bare "then 20 more" takes it)."""
     values: dict[str, object] = {}
     used: set[int] = set()
     amount: Amount | None = None
@@ -189,6 +215,13 @@ def read_quantities(tokens: list[Token]) -> Quantities:
             amount = Amount(abs(token.number) * 2 * math.pi, "rad", words=f"{token.text} {nxt.text} {tokens[i + 2].text}")  # "two full turns"
             used.update((i, i + 1, i + 2))
             i += 3
+            continue
+        if token.number is not None and carried is not None and amount is None and _bare_relative(tokens, i) and (
+                nxt is None or not (nxt.lemma in ANGLE_UNITS or nxt.lemma in TURN_UNITS or nxt.lemma in LENGTH_UNITS or nxt.lemma in TIME_UNITS)):
+            amount = Amount(abs(token.number) * carried[1], carried[0], "current", words=f"{token.text} {nxt.text if nxt else ''}".strip())
+            used.add(i)
+            used.update(j for j in (i - 1, i + 1) if 0 <= j < len(tokens) and tokens[j].text in _RELATIVE_AFTER | _RELATIVE_BEFORE)
+            i += 1
             continue
         if token.number is not None and nxt is not None:
             unit = nxt.lemma

@@ -49,7 +49,7 @@ _FUNCTION = (
     "to", "of", "on", "in", "at", "by", "with", "from", "into", "onto", "and", "or", "so", "then", "while", "after", "before", "until",
     "once", "when", "it", "is", "are", "be", "for", "its", "that", "which", "way", "as", "far", "more", "another", "further", "again",
     "around", "round", "about", "over", "through", "using", "down", "up", "out", "off", "back", "open", "shut", "closed", "side",
-    "row", "column", "one", "ones", "go", "goes", "degree", "degrees", "seconds", "second", "times", "by", "same", "time",
+    "row", "column", "one", "ones", "go", "goes", "toward", "towards", "till", "home", "degree", "degrees", "seconds", "second", "times", "by", "same", "time",
 )
 
 
@@ -90,25 +90,31 @@ def suggest(word: str, vocabulary: frozenset[str]) -> str | None:
     """The closest word of ``vocabulary`` within the edit budget, else ``None``.
 
     Ties on the edit distance go to a word with the same letters (a swap: "opne" -> "open"),
-    then to the higher Jaro-Winkler similarity; a remaining tie is no correction.
+    then to the higher Jaro-Winkler similarity, then to the commoner English word ("bak" -> "back", not
+    "bank"); a remaining tie is no correction.
     """
     from rapidfuzz.distance import OSA, JaroWinkler
 
     budget = _budget(word)
-    scored: list[tuple[int, bool, float, str]] = []
+    scored: list[tuple[int, bool, float, int, str]] = []
     for candidate in vocabulary:
         if abs(len(candidate) - len(word)) > budget or len(candidate) < MIN_LENGTH:
             continue
         distance = OSA.distance(word, candidate, score_cutoff=budget)
         if distance <= budget:
-            scored.append((distance, sorted(candidate) != sorted(word), -round(JaroWinkler.similarity(word, candidate), 6), candidate))
+            scored.append((distance, sorted(candidate) != sorted(word), -round(JaroWinkler.similarity(word, candidate), 6),
+                           -_frequency(candidate), candidate))
     if not scored:
         return None
     scored.sort()
     best = scored[0]
-    if len(scored) > 1 and scored[1][:3] == best[:3]:
+    if len(scored) > 1 and scored[1][:4] == best[:4]:
         return None
-    return best[3]
+    return best[4]
+
+
+def _frequency(word: str) -> int:
+    return int(_english()[word])  # type: ignore[index]
 
 
 def correct(token: Token, known: frozenset[str]) -> Token:

@@ -16,7 +16,15 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import ASIDE_PHRASES, ASIDE_WORDS, MULTIWORD, NUMBER_WORDS, REQUEST_PHRASES
+from app.engine.lexicon.words import (
+    ASIDE_PHRASES,
+    ASIDE_WORDS,
+    MULTIWORD,
+    NUMBER_WORDS,
+    REQUEST_PHRASES,
+    SHORTHAND,
+    VIEWER_POSSESSIVES,
+)
 
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
@@ -365,13 +373,34 @@ def verb_ing(word: str) -> bool:
     return any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
 
 
+_SIDES = frozenset({"left", "right", "left-hand", "right-hand"})
+
+
+def _expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
+    """Chat shorthand to words ("cn u" -> "can you"): one token per word, the span of the shorthand."""
+    out: list[Token] = []
+    for token in tokens:
+        full = SHORTHAND.get(token.text) if token.text not in known else None
+        if full is None:
+            out.append(token)
+            continue
+        out.extend(Token(word, word, token.start, token.end, corrected_from=token.text) for word in full.split())
+    return out
+
+
+def _viewer_sides(tokens: list[Token]) -> list[Token]:
+    """"a metre to my left", "the door on your right": the viewer's side is the side as seen facing the object."""
+    return [replace(t, text="the", lemma="the") if t.text in VIEWER_POSSESSIVES and i + 1 < len(tokens) and tokens[i + 1].text in _SIDES else t
+            for i, t in enumerate(tokens)]
+
+
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
     from app.engine.offline.reading.spelling import correct
 
-    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _raw_tokens(prompt)]
-    tokens = _drop_asides(_join_numbers(_join_phrases(tokens)))
+    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _expand(_raw_tokens(prompt), known)]
+    tokens = _drop_asides(_join_numbers(_join_phrases(_viewer_sides(tokens))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():
