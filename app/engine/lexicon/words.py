@@ -63,6 +63,11 @@ NUMBER_WORDS: Mapping[str, float] = MappingProxyType({
     "one hundred and eighty": 180, "a hundred and eighty": 180, "hundred and eighty": 180, "one hundred and thirty-five": 135,
     "twenty-five": 25, "thirty-five": 35, "forty-five degrees": 45, "seventy-five": 75, "eighty-five": 85, "sixty-five": 65,
 })
+DENOMINATORS: Mapping[str, int] = MappingProxyType({
+    "half": 2, "halves": 2, "third": 3, "thirds": 3, "quarter": 4, "quarters": 4, "fourth": 4, "fourths": 4, "fifth": 5, "fifths": 5,
+    "sixth": 6, "sixths": 6, "eighth": 8, "eighths": 8, "tenth": 10, "tenths": 10, "twelfth": 12, "twelfths": 12,
+})
+"""Fraction words: "three-eighths of a turn", "an eighth of a turn", "5 eighths"."""
 MULTIPLIERS: Mapping[str, float] = MappingProxyType({"once": 1, "twice": 2, "thrice": 3})
 
 AMOUNTS: Mapping[str, float] = MappingProxyType({
@@ -195,6 +200,12 @@ REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
+CORRECTIONS: tuple[tuple[str, ...], ...] = (
+    ("no", "wait"), ("actually", "no"), ("no", "actually"), ("no", "sorry"), ("sorry",), ("nvm",), ("never", "mind"), ("i", "mean"),
+    ("or", "rather"), ("scratch", "that"), ("correction",), ("actually",), ("no",))
+"""Words that take back the amount just said ("open it 60 degrees... no wait, make it 45"): the amount after them replaces it."""
+CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"), ("change", "it", "to"), ("change", "that", "to"), ("go", "for"))
+"""What may come between a correction and its new amount."""
 SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
     "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "ty": "thanks", "tho": "though",

@@ -151,10 +151,11 @@ def audit(clauses: Sequence[Clause], extension: Extension, understanding: list[d
     every_move = [move for clause_moves in moves.values() for move in clause_moves]
     travel = _travel_numbers(every_move, obj)
     amounts = said_amounts(clauses)
+    corrected = {c.index - 1 for c in clauses if c.tokens and c.tokens[0].text == "instead"}  # "15 cm - no wait, make that 20 cm"
     for clause in clauses:
         if clause.index not in moves or clause.link is Link.NEGATED:
             continue
-        for kind, value, words in amounts[clause.index]:
+        for kind, value, words in amounts[clause.index] if clause.index not in corrected else ():
             if not _carried(kind, value, (numbers, travel)):
                 notes.append(f"did not use '{words}' in '{clause.text}': check the result")
         said = {t.text for k, t in enumerate(clause.tokens) if not _names_a_reference(clause.tokens[max(0, k - 2):k])}

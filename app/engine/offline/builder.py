@@ -142,7 +142,7 @@ class Builder:
             if limit is not None and impossible(choice.goal, part, self.tracker, limit):
                 raise self.refs.refuse(f"'{frame.text}': {part.link} ({part.joint}) can move only "
                                        f"{shown(travel_left(choice.goal, part, self.tracker, limit), choice.goal.unit)} that way "
-                                       f"(it stops at {limit:.4g}), not {shown(choice.goal.amount or 0.0, choice.goal.unit)}")
+                                       f"(it stops at {limit:.4g}), not {shown(choice.goal.amount or 0.0, choice.goal.unit)}; say 'all the way' to take it to its stop")
             if limit is not None:
                 self.notes.append(f"{part.link} ({part.joint}) cannot go that far: it stops at its limit {limit:.4g}")
             out.append(Move(part, own_role, choice.goal, words=said, loose=loose))

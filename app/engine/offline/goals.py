@@ -221,8 +221,9 @@ def beyond_limit(goal: Goal, part: Part, tracker: Tracker) -> float | None:
     return None
 
 
-IMPOSSIBLE_FACTOR = 3.0
-"""An explicit amount more than this many times the travel left that way is refused, not clamped."""
+IMPOSSIBLE_FACTOR = 1.25
+"""An explicit amount more than this many times the travel left that way is refused, not clamped (clamping it would
+be a guess at what the user wants); a nearer miss is clamped with a warning."""
 
 
 def travel_left(goal: Goal, part: Part, tracker: Tracker, limit: float) -> float:

@@ -6,18 +6,20 @@ instead of refusing the whole prompt; a phrase that looks like a part ("the spou
 from __future__ import annotations
 
 from app.engine.errors import GroundingError
-from app.engine.lexicon.words import DETERMINERS
 from app.engine.offline.reading.mentions import Mention
 
 
 def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...]) -> bool:
-    """Whether ``mention`` (which did not ground, raising ``error``) is a stray word among ``mentions``."""
-    if error.candidates or mention.kind is not None or mention.is_object or mention.pronoun or mention.anaphor:
+    """Whether ``mention`` (which did not ground, raising ``error``) is a stray word among ``mentions``: no kind the
+    lexicon knows, nothing qualifying it as a part, not the clause's first word (its verb), and another phrase of the
+    clause names what moves. A single word must be a noun or an adjective ("home", "clear", "total")."""
+    if error.candidates or mention.kind is not None or mention.is_object or mention.pronoun or mention.anaphor or mention.start == 0:
         return False
     words = (mention.words or mention.head).split()
-    bare = len(words) == 1 and words[0] not in DETERMINERS and not mention.possessive and mention.whose is None and mention.owner is None
-    qualified = bool(mention.sides or mention.ordinal or mention.size or mention.relation or mention.modifiers)
-    return bare and not qualified and mention.start > 0 and _describes(words[0]) and any(other is not mention for other in mentions)
+    if len(words) == 1 and not _describes(words[0]):
+        return False
+    qualified = bool(mention.sides or mention.ordinal or mention.size or mention.relation)
+    return not qualified and any(other is not mention and not other.is_object for other in mentions)
 
 
 def _describes(word: str) -> bool:

@@ -121,6 +121,16 @@ def _is_event(frame: Frame) -> bool:
         frame.let and frame.text.split()[0] in ("watch", "see"))
 
 
+def _corrected(act: Act, frame: Frame) -> Act | None:
+    """``act`` with the amount a correction gives ("make that 20 cm" replaces it, "make it 20 more" adds to it)."""
+    said, new = act.goal.quantities.amount, frame.quantities.amount
+    if said is None or new is None or new.unit != said.unit or any(m.kind is not None or m.is_object for m in frame.themes) or act.condition:
+        return None
+    value = said.value + new.value if new.reference == "current" else new.value
+    amount = replace(said, value=value, words=f"{said.words}, corrected to {new.words}")
+    return replace(act, goal=replace(act.goal, quantities=replace(act.goal.quantities, amount=amount)))
+
+
 def build_acts(frames: list[Frame]) -> list[Act]:
     acts: list[Act] = []
     pending_wait = 0.0
@@ -132,6 +142,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     together = False  # a summary said the steps after it go at the same time
     for index, frame in enumerate(frames):
         verbless = frame.verb is None
+        revised = _corrected(acts[-1], frame) if acts and frame.correction else None
+        if revised is not None:
+            acts[-1] = revised  # "open it 60 degrees... no wait, make it 45"
+            continue
         if frame.verb is None and frame.simultaneous and all(m.collective or m.pronoun for m in frame.themes) and len(acts) > 1:
             acts[-1] = replace(acts[-1], parallel=True)  # "..., both at the same time"
             continue
@@ -192,7 +206,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 acts[-1] = replace(acts[-1], exclusions=(*acts[-1].exclusions, frame))
             continue
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
-        after_act = bool(acts) and not acts[-1].condition  # a summary or a state has no results of its own
+        after_act = bool(acts) and not acts[-1].condition and acts[-1].goal.verb is not None and not acts[-1].goal.aside
+        # a summary, a state or a clause about the user has no results of its own
         if (frame.link is Link.RESULT and after_act) or (_is_event(frame) and after_act and not waits_for):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue

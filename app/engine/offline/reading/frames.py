@@ -97,6 +97,8 @@ class Frame:
     wish: bool = False
     """"I need the rack out": the clause names the end state wanted (its state word gives the sense)."""
     explicit_return: bool = False
+    correction: bool = False
+    """"... no wait, make it 45": the clause replaces the amount of the act before (it moves nothing of its own)."""
     """Said in words ("to where it was", "its original angle"), not only a "back" particle."""
 
 
@@ -129,8 +131,9 @@ def _find_verb(tokens: list[Token]) -> int | None:
             return i
     for i in range(1, len(tokens)):
         token = tokens[i]
-        if token.lemma in VERBS and token.text != token.lemma and verb_at(tokens, i):
-            return i  # "the lid opens", "the door swings open"
+        progressive = token.text.endswith("ing") and tokens[i - 1].text in ("is", "are", "was", "were")
+        if token.lemma in VERBS and token.text != token.lemma and verb_at(tokens, i) and (not token.text.endswith("ing") or progressive):
+            return i  # "the lid opens", "the door swings open" (not "its vent setting": an -ing form alone is no finite verb)
     return None
 
 
@@ -243,9 +246,10 @@ def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
 
 
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
-    wish, wished = _wish(list(clause.tokens))
+    correction = bool(clause.tokens) and clause.tokens[0].text == "instead"
+    wish, wished = _wish(list(clause.tokens[1:] if correction else clause.tokens))
     first, tokens = _first_of(_light_verb(wished))
-    quantities = read_quantities(tokens, carried)
+    quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
     named_side = clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL
     if verb_index == 0 and named_side:
@@ -329,7 +333,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         guessed_verb=guessed, same_direction="in_the_same_direction" in words,
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
-        explicit_return=bool(words & _RETURN_WORDS),
+        explicit_return=bool(words & _RETURN_WORDS), correction=correction,
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )
 

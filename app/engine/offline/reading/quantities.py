@@ -15,6 +15,7 @@ from typing import Literal
 from app.engine.lexicon.words import (
     AMOUNTS,
     ANGLE_UNITS,
+    DENOMINATORS,
     DIRECTIONS,
     LENGTH_UNITS,
     LOOSE_AMOUNTS,
@@ -160,6 +161,32 @@ def _markers(tokens: list[Token], start: int, end: int) -> set[int]:
     return out
 
 
+_TURN_FRACTIONS = frozenset({"three quarters", "three-quarters", "a third", "one third", "two thirds", "two-thirds", "a quarter",
+                             "one quarter", "half", "full"})
+"""Amount words that may count turns ("a third of a turn"); "as far as it will turn" is all the way, not one turn."""
+_ONE = frozenset({"a", "an", "one", "single"})
+
+
+def _fraction_of_turn(tokens: list[Token], i: int) -> tuple[float, int] | None:
+    """(fraction of a turn, tokens read) for "5/8 of a turn", "three-eighths of a revolution" (a number by now), "an eighth of
+    a turn", "3 eighths of a turn"."""
+    j, fraction, number = i, None, tokens[i].number
+    if number is not None and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS:
+        fraction, j = number / DENOMINATORS[tokens[j + 1].text], j + 2  # "3 eighths"
+    elif tokens[j].text in _ONE and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS and tokens[j + 1].text not in ("half", "quarter", "third"):
+        fraction, j = 1.0 / DENOMINATORS[tokens[j + 1].text], j + 2  # "an eighth" ("a quarter" / "a third" are read elsewhere)
+    elif number is not None and 0 < number < 1:
+        fraction, j = number, j + 1  # "5/8", "0.375"
+    if fraction is None or j >= len(tokens) or tokens[j].text != "of":
+        return None
+    j += 1
+    if j < len(tokens) and tokens[j].text in _ONE:
+        j += 1
+    if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
+        return fraction, j + 1 - i
+    return None
+
+
 def _region_noun(tokens: list[Token], i: int) -> bool:
     """"the front half of the case", "the top half": a part of the object, not an amount."""
     previous = tokens[i - 1].text if i > 0 else ""
@@ -190,9 +217,9 @@ def _bare_relative(tokens: list[Token], i: int) -> bool:
     return after in _RELATIVE_AFTER or before in ("another", "additional", "back", "by")
 
 
-def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = None) -> Quantities:
+def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = None, *, correction: bool = False) -> Quantities:
     """Everything quantitative in one clause's tokens; ``carried`` is the unit of the amount said before
-    (a bare "then 20 more" takes it)."""
+    (a bare "then 20 more" takes it, and so does the bare number of a correction: "... no wait, make it 45")."""
     values: dict[str, object] = {}
     used: set[int] = set()
     amount: Amount | None = None
@@ -205,6 +232,12 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.update(range(i, i + 6))
             i += 6
             continue
+        of_turn = _fraction_of_turn(tokens, i) if amount is None else None
+        if of_turn is not None:
+            amount = Amount(of_turn[0] * 2 * math.pi, "rad", words=" ".join(t.text for t in tokens[i:i + of_turn[1]]))
+            used.update(range(i, i + of_turn[1]))
+            i += of_turn[1]
+            continue
         axis = _axis(tokens, i)
         if axis is not None:
             values["axis"] = axis[0]
@@ -216,9 +249,11 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.update((i, i + 1, i + 2))
             i += 3
             continue
-        if token.number is not None and carried is not None and amount is None and _bare_relative(tokens, i) and (
+        if token.number is not None and carried is not None and amount is None and (_bare_relative(tokens, i) or correction) and (
                 nxt is None or not (nxt.lemma in ANGLE_UNITS or nxt.lemma in TURN_UNITS or nxt.lemma in LENGTH_UNITS or nxt.lemma in TIME_UNITS)):
-            amount = Amount(abs(token.number) * carried[1], carried[0], "current", words=f"{token.text} {nxt.text if nxt else ''}".strip())
+            relative = _bare_relative(tokens, i)
+            amount = Amount(abs(token.number) * carried[1], carried[0], "current" if relative else None,
+                            words=f"{token.text} {nxt.text if nxt and relative else ''}".strip())
             used.add(i)
             used.update(j for j in (i - 1, i + 1) if 0 <= j < len(tokens) and tokens[j].text in _RELATIVE_AFTER | _RELATIVE_BEFORE)
             i += 1
@@ -289,7 +324,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             if tokens[j].text == "of" and j + 1 < len(tokens) and tokens[j + 1].text in ("a", "an", "one"):
                 j += 2
             words = " ".join(t.text.replace("_", " ") for t in tokens[i:j + 1])
-            if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
+            if j < len(tokens) and tokens[j].lemma in TURN_UNITS and token.text.replace("_", " ") in _TURN_FRACTIONS:
                 amount = Amount(AMOUNTS[token.text.replace("_", " ")] * 2 * math.pi, "rad", words=words)
             elif j > i + 1 and j < len(tokens) and tokens[j].lemma in LENGTH_UNITS:  # "a quarter of a metre"
                 amount = Amount(AMOUNTS[token.text.replace("_", " ")] * LENGTH_UNITS[tokens[j].lemma], "m", words=words)

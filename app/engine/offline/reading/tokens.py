@@ -19,6 +19,9 @@ from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     ASIDE_PHRASES,
     ASIDE_WORDS,
+    CORRECTION_LEADS,
+    CORRECTIONS,
+    DENOMINATORS,
     MULTIWORD,
     NUMBER_WORDS,
     REQUEST_PHRASES,
@@ -168,6 +171,9 @@ def _number_word(word: str) -> float | None:
         return float(_UNITS[word])
     if word in _TENS:
         return float(_TENS[word])
+    if "-" in word and word.partition("-")[2] in DENOMINATORS:
+        count = _number_word(word.partition("-")[0]) if word.partition("-")[0] not in ("a", "an", "one") else 1.0
+        return None if count is None else count / DENOMINATORS[word.partition("-")[2]]  # "three-eighths"
     if "-" in word:
         tens, _, unit = word.partition("-")
         if tens in _TENS and unit in _UNITS and _UNITS[unit] < 10:
@@ -252,6 +258,18 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
 _AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so", "until", "as"})
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
+_STAYING = frozenset({"stays", "stay", "remains", "remain"})
+_AS_IT_IS = frozenset({"still", "put", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed"})
+
+
+def _kept_as_is(tokens: list[Token], i: int) -> bool:
+    """"(the plate) stays still / (exactly) put / shut" with no time said: left as it is, not a hold ("stays shut for 2 s")."""
+    j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text == "exactly")
+    if j >= len(tokens) or tokens[j].text not in _AS_IT_IS:
+        return False
+    return not any(t.number is not None or t.text in ("for", "while", "until") for t in tokens[j + 1:j + 5])
+
+
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
 
@@ -307,6 +325,9 @@ def _drop_asides(tokens: list[Token]) -> list[Token]:
         if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
             skip = 2  # the rest of "leave X as they are"
             continue
+        if token.text in _STAYING and _kept_as_is(tokens, i):
+            token = replace(token, text="stays_put", lemma="stays_put")  # "the plate inside stays still", "door stays shut"
+            skip = 1 + (i + 2 < len(tokens) and tokens[i + 1].text == "exactly")
         if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
             start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
             out.insert(start, replace(token, text="without", lemma="without"))
@@ -388,6 +409,29 @@ def _expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     return out
 
 
+def _corrections(tokens: list[Token]) -> list[Token]:
+    """"60 degrees... no wait, make it 45": a new clause that starts with ``instead`` and gives the new amount. Only a
+    correction followed (after its lead words) by a number counts ("no, the other door" is not one)."""
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        said = next((p for p in CORRECTIONS if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if said is not None and out and any(t.number is not None for t in out):
+            j = i + len(said)
+            while j < len(tokens) and tokens[j].text in (",", ".", "!", "-"):
+                j += 1
+            lead = next((p for p in CORRECTION_LEADS if tuple(t.text for t in tokens[j:j + len(p)]) == p), ())
+            j += len(lead)
+            if j < len(tokens) and tokens[j].number is not None:
+                start = tokens[i].start
+                out.extend((Token(".", ".", start, start), Token("instead", "instead", start, tokens[j - 1].end)))
+                i = j
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
 def _viewer_sides(tokens: list[Token]) -> list[Token]:
     """"a metre to my left", "the door on your right": the viewer's side is the side as seen facing the object."""
     return [replace(t, text="the", lemma="the") if t.text in VIEWER_POSSESSIVES and i + 1 < len(tokens) and tokens[i + 1].text in _SIDES else t
@@ -400,7 +444,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.spelling import correct
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _expand(_raw_tokens(prompt), known)]
-    tokens = _drop_asides(_join_numbers(_join_phrases(_viewer_sides(tokens))))
+    tokens = _drop_asides(_corrections(_join_numbers(_join_phrases(_viewer_sides(tokens)))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():
