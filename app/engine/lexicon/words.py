@@ -85,7 +85,7 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "to the very bottom": 1.0, "to the bottom": 1.0, "the rest of the way": 1.0, "as flat as it can go": 1.0, "as far as it can go": 1.0,
     "as flat as possible": 1.0, "as wide as possible": 1.0, "hits its stop": 1.0, "hits the stop": 1.0, "hits its limit": 1.0, "hits the end": 1.0,
     "reaches its stop": 1.0, "reaches its limit": 1.0, "reaches the end": 1.0, "stops moving": 1.0, "can't go any further": 1.0,
-    "won't go any further": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
+    "won't go any further": 1.0, "to the stop": 1.0, "to the max": 1.0, "to the maximum": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
                            "just a crack", "a crack", "a few", "a tad", "mostly", "partway", "part way"})
@@ -167,7 +167,7 @@ MULTIWORD: tuple[str, ...] = (
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
     "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
     "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
-    "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in the same direction", "right angle", "rest of the way",
+    "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in that order", "in this order", "to the stop", "to the max", "to the maximum", "in the same direction", "right angle", "rest of the way",
 )
 
 OBJECT_NOUNS: tuple[str, ...] = (
@@ -254,7 +254,7 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
                    "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must",
-                   "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
+                   "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "farther", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",

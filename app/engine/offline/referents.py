@@ -5,6 +5,7 @@ several similar parts fit (naming each candidate and how to ask for it).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field, replace
 
 import numpy as np
@@ -304,18 +305,16 @@ class Referents:
         return False
 
     def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
-        """"the knob furthest from the big one"."""
-        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
-        if len(reference) != 1:
-            return candidates
-        anchor = position(reference[0], self.obj)
-        others = [p for p in candidates if p.joint != reference[0].joint]
-        return [max(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
+        """"the knob furthest from the big one", "the knob farther from the hinge"."""
+        return self._by_distance(reference_mention, candidates, max)
 
     def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
         """"the knob nearest the lid's hinge", "the lever closest to me" (the user stands at the front)."""
         if reference_mention.head == "viewer":
             return [max(candidates, key=lambda p: (round(float(position(p, self.obj)[0]), 4), p.joint))]
+        return self._by_distance(reference_mention, candidates, min)
+
+    def _by_distance(self, reference_mention: Mention, candidates: list[Part], pick: Callable[..., Part]) -> list[Part]:
         hinge = "hinge" in reference_mention.modifiers
         mention = replace(reference_mention, modifiers=tuple(m for m in reference_mention.modifiers if m != "hinge"))
         reference = self.pronoun() if mention.pronoun else list(self.ground(mention).parts)
@@ -323,7 +322,7 @@ class Referents:
             return candidates
         anchor = self.obj.local(reference[0].geometry.pivot_world) if hinge else position(reference[0], self.obj)
         others = [p for p in candidates if p.joint != reference[0].joint]
-        return [min(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
+        return [pick(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
 
     def _most_extreme(self, mention: Mention, kept: list[Part]) -> Part | None:
         """Among parts all near the named side, the one strictly furthest that way ("the bottom rack")."""

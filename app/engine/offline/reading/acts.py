@@ -81,6 +81,9 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
                                         or frame.returning)  # "..., then back to the middle"
     if frame.codes and not frame.themes:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
+    if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):
+        # "leave it there 4 s, then back to where it started": the return is the step, not another hold
+        return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes, instruments=previous.instruments)
     if frame.themes or amount_only:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
                        themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)
@@ -187,7 +190,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.heading and frame is not frames[-1]:
             # "Turn both knobs at the same time: the top one ..., the bottom one ...": a summary of what follows;
             # it names the parts ("it"), the clauses after the colon say what each does
-            acts.append(Act(goal=replace(frame, sense=None, verb=None, quantities=replace(frame.quantities, amount=None)), condition=True))
+            parts_named = tuple(m for m in frame.themes if not m.is_object) or frame.themes  # "On the washer, the third knob: ..."
+            acts.append(Act(goal=replace(frame, sense=None, verb=None, themes=parts_named, quantities=replace(frame.quantities, amount=None)),
+                            condition=True))
             together = frame.simultaneous
             previous_goal = frame  # the clauses after the colon may only name a part and an amount: they take its verb
             continue

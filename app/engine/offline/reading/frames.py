@@ -28,7 +28,8 @@ from app.engine.lexicon.words import (
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.mentions import Mention, parse_mentions
-from app.engine.offline.reading.quantities import Quantities, Unit, read_quantities, said_unit
+from app.engine.offline.reading.numbers import Unit, said_unit
+from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 
 _BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
@@ -144,7 +145,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if i in inside:
             continue
         if word in PARTICLES:
-            if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
+            if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into", "on") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
                 continue
             if word == "in" and i + 1 < len(tokens) and (tokens[i + 1].text in DETERMINERS or tokens[i + 1].number is not None):
                 continue  # "in the top row", "in 2 seconds"
@@ -166,6 +167,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
     return None, None
 
 
+_FURTHER = frozenset({"further", "farther", "more"})
+"""Before "back": a direction ("5 cm further back"), not a return."""
 _STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
 
 
@@ -175,7 +178,7 @@ def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:
         return info.particles[particle]
-    if particle in _STATE_PARTICLES and info.sense in (VerbSense.MOVE, VerbSense.PRESS, VerbSense.PULL_OUT, VerbSense.TURN):
+    if particle in _STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
     return info.sense
 
@@ -231,7 +234,7 @@ def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
 
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
-            "in_sequence": "reading", "in_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
+            "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
 _WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
 _STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": VerbSense.OPEN, "closed": VerbSense.CLOSE, "shut": VerbSense.CLOSE,
@@ -318,7 +321,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         sense, let = VerbSense.RELEASE, True
         themes = [m for m in themes if m.head not in _BODY_PARTS] + _reference_mentions(objects, themes)
     inside = {k for m in objects for k in range(m.start, m.end)}
-    if verb_index is None and any(t.text == "back" and k not in inside for k, t in enumerate(tokens)):
+    if verb_index is None and any(t.text == "back" and k not in inside and not (k and tokens[k - 1].text in _FURTHER) for k, t in enumerate(tokens)):
         particle = "back"  # "then 0.3 m back" (not "the back one")
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"

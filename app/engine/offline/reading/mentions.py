@@ -308,7 +308,8 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
 
 _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
               "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
-              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far"}
+              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far",
+              "farther": "far", "further": "far"}
 _VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
 
@@ -324,11 +325,16 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
         return None
     relation = _RELATIONS[tokens[i].text]
     j = i + 1
-    if j < len(tokens) and tokens[j].text in ("of", "to"):
+    if j < len(tokens) and tokens[j].text in ("of", "to", "from"):
         j += 1
     if relation == "near" and j < len(tokens) and tokens[j].text in _VIEWER:
         viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front
         return replace(mention, relation=(relation, viewer), end=j + 1, words=_words(tokens, mention.start, j + 1))
+    bare_hinge = [t.text for t in tokens[j:j + 2]] in (["the", "hinge"], ["its", "hinge"]) or (tokens[j:j + 1] and tokens[j].text == "hinge")
+    if bare_hinge:  # "the knob farther from the hinge": the hinge of the (one) door
+        end = j + (1 if tokens[j].text == "hinge" else 2)
+        door = Mention(head="door", kind=PartKind.DOOR, modifiers=("hinge",), start=j, end=end, words="the door")
+        return replace(mention, relation=(relation, door), end=end, words=_words(tokens, mention.start, end))
     owned = next((k for k in range(j, min(len(tokens) - 1, j + 5)) if tokens[k].text == "'s" and tokens[k + 1].text == "hinge"), None)
     if relation == "near" and owned is not None:  # "the knob nearest the lid's hinge"
         reference, _ = _phrase(tokens[:owned], j, used)

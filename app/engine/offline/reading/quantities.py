@@ -15,7 +15,6 @@ from typing import Literal
 from app.engine.lexicon.words import (
     AMOUNTS,
     ANGLE_UNITS,
-    DENOMINATORS,
     DIRECTIONS,
     LENGTH_UNITS,
     LOOSE_AMOUNTS,
@@ -28,12 +27,12 @@ from app.engine.lexicon.words import (
     TIME_UNITS,
     TURN_UNITS,
 )
+from app.engine.offline.reading.numbers import RELATIVE_AFTER as _RELATIVE_AFTER
+from app.engine.offline.reading.numbers import Unit, axis_at, bare_relative, fraction_of_turn, target_value
 from app.engine.offline.reading.tokens import Token
 
-Unit = Literal["fraction", "rad", "m"]
 Reference = Literal["closed", "current"]
 _TO = frozenset({"to", "until"})
-_RELATIVE_AFTER = frozenset({"more", "further", "farther", "extra"})
 _RELATIVE_BEFORE = frozenset({"another", "additional", "extra", "further", "by"})
 _ABOUT = frozenset({"about", "around", "roughly", "approximately", "exactly", "just", "nearly", "almost", "some", "only"})
 _DURATION_BEFORE = frozenset({"for", "over", "during", "in", "within", "taking", "lasting"})
@@ -95,23 +94,6 @@ class Quantities:
     """Token indices these quantities were read from."""
 
 
-def _axis(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int] | None:
-    text = tokens[i].text
-    if len(text) == 2 and text[0] in "+-" and text[1] in "xyz":
-        vector = [0.0, 0.0, 0.0]
-        vector["xyz".index(text[1])] = -1.0 if text[0] == "-" else 1.0
-        return (vector[0], vector[1], vector[2]), 1
-    if text in ("positive", "negative") and i + 1 < len(tokens) and tokens[i + 1].text in ("x", "y", "z"):
-        vector = [0.0, 0.0, 0.0]
-        vector["xyz".index(tokens[i + 1].text)] = -1.0 if text == "negative" else 1.0
-        return (vector[0], vector[1], vector[2]), 2
-    if text in ("x", "y", "z") and i + 1 < len(tokens) and tokens[i + 1].lemma in ("axis", "direction"):
-        vector = [0.0, 0.0, 0.0]
-        vector["xyz".index(text)] = 1.0
-        return (vector[0], vector[1], vector[2]), 2
-    return None
-
-
 _STATE_COPULAS = frozenset({"is", "it's", "stands", "sits", "stays", "remains", "be", "hangs", "left", "leave", "keep"})
 
 
@@ -164,57 +146,11 @@ def _markers(tokens: list[Token], start: int, end: int) -> set[int]:
 _TURN_FRACTIONS = frozenset({"three quarters", "three-quarters", "a third", "one third", "two thirds", "two-thirds", "a quarter",
                              "one quarter", "half", "full"})
 """Amount words that may count turns ("a third of a turn"); "as far as it will turn" is all the way, not one turn."""
-_ONE = frozenset({"a", "an", "one", "single"})
-
-
-def _fraction_of_turn(tokens: list[Token], i: int) -> tuple[float, int] | None:
-    """(fraction of a turn, tokens read) for "5/8 of a turn", "three-eighths of a revolution" (a number by now), "an eighth of
-    a turn", "3 eighths of a turn"."""
-    j, fraction, number = i, None, tokens[i].number
-    if number is not None and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS:
-        fraction, j = number / DENOMINATORS[tokens[j + 1].text], j + 2  # "3 eighths"
-    elif tokens[j].text in _ONE and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS and tokens[j + 1].text not in ("half", "quarter", "third"):
-        fraction, j = 1.0 / DENOMINATORS[tokens[j + 1].text], j + 2  # "an eighth" ("a quarter" / "a third" are read elsewhere)
-    elif number is not None and 0 < number < 1:
-        fraction, j = number, j + 1  # "5/8", "0.375"
-    if fraction is None or j >= len(tokens) or tokens[j].text != "of":
-        return None
-    j += 1
-    if j < len(tokens) and tokens[j].text in _ONE:
-        j += 1
-    if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
-        return fraction, j + 1 - i
-    return None
-
-
 def _region_noun(tokens: list[Token], i: int) -> bool:
     """"the front half of the case", "the top half": a part of the object, not an amount."""
     previous = tokens[i - 1].text if i > 0 else ""
     following = tokens[i + 1].text if i + 1 < len(tokens) else ""
     return tokens[i].text == "half" and (previous in SPATIAL or (previous in ("the", "its") and following == "of"))
-
-
-def said_unit(tokens: list[Token]) -> tuple[Unit, float] | None:
-    """The unit of the last measured amount in ``tokens`` ("30 degrees" -> rad per degree), for a bare "20 more" after it."""
-    found: tuple[Unit, float] | None = None
-    for i in range(len(tokens) - 1):
-        if tokens[i].number is None:
-            continue
-        unit = tokens[i + 1].lemma
-        if unit in ANGLE_UNITS:
-            found = ("rad", ANGLE_UNITS[unit])
-        elif unit in TURN_UNITS:
-            found = ("rad", 2 * math.pi)
-        elif unit in LENGTH_UNITS and unit != "in":
-            found = ("m", LENGTH_UNITS[unit])
-    return found
-
-
-def _bare_relative(tokens: list[Token], i: int) -> bool:
-    """A number without a unit that says how much more: "20 more", "another 15", "back 5"."""
-    after = tokens[i + 1].text if i + 1 < len(tokens) else ""
-    before = tokens[i - 1].text if i > 0 else ""
-    return after in _RELATIVE_AFTER or before in ("another", "additional", "back", "by")
 
 
 def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = None, *, correction: bool = False) -> Quantities:
@@ -232,13 +168,13 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.update(range(i, i + 6))
             i += 6
             continue
-        of_turn = _fraction_of_turn(tokens, i) if amount is None else None
+        of_turn = fraction_of_turn(tokens, i) if amount is None else None
         if of_turn is not None:
             amount = Amount(of_turn[0] * 2 * math.pi, "rad", words=" ".join(t.text for t in tokens[i:i + of_turn[1]]))
             used.update(range(i, i + of_turn[1]))
             i += of_turn[1]
             continue
-        axis = _axis(tokens, i)
+        axis = axis_at(tokens, i)
         if axis is not None:
             values["axis"] = axis[0]
             used.update(range(i, i + axis[1]))
@@ -249,9 +185,9 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.update((i, i + 1, i + 2))
             i += 3
             continue
-        if token.number is not None and carried is not None and amount is None and (_bare_relative(tokens, i) or correction) and (
+        if token.number is not None and carried is not None and amount is None and (bare_relative(tokens, i) or correction) and (
                 nxt is None or not (nxt.lemma in ANGLE_UNITS or nxt.lemma in TURN_UNITS or nxt.lemma in LENGTH_UNITS or nxt.lemma in TIME_UNITS)):
-            relative = _bare_relative(tokens, i)
+            relative = bare_relative(tokens, i)
             amount = Amount(abs(token.number) * carried[1], carried[0], "current" if relative else None,
                             words=f"{token.text} {nxt.text if nxt and relative else ''}".strip())
             used.add(i)
@@ -372,6 +308,9 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text.replace("_", "-") in ROTATION_SENSE or token.text in ROTATION_SENSE:
             values["sense"] = ROTATION_SENSE.get(token.text, ROTATION_SENSE.get(token.text.replace("_", "-"), None))
             used.add(i)
+        elif token.text == "back" and i > 0 and tokens[i - 1].text in ("further", "farther", "more") and "direction" not in values:
+            values["direction"] = "backward"  # "5 cm further back"
+            used.update((i - 1, i))
         elif token.text in DIRECTIONS and "direction" not in values:
             values["direction"] = DIRECTIONS[token.text]
             used.add(i)
@@ -387,24 +326,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         i += 1
     if tokens and tokens[0].lemma == "stand" and "orientation" not in values and any(t.text in ("up", "upright") for t in tokens):
         values["orientation"] = "vertical"  # "stand the handle up (again)": upright
-    target = _target(tokens)
+    target = target_value(tokens)
     if target is not None:
         values["target"] = target
     return Quantities(amount=amount, used=frozenset(used), **values)  # type: ignore[arg-type]
-
-
-def _target(tokens: list[Token]) -> float | None:
-    """"set joint_1 to -1.0 rad", "to 0.2": a signed joint value (SI units; a bare number is taken as is)."""
-    for i in range(len(tokens) - 1):
-        if tokens[i].text not in ("to", "=", "at") or tokens[i + 1].number is None:
-            continue
-        number = tokens[i + 1].number
-        if number is None:
-            continue
-        unit = tokens[i + 2].lemma if i + 2 < len(tokens) else ""
-        if unit in ANGLE_UNITS:
-            return number * ANGLE_UNITS[unit]
-        if unit in LENGTH_UNITS:
-            return number * LENGTH_UNITS[unit]
-        return number
-    return None

@@ -1,0 +1,94 @@
+"""Number shapes inside a clause: a world axis ("+X", "along negative y"), a fraction of a turn ("5/8 of a turn"),
+the unit of the last amount said (for a bare "then 20 more"), a bare relative number, and a signed joint value
+("set joint_1 to -1.0 rad")."""
+
+from __future__ import annotations
+
+from typing import Literal
+
+from app.engine.lexicon.words import ANGLE_UNITS, DENOMINATORS, LENGTH_UNITS, TURN_UNITS
+from app.engine.offline.reading.tokens import Token
+
+Unit = Literal["fraction", "rad", "m"]
+RELATIVE_AFTER = frozenset({"more", "further", "farther", "extra"})
+_TWO_PI = 6.283185307179586
+
+
+def axis_at(tokens: list[Token], i: int) -> tuple[tuple[float, float, float], int] | None:
+    text = tokens[i].text
+    if len(text) == 2 and text[0] in "+-" and text[1] in "xyz":
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(text[1])] = -1.0 if text[0] == "-" else 1.0
+        return (vector[0], vector[1], vector[2]), 1
+    if text in ("positive", "negative") and i + 1 < len(tokens) and tokens[i + 1].text in ("x", "y", "z"):
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(tokens[i + 1].text)] = -1.0 if text == "negative" else 1.0
+        return (vector[0], vector[1], vector[2]), 2
+    if text in ("x", "y", "z") and i + 1 < len(tokens) and tokens[i + 1].lemma in ("axis", "direction"):
+        vector = [0.0, 0.0, 0.0]
+        vector["xyz".index(text)] = 1.0
+        return (vector[0], vector[1], vector[2]), 2
+    return None
+
+
+_ONE = frozenset({"a", "an", "one", "single"})
+
+
+def fraction_of_turn(tokens: list[Token], i: int) -> tuple[float, int] | None:
+    """(fraction of a turn, tokens read) for "5/8 of a turn", "three-eighths of a revolution" (a number by now), "an eighth of
+    a turn", "3 eighths of a turn"."""
+    j, fraction, number = i, None, tokens[i].number
+    if number is not None and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS:
+        fraction, j = number / DENOMINATORS[tokens[j + 1].text], j + 2  # "3 eighths"
+    elif tokens[j].text in _ONE and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS and tokens[j + 1].text not in ("half", "quarter", "third"):
+        fraction, j = 1.0 / DENOMINATORS[tokens[j + 1].text], j + 2  # "an eighth" ("a quarter" / "a third" are read elsewhere)
+    elif number is not None and 0 < number < 1:
+        fraction, j = number, j + 1  # "5/8", "0.375"
+    if fraction is None or j >= len(tokens) or tokens[j].text != "of":
+        return None
+    j += 1
+    if j < len(tokens) and tokens[j].text in _ONE:
+        j += 1
+    if j < len(tokens) and tokens[j].lemma in TURN_UNITS:
+        return fraction, j + 1 - i
+    return None
+
+
+def said_unit(tokens: list[Token]) -> tuple[Unit, float] | None:
+    """The unit of the last measured amount in ``tokens`` ("30 degrees" -> rad per degree), for a bare "20 more" after it."""
+    found: tuple[Unit, float] | None = None
+    for i in range(len(tokens) - 1):
+        if tokens[i].number is None:
+            continue
+        unit = tokens[i + 1].lemma
+        if unit in ANGLE_UNITS:
+            found = ("rad", ANGLE_UNITS[unit])
+        elif unit in TURN_UNITS:
+            found = ("rad", _TWO_PI)
+        elif unit in LENGTH_UNITS and unit != "in":
+            found = ("m", LENGTH_UNITS[unit])
+    return found
+
+
+def bare_relative(tokens: list[Token], i: int) -> bool:
+    """A number without a unit that says how much more: "20 more", "another 15", "back 5"."""
+    after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+    before = tokens[i - 1].text if i > 0 else ""
+    return after in RELATIVE_AFTER or before in ("another", "additional", "back", "by")
+
+
+def target_value(tokens: list[Token]) -> float | None:
+    """"set joint_1 to -1.0 rad", "to 0.2": a signed joint value (SI units; a bare number is taken as is)."""
+    for i in range(len(tokens) - 1):
+        if tokens[i].text not in ("to", "=", "at") or tokens[i + 1].number is None:
+            continue
+        number = tokens[i + 1].number
+        if number is None:
+            continue
+        unit = tokens[i + 2].lemma if i + 2 < len(tokens) else ""
+        if unit in ANGLE_UNITS:
+            return number * ANGLE_UNITS[unit]
+        if unit in LENGTH_UNITS:
+            return number * LENGTH_UNITS[unit]
+        return number
+    return None

@@ -1,0 +1,192 @@
+"""Token rewrites: words that say what the lexicon already knows in another form.
+
+Chat shorthand ("cn u" -> "can you"), the viewer's side ("to my left" -> "to the left"), corrections ("60 degrees... no
+wait, make it 45" -> a clause ``instead 45``), politeness and asides dropped ("please", "for me", "could you"), what is to
+be left alone ("leave the lid as it is", "the plate stays still", "neither knob" -> ``without``). They run on tokens, after
+the raw text is split (:mod:`.tokens`), so every rewritten token keeps the span of the words it stands for.
+"""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import (
+    ASIDE_PHRASES,
+    ASIDE_WORDS,
+    CORRECTION_LEADS,
+    CORRECTIONS,
+    REQUEST_PHRASES,
+    SHORTHAND,
+    VIEWER_POSSESSIVES,
+)
+from app.engine.offline.reading.token import Token
+
+_AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so", "until", "as"})
+_KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
+_STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
+_STAYING = frozenset({"stays", "stay", "remains", "remain"})
+_AS_IT_IS = frozenset({"still", "put", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed"})
+
+
+def _kept_as_is(tokens: list[Token], i: int) -> bool:
+    """"(the plate) stays still / (exactly) put / shut / as is", "the screen angle stays." with no time said: left as it
+    is, not a hold ("stays shut for 2 s")."""
+    j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text == "exactly")
+    if j >= len(tokens) or tokens[j].is_punct:
+        return True
+    if [t.text for t in tokens[j:j + 2]] == ["as", "is"] or [t.text for t in tokens[j:j + 3]] in (["where", "it", "is"], ["where", "they", "are"]):
+        return True
+    if tokens[j].text not in _AS_IT_IS:
+        return False
+    return not any(t.number is not None or t.text in ("for", "while", "until") for t in tokens[j + 1:j + 5])
+
+
+_CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
+
+
+_AS_IS = (("as", "it", "is"), ("as", "they", "are"), ("where", "it", "is"), ("where", "they", "are"))
+
+
+def _as_they_are(tokens: list[Token], i: int) -> bool:
+    """"leave X (exactly) as it is / where they are", within the next ten words and before any other clause."""
+    for j in range(i + 2, min(i + 12, len(tokens))):
+        if tokens[j].is_sentence_end or tokens[j].text in ("then", "but"):
+            return False
+        if tuple(t.text for t in tokens[j:j + 3]) in _AS_IS:
+            return True
+    return False
+
+
+def drop_asides(tokens: list[Token]) -> list[Token]:
+    """Politeness and the beneficiary say nothing about the motion: "please", "for me"."""
+    out: list[Token] = []
+    skip = 0
+    for i, token in enumerate(tokens):
+        if skip:
+            skip -= 1
+            continue
+        if token.text in ASIDE_WORDS:
+            continue
+        after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+        if token.text == "al" and after == "the":
+            token = replace(token, text="all", lemma="all", corrected_from="al")  # "open it al the way"
+        if token.text in ("left_hand", "right_hand") and after.isalpha() and after not in _AFTER_HAND:
+            side = token.text.split("_")[0]
+            token = replace(token, text=f"{side}-hand", lemma=f"{side}-hand")  # "the right hand fridge door"
+        if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
+            continue  # "lift the jug itself": emphasis, the jug
+        if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS and (
+                i + 2 >= len(tokens) or tokens[i + 2].is_punct or tokens[i + 2].text in ("and", "so", "then", "outside", "again", "now", "hard")):
+            token = replace(token, text="it's", lemma="it's")  # "its raining": the apostrophe left out
+        request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
+            skip = len(request) - 1
+            since = next((k for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end or out[k].text == ":"), -1)
+            if request[-1] == ":" and 0 < len(out) - since - 1 <= 2:
+                del out[since + 1:]  # "Robot task: ...": the heading's own words go too
+            continue
+        if token.text == "leave" and _as_they_are(tokens, i):
+            out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
+            continue
+        if token.text == "leave" and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
+            out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
+            continue
+        if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):
+            continue
+        if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
+            skip = 2  # the rest of "leave X as they are"
+            continue
+        if token.text in _STAYING and _kept_as_is(tokens, i):
+            token = replace(token, text="stays_put", lemma="stays_put")  # "the plate inside stays still", "door stays shut"
+            skip = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in _CLAUSE_BREAKS), len(tokens)) - i - 1
+        if token.text in ("untouched", "unmoved", "unchanged") and (i + 1 == len(tokens) or tokens[i + 1].is_punct):
+            token = replace(token, text="stays_put", lemma="stays_put")  # "lid and clasps untouched"
+        if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
+            start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
+            out.insert(start, replace(token, text="without", lemma="without"))
+            continue
+        hands = tuple(t.text for t in tokens[i:i + 4])
+        off = next((k for k, word in enumerate(hands) if word == "off"), None)
+        if off is not None and (hands[:3] in (("keep", "your", "hands"), ("keep", "hands", "off")) or hands[:2] == ("hands", "off")):
+            out.append(replace(token, text="without", lemma="without"))  # "keep your hands off the drawer"
+            skip = off
+            continue
+        phrase = next((p for p in ASIDE_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if phrase is None and tuple(token.text.split("_")) in ASIDE_PHRASES:
+            phrase = (token.text,)  # joined as one expression
+        if phrase is not None:  # "and when I'm done close that door": then
+            out.append(replace(token, text="then", lemma="then"))
+            skip = len(phrase) - 1
+            continue
+        if token.text == "for" and i + 1 < len(tokens) and tokens[i + 1].text in ("me", "you", "us", "them"):
+            skip = 1
+            continue
+        out.append(token)
+    return out
+
+_SIDES = frozenset({"left", "right", "left-hand", "right-hand"})
+
+
+def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
+    """Chat shorthand to words ("cn u" -> "can you"): one token per word, the span of the shorthand."""
+    out: list[Token] = []
+    for token in tokens:
+        full = SHORTHAND.get(token.text) if token.text not in known else None
+        if full is None:
+            out.append(token)
+            continue
+        out.extend(Token(word, word, token.start, token.end, corrected_from=token.text) for word in full.split())
+    return out
+
+
+def corrections(tokens: list[Token]) -> list[Token]:
+    """"60 degrees... no wait, make it 45": a new clause that starts with ``instead`` and gives the new amount. Only a
+    correction followed (after its lead words) by a number counts ("no, the other door" is not one)."""
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        said = next((p for p in CORRECTIONS if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
+        if said is not None and out and any(t.number is not None for t in out):
+            j = i + len(said)
+            while j < len(tokens) and tokens[j].text in (",", ".", "!", "-"):
+                j += 1
+            lead = next((p for p in CORRECTION_LEADS if tuple(t.text for t in tokens[j:j + len(p)]) == p), ())
+            j += len(lead)
+            if j < len(tokens) and tokens[j].number is not None:
+                start = tokens[i].start
+                out.extend((Token(".", ".", start, start), Token("instead", "instead", start, tokens[j - 1].end)))
+                i = j
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
+
+
+_LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
+_ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
+_TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
+
+
+def same_words(tokens: list[Token]) -> list[Token]:
+    """Words that say the same as a form the lexicon knows: "a metre to my left" (the viewer's side is the side as seen
+    facing the object), "to its top" (to the top), "2 the left" (to), "the third knob counting from the left",
+    "throw the lid right back" (all the way), "neither knob" (without both)."""
+    out: list[Token] = []
+    for i, t in enumerate(tokens):
+        before = tokens[i - 1].text if i else ""
+        after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+        if (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
+            t = replace(t, text="the", lemma="the")
+        elif t.number == 2 and t.text == "2" and after in _TO and before not in ("", ",", ".", "and"):
+            t = Token("to", "to", t.start, t.end, corrected_from="2")
+        elif t.text == "counting" and after == "from":
+            continue
+        elif t.text == "right" and after in _ALL_THE_WAY and before not in ("the", "to", "on", "at", "turn", "its", "", ",", ".", ";", "and"):
+            out.extend((Token("all", "all", t.start, t.end), Token("the", "the", t.start, t.end), Token("way", "way", t.start, t.end)))
+            continue
+        elif t.text == "neither":
+            out.extend((Token("without", "without", t.start, t.end), Token("both", "both", t.start, t.end)))
+            continue
+        out.append(t)
+    return out
