@@ -179,6 +179,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("toast", S.LOWER, implies=(PartKind.LEVER,)),
     # whole-object motion
     VerbInfo("move", S.MOVE, _p(back=S.RETURN), object_sense=S.MOVE),
+    VerbInfo("go", S.MOVE, _p(out=S.PULL_OUT, **{"in": S.PUSH_IN}, up=S.RAISE, down=S.LOWER, back=S.RETURN, open=S.OPEN, shut=S.CLOSE,
+                              closed=S.CLOSE, over=S.TOGGLE), object_sense=S.MOVE),
     VerbInfo("follow", S.MOVE, _p(down=S.LOWER, up=S.RAISE, out=S.PULL_OUT, open=S.OPEN, back=S.RETURN)),
     VerbInfo("drag", S.MOVE, object_sense=S.MOVE),
     VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),

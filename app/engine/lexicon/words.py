@@ -210,7 +210,7 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
     "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
-    "asap": "quickly", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
+    "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})

@@ -84,6 +84,9 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):
         # "leave it there 4 s, then back to where it started": the return is the step, not another hold
         return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes, instruments=previous.instruments)
+    if frame.themes and frame.quantities.amount is None and previous.quantities.amount is not None and not frame.returning and frame.particle is None:
+        # "open the left drawer 25 cm, then the right one": the ellipsis repeats the whole request, amount included
+        frame = replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
     if frame.themes or amount_only:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
                        themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)

@@ -24,6 +24,7 @@ from app.engine.lexicon.words import (
     OBJECT_SUFFIXES,
     ORDINALS,
     OTHER_WORDS,
+    PERSONS,
     PHRASE_BREAKS,
     PRONOUNS,
     SIZES,
@@ -123,7 +124,7 @@ def _nominal(token: Token) -> bool:
     if word in _OBJECT_WORDS:
         return True  # "chest_of_drawers"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
-            and word not in STATIVE_VERBS)
+            and word not in STATIVE_VERBS and word not in PERSONS)
 
 
 def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = frozenset()) -> list[Mention]:
