@@ -84,7 +84,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):
         # "leave it there 4 s, then back to where it started": the return is the step, not another hold
         return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes, instruments=previous.instruments)
-    if frame.themes and frame.quantities.amount is None and previous.quantities.amount is not None and not frame.returning and frame.particle is None:
+    if frame.themes and frame.quantities.amount is None and previous.quantities.amount is not None and not frame.returning and frame.particle is None and (
+            frame.link in (Link.SEQUENCE, Link.PARALLEL) and not frame.stative and not frame.heading):
         # "open the left drawer 25 cm, then the right one": the ellipsis repeats the whole request, amount included
         frame = replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
     if frame.themes or amount_only:
