@@ -184,6 +184,7 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "vanity", "hutch", "cubby", "wardrobe", "closet", "pantry", "oven", "range", "toaster", "tap", "faucet", "mixer", "basin",
     "bank_of_drawers", "set_of_drawers", "pan", "light", "lamp", "espresso", "blender", "jug",
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
+    "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller",
 )
 PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody"})
 """The user and other people: a clause about them is not about the asset ("so I can reach in")."""
@@ -195,7 +196,8 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
                                               ("once", "done"))
 """The user's own progress ("when I'm done"): read as "then"."""
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
-    ("no", "more"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"),
+    ("no", "more"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
+    ("task", "list", ":"), ("shot", "list", ":"), ("to", "do", ":"), ("todo", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))

@@ -15,6 +15,10 @@ if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
 
 
+_GROUPS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console", "keyboard"})
+"""Heads that name a group of parts ("Keypad: press 7 and 3"), not one part."""
+
+
 def condition(builder: Builder, act: Act) -> None:
     """A state to reach first ("while the door is open"), or a description that only sets "it"."""
     frame = act.goal
@@ -23,7 +27,9 @@ def condition(builder: Builder, act: Act) -> None:
         try:
             builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
         except GroundingError:
-            pass  # "Quick anim: ...": a summary that names no part
+            if any(m.kind is not None and m.head not in _GROUPS and not (m.plural or m.collective) for m in frame.themes):
+                raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
+            # "Quick anim: ...": a summary that names no part
         return
     parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
     words_in = set(frame.text.split())

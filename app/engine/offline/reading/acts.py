@@ -11,6 +11,7 @@ from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import COUPLING_WORDS
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.quantities import Quantities
 
 DEFAULT_WAIT_S = 1.0
 
@@ -116,6 +117,13 @@ def _summarises(frame: Frame, after: list[Frame]) -> bool:
     return following.verb is None and bool(following.themes) and following.quantities.amount is not None
 
 
+def _topic(frame: Frame, after: list[Frame]) -> bool:
+    """A clause that only names one part, followed by one that works "it"."""
+    bare = frame.verb is None and not frame.heading and len(frame.themes) == 1 and not frame.themes[0].is_object and not frame.themes[0].pronoun
+    plain = frame.quantities == Quantities() and frame.particle is None and not frame.returning
+    return bare and plain and bool(after) and after[0].verb is not None and any(m.pronoun for m in after[0].themes)
+
+
 def _is_subjectless_event(frame: Frame) -> bool:
     """"... and swings open 30 degrees": a finite verb with no subject continues the event before."""
     return frame.conjoined and not frame.themes and frame.verb is not None and frame.text.split()[0] != frame.verb
@@ -161,6 +169,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             # "the left to 120 degrees, the right to 60": the unit of the one before
             amount = replace(measured.quantities.amount, value=abs(frame.quantities.target) * 3.141592653589793 / 180.0, words=f"{frame.quantities.target:g}")
             frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
+        if _topic(frame, frames[index + 1:]):
+            frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
         if frame.text.startswith("of ") and frame.themes and index + 1 < len(frames):
             frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist the middle one"
         if _summarises(frame, frames[index + 1:]):

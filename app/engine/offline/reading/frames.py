@@ -17,9 +17,6 @@ from app.engine.lexicon.words import (
     DETERMINERS,
     INSTRUMENT,
     LIGHT_VERBS,
-    MODALS,
-    OBJECT_NOUNS,
-    PERSONS,
     PLACES,
     SIMULTANEOUS,
     SPATIAL,
@@ -31,6 +28,8 @@ from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
+from app.engine.offline.reading.verb_cues import aside, side_of_part, unknown_verb
+from app.engine.offline.reading.verb_cues import intransitive as after_subject
 
 _BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
 _BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
@@ -254,15 +253,15 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     first, tokens = _first_of(_light_verb(wished))
     quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
-    named_side = clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL
+    named_side = (clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL) or side_of_part(tokens)
     if verb_index == 0 and named_side:
-        verb_index = None  # "Lower knob: give it a 45 degree turn": a heading names a part, "lower" is its side
+        verb_index = None  # "Lower knob: give it a 45 degree turn", "lower drawer out 0.5 m": "lower" is the part's side
     verb = tokens[verb_index].lemma if verb_index is not None else None
     guessed = None
     if verb_index is None and len(tokens) > 1 and tokens[1].text in ("it", "them") and tokens[0].text.isalpha() and tokens[0].text not in DETERMINERS and (
             not named_side and tokens[0].lemma not in VERBS):
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "seat it back down": a noun used as a verb
-    if verb_index is None and tokens and _unknown_verb(tokens[0]) and len(tokens) > 1 and not named_side:
+    if verb_index is None and tokens and unknown_verb(tokens[0]) and len(tokens) > 1 and not named_side:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None
@@ -285,7 +284,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
     stative = verb_index is None and (progressive or described or any(t.text in STATIVE_VERBS for t in tokens))
-    intransitive = _intransitive(tokens, verb_index) or finite is not None
+    intransitive = after_subject(tokens, verb_index) or finite is not None
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
     if verb == "follow" and subject:
@@ -332,52 +331,13 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
-        simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=_aside(tokens),
+        simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
         guessed_verb=guessed, same_direction="in_the_same_direction" in words,
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool(words & _RETURN_WORDS), correction=correction,
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )
-
-
-def _unknown_verb(token: Token) -> bool:
-    """An imperative verb the lexicon does not know ("jiggle", "nudge"): a base-form verb that is not a part name."""
-    from lemminflect import getAllLemmas
-
-    from app.engine.offline.reading.mentions import kind_of_word
-
-    word = token.text
-    if not word.isalpha() or word in DETERMINERS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
-            word in OBJECT_NOUNS):  # "bin lid: up to vertical": the object, not "to bin"
-        return False
-    lemmas = getAllLemmas(word)
-    return word in lemmas.get("VERB", ())
-
-
-def _unknown_verb_form(word: str) -> bool:
-    from lemminflect import getAllLemmas
-
-    return word.isalpha() and "VERB" in getAllLemmas(word)
-
-
-def _aside(tokens: list[Token]) -> bool:
-    """The clause is about a person ("I can put my plate in", "you can reach in") or says what something
-    else may then do ("they can air-dry")."""
-    first = tokens[0].text if tokens else ""
-    second = tokens[1].text if len(tokens) > 1 else ""
-    weather = first == "it's" and second.endswith("ing") and len(tokens) > 1 and tokens[1].lemma not in VERBS  # "it's raining"
-    if len(tokens) == 2 and first in ("it", "they") and tokens[1].lemma not in VERBS and _unknown_verb_form(second):
-        return True  # "(while) it brews": what the object does, not a part's motion
-    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather
-
-
-def _intransitive(tokens: list[Token], verb_index: int | None) -> bool:
-    """A finite verb after its subject ("the lid opens", "the door swings open")."""
-    if verb_index is None or verb_index == 0:
-        return False
-    token = tokens[verb_index]
-    return token.text != token.lemma or tokens[verb_index - 1].text in ("is", "are", "gets", "get")
 
 
 def _reference_mentions(objects: list[Mention], themes: list[Mention]) -> list[Mention]:

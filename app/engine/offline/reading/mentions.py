@@ -11,9 +11,8 @@ own part names, else refused). Trailing phrases qualify or own it: "the knob on 
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from functools import lru_cache
 
-from app.engine.lexicon.kinds import REGISTRY, PartKind
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import PARTICLES, VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
@@ -32,7 +31,10 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
+from app.engine.offline.reading.part_words import kind_at, kind_of_word
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb, verb_ing
+
+__all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
 
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
@@ -82,30 +84,6 @@ class Mention:
     end: int = 0
     """Token span inside the clause."""
     words: str = ""
-
-
-@lru_cache(maxsize=1)
-def _kind_phrases() -> list[tuple[tuple[str, ...], PartKind]]:
-    phrases = [(tuple(w.replace("-", " ").split()), entry.kind) for entry in REGISTRY.values() for w in entry.words]
-    return sorted(phrases, key=lambda p: -len(p[0]))
-
-
-def kind_of_word(word: str) -> PartKind | None:
-    """The kind a single word names ("door" -> DOOR)."""
-    for phrase, kind in _kind_phrases():
-        if phrase == (word,):
-            return kind
-    return None
-
-
-def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
-    """(kind, length) of the longest part-kind phrase starting at ``tokens[i]``."""
-    for phrase, kind in _kind_phrases():
-        n = len(phrase)
-        window = tokens[i:i + n]
-        if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
-            return kind, n
-    return None
 
 
 def _line_index(word: str) -> int | None:
@@ -352,7 +330,13 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
 
 
 def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earlier: list[Mention]) -> Mention:
-    """Attach "on the left", "from the top", "in the bottom row", "of the door", "below it" after a phrase."""
+    """Attach "on the left", "from the top", "in the bottom row", "of the door", "below it", "second from the right" after a phrase."""
+    k = mention.end
+    if mention.ordinal is None and k + 2 < len(tokens) and tokens[k].text in ORDINALS and tokens[k + 1].text == "from":
+        j = k + 2 + (tokens[k + 2].text in DETERMINERS)
+        if j < len(tokens) and tokens[j].text in SPATIAL:  # "the knob second from the right"
+            return replace(mention, ordinal=ORDINALS[tokens[k].text], ordinal_from=SPATIAL[tokens[j].text][0], end=j + 1,
+                           words=_words(tokens, mention.start, j + 1))
     related = _related(tokens, mention, used)
     if related is not None:
         return related

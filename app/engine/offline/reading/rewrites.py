@@ -185,8 +185,68 @@ def same_words(tokens: list[Token]) -> list[Token]:
         elif t.text == "right" and after in _ALL_THE_WAY and before not in ("the", "to", "on", "at", "turn", "its", "", ",", ".", ";", "and"):
             out.extend((Token("all", "all", t.start, t.end), Token("the", "the", t.start, t.end), Token("way", "way", t.start, t.end)))
             continue
+        elif t.text in ("far-left", "far-right") or (t.text == "far" and after in ("left", "right") and before in ("the", "its")):
+            side = t.text.split("-")[-1] if "-" in t.text else after
+            out.append(Token(f"{side}most", f"{side}most", t.start, t.end))  # "the far-right drawer": the rightmost
+            continue
+        elif t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most"):
+            continue
         elif t.text == "neither":
             out.extend((Token("without", "without", t.start, t.end), Token("both", "both", t.start, t.end)))
             continue
         out.append(t)
     return out
+
+
+_YAW_VERBS = frozenset({"turn", "turned", "rotate", "rotated", "spin", "spun", "swivel", "pivot", "twist", "angle", "revolve"})
+_FACES = frozenset({"faces", "face", "facing", "points", "point", "pointing", "looks", "look", "looking"})
+_AWAY = frozenset({"away", "wall", "back", "backwards", "backward", "rear"})
+_TOWARD_VIEWER = frozenset({"me", "us", "you", "camera", "viewer", "front", "forward", "forwards"})
+
+
+def facing(tokens: list[Token]) -> list[Token]:
+    """"turn the microwave so that its door faces the wall": the turn that makes the object's front (where its doors and
+    controls are, which faces the viewer) face that way, as an angle and a sense ("180 degrees", "90 degrees clockwise")."""
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        turned = any(t.lemma in _YAW_VERBS or t.text in _YAW_VERBS for t in out[-12:]) and not any(t.is_sentence_end for t in out[-3:])
+        if token.text in ("so", "so_that") and turned:
+            end = next((k for k in range(i + 1, min(len(tokens), i + 10)) if tokens[k].is_punct or tokens[k].text in ("and", "then")), len(tokens))
+            words = [t.text for t in tokens[i + 1:end]]
+            verb_at = next((k for k, w in enumerate(words) if w in _FACES), None)
+            if verb_at is not None:
+                subject, target = set(words[:verb_at]), words[verb_at + 1:]
+                degrees, sense = _facing_turn(target, back=bool(subject & {"back", "rear"}))
+                angle_said = any(t.number is not None for t in out[-8:])
+                if degrees is not None:
+                    start, stop = token.start, tokens[end - 1].end
+                    if degrees and not angle_said:
+                        out.extend((Token(",", ",", start, start), Token(f"{degrees:g}", f"{degrees:g}", start, stop, number=float(degrees)),
+                                    Token("degrees", "degree", start, stop)))
+                    if sense:
+                        out.append(Token(sense, sense, start, stop))
+                    i = end
+                    continue
+        out.append(token)
+        i += 1
+    return out
+
+
+def _facing_turn(target: list[str], *, back: bool) -> tuple[float | None, str]:
+    """(degrees, sense seen from above) that turn the front (or the back) to face ``target``."""
+    words = set(target)
+    if words & {"left", "leftward", "leftwards"}:
+        degrees, sense = 90.0, "clockwise"
+    elif words & {"right", "rightward", "rightwards"}:
+        degrees, sense = 90.0, "anticlockwise"
+    elif words & _AWAY:
+        degrees, sense = 180.0, ""
+    elif words & _TOWARD_VIEWER:
+        degrees, sense = 0.0, ""
+    else:
+        return None, ""
+    if back:
+        degrees, sense = (180.0 - degrees if degrees in (0.0, 180.0) else degrees), {"clockwise": "anticlockwise", "anticlockwise": "clockwise"}.get(sense, sense)
+    return degrees, sense

@@ -17,7 +17,7 @@ from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import DENOMINATORS, MULTIWORD, NUMBER_WORDS
-from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, same_words
+from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
 
 __all__ = ["Token", "finite_unknown_verb", "lemma_of", "tokenize", "verb_ing"]
@@ -57,8 +57,9 @@ def _raw_tokens(prompt: str) -> list[Token]:
         kind = match.lastgroup
         word = match.group(0)
         start, end = offsets[match.start()], offsets[max(match.end() - 1, match.start())] + 1
+        numbered = tokens and tokens[-1].number is not None and float(tokens[-1].number).is_integer() and 0 < tokens[-1].number < 30
         if kind == "paren" and word == ")" and not depth and tokens and (tokens[-1].number is not None or tokens[-1].text in _LETTERS) and (
-                len(tokens) == 1 or tokens[-2].is_sentence_end or tokens[-2].text in (",", ":")):
+                len(tokens) == 1 or tokens[-2].is_sentence_end or tokens[-2].text in (",", ":") or numbered):
             tokens[-1] = Token(".", ".", tokens[-1].start, end)  # "1) lower the lid 2) ...": a numbered step
             continue
         if kind == "paren":
@@ -275,7 +276,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.spelling import correct
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in expand(_raw_tokens(prompt), known)]
-    tokens = drop_asides(corrections(_join_numbers(_join_phrases(same_words(tokens)))))
+    tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(same_words(tokens))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

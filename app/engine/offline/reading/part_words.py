@@ -1,0 +1,33 @@
+"""Part-kind words in tokens: which kind a word or a phrase of the prompt names ("door", "door release button"),
+from the part-kind registry (:mod:`app.engine.lexicon.kinds`)."""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from app.engine.lexicon.kinds import REGISTRY, PartKind
+from app.engine.offline.reading.token import Token
+
+
+@lru_cache(maxsize=1)
+def _kind_phrases() -> list[tuple[tuple[str, ...], PartKind]]:
+    phrases = [(tuple(w.replace("-", " ").split()), entry.kind) for entry in REGISTRY.values() for w in entry.words]
+    return sorted(phrases, key=lambda p: -len(p[0]))
+
+
+def kind_of_word(word: str) -> PartKind | None:
+    """The kind a single word names ("door" -> DOOR)."""
+    for phrase, kind in _kind_phrases():
+        if phrase == (word,):
+            return kind
+    return None
+
+
+def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
+    """(kind, length) of the longest part-kind phrase starting at ``tokens[i]``."""
+    for phrase, kind in _kind_phrases():
+        n = len(phrase)
+        window = tokens[i:i + n]
+        if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
+            return kind, n
+    return None
