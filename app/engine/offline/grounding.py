@@ -146,8 +146,8 @@ def _named_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], a
 def _fits(part: Part, kind: PartKind, up: np.ndarray) -> bool:
     """Whether a part of a related kind can be what the named kind means."""
     wanted = info(kind)
-    if wanted.turns_only and part.geometry.type == "prismatic":
-        return False  # a knob turns: a sliding lever is not "the knob"
+    if (wanted.turns_only or (wanted.hinged and not wanted.lid_like)) and part.geometry.type == "prismatic":
+        return False  # a knob turns, a flap swings: a sliding part is not "the knob" or "the flap"
     if wanted.lid_like and part.geometry.type != "prismatic":
         axis = np.asarray(part.geometry.axis_world, dtype=float)
         norm = float(np.linalg.norm(axis))
