@@ -239,7 +239,8 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
             _hold_until_now(builder, move.part.joint)
             out.append(replace(move, release="stays"))
             continue
-        if brief and move.goal.state != "rest":
+        toggles = move.part.kind is not None and "toggle" in info(move.part.kind).affordances  # a rocker stays where a click puts it
+        if brief and move.goal.state != "rest" and not toggles:
             out.append(replace(move, release="self_return"))  # "tap the lever (down) briefly": pressed and let go
         elif mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
             out.append(replace(move, release="held"))

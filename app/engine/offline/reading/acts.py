@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import COUPLING_WORDS
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
@@ -80,6 +80,10 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return frame
     amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None
                                         or frame.returning)  # "..., then back to the middle"
+    if not frame.themes and frame.particle in ("on", "off") and previous.verb in VERBS:
+        # "flick the switch on and then off again": the same verb with this particle, on the same part
+        sense = VERBS[previous.verb].particles.get(frame.particle, previous.sense)
+        return replace(frame, verb=previous.verb, sense=sense, themes=previous.themes, instruments=previous.instruments)
     if frame.codes and not frame.themes:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
     if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):

@@ -168,6 +168,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
 
 _FURTHER = frozenset({"further", "farther", "more"})
 """Before "back": a direction ("5 cm further back"), not a return."""
+_SWITCHED = frozenset({"on", "off"})
 _STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
 
 
@@ -322,6 +323,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     inside = {k for m in objects for k in range(m.start, m.end)}
     if verb_index is None and any(t.text == "back" and k not in inside and not (k and tokens[k - 1].text in _FURTHER) for k, t in enumerate(tokens)):
         particle = "back"  # "then 0.3 m back" (not "the back one")
+    elif verb_index is None and not objects and tokens and tokens[0].text in _SWITCHED:
+        particle = tokens[0].text  # "flick it on and then off again": the verb of the clause before, this particle
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(

@@ -104,6 +104,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             token = replace(token, text="stays_put", lemma="stays_put")  # "lid and clasps untouched"
         if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
             start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
+            wider = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS and t.text != "and"), default=0)
+            if not any(t.lemma in VERBS for t in out[wider:]):
+                start = wider  # "lid and clasps untouched": both
             out.insert(start, replace(token, text="without", lemma="without"))
             continue
         hands = tuple(t.text for t in tokens[i:i + 4])
