@@ -143,6 +143,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         word = tokens[i].text
         if i in inside:
             continue
+        if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
+            continue  # "the third drawer down": how it is counted, not where it goes
         if word in PARTICLES:
             if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into", "on") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
                 continue
@@ -178,7 +180,8 @@ def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:
         return info.particles[particle]
-    if particle in _STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP):
+    if particle in _STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
+                                                          VerbSense.CLOSE, VerbSense.RECLINE):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
     return info.sense
 
