@@ -17,9 +17,10 @@ from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.senses import CLOSING_STATES, END_STATE, PartClass, part_class
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import CENTRE_WORDS
+from app.engine.offline.geometry import JointGeometry
 from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
-from app.engine.offline.reading.quantities import Amount
+from app.engine.offline.reading.quantities import Amount, Quantities
 from app.engine.offline.resolve import closed_of, direction_vector, resolve, spin_velocity
 from app.engine.offline.tracker import Tracker
 
@@ -137,22 +138,27 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     return state
 
 
+def _spin(quantities: Quantities, geometry: JointGeometry, tracker: Tracker) -> Goal:
+    angle = quantities.amount.value if quantities.amount is not None and quantities.amount.unit == "rad" else None
+    omega, duration = spin_velocity(geometry, quantities.sense, tracker.obj, angle, quantities.omega_radps, quantities.duration_s,
+                                    quantities.speed_factor, quantities.direction)
+    return Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9))
+
+
 def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalChoice:
     """The goal of ``sense`` (from ``frame``) on ``part``."""
     quantities = frame.quantities
     geometry = part.geometry
     spin = sense is VerbSense.SPIN or (geometry.type == "continuous" and sense in (VerbSense.TURN, VerbSense.OPERATE)
                                        and (quantities.omega_radps is not None or quantities.duration_s is not None) and quantities.amount is None)
-    if spin and geometry.type in ("continuous", "revolute"):
-        angle = quantities.amount.value if quantities.amount is not None and quantities.amount.unit == "rad" else None
-        omega, duration = spin_velocity(geometry, quantities.sense, tracker.obj, angle, quantities.omega_radps, quantities.duration_s,
-                                        quantities.speed_factor, quantities.direction)
-        if geometry.type == "continuous":
-            return GoalChoice(Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9)))
+    if spin and geometry.type == "continuous":
+        return GoalChoice(_spin(quantities, geometry, tracker))
     if quantities.target is not None and any(m.head in (part.joint, part.link) and "_" in m.head for m in frame.themes):
         # "set joint_1 to -1.0 rad": a raw joint value, for users who name joints as the URDF does
         return GoalChoice(Goal(state="value", value=round(quantities.target, 9), measured_from="current"))
     state = state_for(frame, sense, part, tracker)
+    if state == "velocity":  # "work the tray": a spinner set going, at the default speed unless told
+        return GoalChoice(_spin(quantities, geometry, tracker))
     value, unit = _amount(quantities.amount)
     if value is not None and unit == "m" and geometry.type != "prismatic":
         value, unit = None, None

@@ -64,6 +64,9 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     """A verbless clause takes the verb of the one before ("open the left door, then the right one");
     an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back"); "do the same
     with the other one" and "the same amount" take its verb and amount."""
+    if frame.same and previous is not None and previous.verb is None and frame.quantities.amount is None and previous.quantities.amount is not None:
+        # "1) upper drawer out 0.3 m 2) lower drawer out the same distance": the amount, even when neither clause has a verb
+        return replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
     if frame.same and previous is not None and previous.verb is not None:
         source = previous if previous.quantities.amount is not None or measured is None else measured  # "the same amount": the last one said
         quantities = replace(frame.quantities, amount=frame.quantities.amount or source.quantities.amount)

@@ -230,7 +230,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = None  # "as wide as the hinge allows": a comparison, not a second event
         elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
             boundary = (Link.PARALLEL, word, False)
-        elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current):
+        elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current) and not (
+                word == "and" and link is Link.NEGATED and kind_at(tokens, nxt) is not None):  # "without the lid and latches"
             boundary = (Link.SEQUENCE, word, True)
         elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
                 tokens[nxt].text in DETERMINERS):

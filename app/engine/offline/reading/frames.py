@@ -145,6 +145,9 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
             continue
         if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
             continue  # "the third drawer down": how it is counted, not where it goes
+        own = VERBS.get(tokens[verb].lemma)
+        if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text in _STATE_PARTICLES and (own is None or "back" not in own.particles):
+            return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
         if word in PARTICLES:
             if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into", "on") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
                 continue
@@ -330,8 +333,9 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         particle = tokens[0].text  # "flick it on and then off again": the verb of the clause before, this particle
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
+    back_before = particle in ("up", "down") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back"  # "set it back down"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
-        words & CENTRE_WORDS)
+        words & CENTRE_WORDS) or back_before
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),

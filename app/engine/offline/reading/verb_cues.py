@@ -17,9 +17,9 @@ def side_of_part(tokens: list[Token]) -> bool:
     by what the part does (a particle, a turn sense) — the side of the part, not the verb "lower"."""
     from app.engine.offline.reading.mentions import kind_at
 
-    if len(tokens) < 3 or tokens[0].text not in SPATIAL or kind_at(tokens, 1) is None:
+    if len(tokens) < 2 or tokens[0].text not in SPATIAL or kind_at(tokens, 1) is None:
         return False
-    return any(t.text in _SIDE_CUES for t in tokens[2:6])
+    return len(tokens) == 2 or any(t.text in _SIDE_CUES for t in tokens[2:6])  # "Lower knob - turn it ...": the part alone
 
 
 def unknown_verb(token: Token) -> bool:
