@@ -14,14 +14,13 @@ can tell a misreading from a correct one without opening the trajectory.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterable, Sequence
 from typing import Any
 
 from app.engine.contracts.steps import Extension
-from app.engine.lexicon.words import ANGLE_UNITS, LENGTH_UNITS, TIME_UNITS, TURN_UNITS
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.reading.clauses import Clause, Link
+from app.engine.offline.reading.numbers import RELATIVE_AFTER, unit_factor
 from app.engine.offline.reading.tokens import Token
 
 CLOSING_WORDS = frozenset({"shut", "closed", "close"})
@@ -36,21 +35,6 @@ MOVED = 0.02
 
 _UNIT_SKIP = frozenset({"full", "complete", "whole", "more", "further", "extra", "clockwise", "anticlockwise", "counterclockwise",
                         "anti-clockwise", "counter-clockwise", "of", "a"})
-_MORE = frozenset({"more", "further", "extra"})
-
-
-def _unit(lemma: str) -> tuple[str, float] | None:
-    if lemma in ANGLE_UNITS:
-        return "rad", ANGLE_UNITS[lemma]
-    if lemma in TURN_UNITS:
-        return "rad", TURN_UNITS[lemma] * 2 * math.pi
-    if lemma in LENGTH_UNITS and lemma != "in":
-        return "m", LENGTH_UNITS[lemma]
-    if lemma in TIME_UNITS:
-        return "s", TIME_UNITS[lemma]
-    if lemma == "percent":
-        return "fraction", 0.01
-    return None
 
 
 def said_amounts(clauses: Sequence[Clause]) -> dict[int, list[tuple[str, float, str]]]:
@@ -66,18 +50,18 @@ def said_amounts(clauses: Sequence[Clause]) -> dict[int, list[tuple[str, float, 
                 continue
             after = tokens[i + 1:i + 4]
             k = next((k for k, t in enumerate(after) if t.lemma not in _UNIT_SKIP), None)
-            unit = _unit(after[k].lemma) if k is not None else None
+            unit = unit_factor(after[k].lemma) if k is not None else None
             if unit is not None and k is not None:
                 last = unit if unit[0] in ("rad", "m") else last
                 found.append((unit[0], token.number * unit[1], " ".join(t.text for t in tokens[i:i + k + 2])))
-            elif last is not None and after and after[0].lemma in _MORE:
+            elif last is not None and after and after[0].lemma in RELATIVE_AFTER:
                 found.append((last[0], token.number * last[1], f"{token.text} {after[0].text}"))
     return out
 
 
 def _names_a_reference(before: Sequence[Token]) -> bool:
     """The state word after these is a reference or a measure, not the goal: "40 degrees from (fully) shut", "30 degrees open"."""
-    return any(t.text == "from" for t in before[-2:]) or (bool(before) and _unit(before[-1].lemma) is not None)
+    return any(t.text == "from" for t in before[-2:]) or (bool(before) and unit_factor(before[-1].lemma) is not None)
 
 
 def _step_numbers(extension: Extension) -> dict[str, list[float]]:

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from app.engine.lexicon.words import ANGLE_UNITS, DENOMINATORS, LENGTH_UNITS, TURN_UNITS
+from app.engine.lexicon.words import ANGLE_UNITS, DENOMINATORS, LENGTH_UNITS, TIME_UNITS, TURN_UNITS
 from app.engine.offline.reading.tokens import Token
 
 Unit = Literal["fraction", "rad", "m"]
@@ -54,19 +54,29 @@ def fraction_of_turn(tokens: list[Token], i: int) -> tuple[float, int] | None:
     return None
 
 
+def unit_factor(lemma: str) -> tuple[str, float] | None:
+    """(kind, factor to SI) of a unit word: "degree" -> ("rad", pi/180), "turn" -> ("rad", 2 pi), "cm" -> ("m", 0.01),
+    "s" -> ("s", 1), "percent" -> ("fraction", 0.01); ``None`` for any other word ("in" is never inches here)."""
+    if lemma in ANGLE_UNITS:
+        return "rad", ANGLE_UNITS[lemma]
+    if lemma in TURN_UNITS:
+        return "rad", TURN_UNITS[lemma] * _TWO_PI
+    if lemma in LENGTH_UNITS and lemma != "in":
+        return "m", LENGTH_UNITS[lemma]
+    if lemma in TIME_UNITS:
+        return "s", TIME_UNITS[lemma]
+    if lemma == "percent":
+        return "fraction", 0.01
+    return None
+
+
 def said_unit(tokens: list[Token]) -> tuple[Unit, float] | None:
     """The unit of the last measured amount in ``tokens`` ("30 degrees" -> rad per degree), for a bare "20 more" after it."""
     found: tuple[Unit, float] | None = None
     for i in range(len(tokens) - 1):
-        if tokens[i].number is None:
-            continue
-        unit = tokens[i + 1].lemma
-        if unit in ANGLE_UNITS:
-            found = ("rad", ANGLE_UNITS[unit])
-        elif unit in TURN_UNITS:
-            found = ("rad", _TWO_PI)
-        elif unit in LENGTH_UNITS and unit != "in":
-            found = ("m", LENGTH_UNITS[unit])
+        unit = unit_factor(tokens[i + 1].lemma) if tokens[i].number is not None else None
+        if unit is not None and unit[0] in ("rad", "m"):
+            found = ("rad" if unit[0] == "rad" else "m", unit[1])
     return found
 
 
