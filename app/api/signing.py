@@ -17,6 +17,7 @@ import binascii
 import hashlib
 import hmac
 import json
+import math
 import os
 import secrets
 import threading
@@ -85,9 +86,14 @@ def link_secret(settings: Settings) -> bytes:
     return _secret_file(settings.data_dir / SECRET_FILE)
 
 
+def expiry(ttl_s: int) -> int:
+    """The whole second a token made now for ``ttl_s`` seconds expires at (rounded up: never shorter than asked)."""
+    return math.ceil(time.time() + ttl_s)
+
+
 def sign(secret: bytes, kind: str, ttl_s: int, **fields: Any) -> str:
-    """A token of ``kind`` valid for ``ttl_s`` seconds carrying ``fields``."""
-    payload = _b64(json.dumps({"k": kind, "e": int(time.time()) + int(ttl_s), **fields}, separators=(",", ":")).encode())
+    """A token of ``kind`` valid for at least ``ttl_s`` seconds carrying ``fields``."""
+    payload = _b64(json.dumps({"k": kind, "e": expiry(ttl_s), **fields}, separators=(",", ":")).encode())
     signature = _b64(hmac.new(secret, payload.encode("ascii"), hashlib.sha256).digest())
     return f"{payload}.{signature}"
 

@@ -21,7 +21,7 @@ from sqlalchemy.orm import Session
 from app.api.deps import ClientDep, SessionDep, SettingsDep, StorageDep
 from app.api.errors import NotFound, Unprocessable, error_responses
 from app.api.presenters import visible_artifacts
-from app.api.signing import Forbidden, link_secret, sign, verify
+from app.api.signing import Forbidden, expiry, link_secret, sign, verify
 from app.core.storage import Storage, StorageError
 from app.crud import jobs as crud_jobs
 from app.db.models import ApiClient, Artifact
@@ -76,7 +76,7 @@ async def create_links(
         artifact = artifacts[name]
         links.append(SharedLink(name=name, url=f"{base}/v1/shared/{job_id}/{quote(name)}?token={token}",
                                 content_type=artifact.content_type, size_bytes=artifact.size_bytes))
-    expires = datetime.fromtimestamp(int(datetime.now(UTC).timestamp()) + body.expires_in_s, UTC)
+    expires = datetime.fromtimestamp(expiry(body.expires_in_s), UTC)
     return SharedLinks(expires_at=expires, links=links)
 
 

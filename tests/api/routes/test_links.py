@@ -52,10 +52,10 @@ def test_altered_token_is_403(http, alice, finished) -> None:
 
 
 def test_expired_token_is_403(http, alice, settings, finished, monkeypatch) -> None:
-    link = _links(http, alice.headers, finished, names=["animation.glb"], expires_in_s=1).json()["links"][0]["url"]
+    link = _links(http, alice.headers, finished, names=["animation.glb"], expires_in_s=30).json()["links"][0]["url"]
     path = "/" + link.split("/", 3)[3]
     assert http.get(path).status_code == 200
-    later = time.time() + 5
+    later = time.time() + 32
     monkeypatch.setattr(signing.time, "time", lambda: later)
     response = http.get(path)
     assert response.status_code == 403 and "expired" in response.json()["detail"]
@@ -96,3 +96,14 @@ def test_page_token_signs_in_as_its_client(http, alice, settings) -> None:
     assert http.get("/v1/animations", headers={"Authorization": f"Bearer {tampered}"}).status_code == 401
     file_token = signing.PAGE_TOKEN_PREFIX + signing.sign(signing.link_secret(settings), "file", 60, c=str(alice.client.id))
     assert http.get("/v1/animations", headers={"Authorization": f"Bearer {file_token}"}).status_code == 401
+
+
+def test_a_token_lives_at_least_its_ttl_whatever_the_fraction_of_second(monkeypatch) -> None:
+    clock = [1000.99]
+    monkeypatch.setattr(signing.time, "time", lambda: clock[0])
+    token = signing.sign(b"k" * 32, "file", 1, n="a")
+    clock[0] = 1001.9  # 0.91 s later: still inside the second asked for
+    assert signing.verify(b"k" * 32, token, "file").fields == {"n": "a"}
+    clock[0] = 1002.5
+    with pytest.raises(signing.Forbidden, match="expired"):
+        signing.verify(b"k" * 32, token, "file")
