@@ -8,7 +8,9 @@ Prints one line per measurement (median of N warm runs, after one warm-up that p
 imports). Target (issue "Exports"): usd + mjcf + ros + csv + npz in < 200 ms, excluding
 mesh copying, i.e. with the meshes left out of ``animation.usda`` and ``scene.xml``; the
 same with meshes embedded, each exporter alone, and ``interaction.json`` (written on every
-run) are printed too.
+run) are printed too. ``ROOT`` defaults to ``$ARTIMO_PARTNET_ROOT``, else
+``../shared/assets/partnet`` beside the repository (``benchmark/paths.py``); a root without
+safe_101593 exits 2.
 """
 
 from __future__ import annotations
@@ -22,6 +24,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from app.engine.asset.loader import load_asset
+from app.engine.errors import MetricError
 from app.engine.execute.executor import execute
 from app.engine.export.csv_table import write_csv
 from app.engine.export.mjcf import write_mjcf
@@ -32,7 +35,8 @@ from app.engine.export.usd import write_usd
 from app.engine.interaction.phases import actuated_phases
 from app.engine.interaction.targets import interaction_targets, write_interactions
 from app.engine.plan.checks import validate_plan
-from benchmark.speed_engine import SAFE_PLAN
+from benchmark.paths import assets_or_partnet
+from benchmark.speed_engine import ASSET, SAFE_PLAN
 
 Step = Callable[[], object]
 
@@ -52,17 +56,25 @@ def _line(name: str, timing: tuple[float, float], target: str = "") -> None:
     sys.stdout.write(text + (f"   target {target}" if target else "") + "\n")
 
 
-def main() -> int:
+def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--assets", type=Path, default=Path(__file__).resolve().parents[2] / "shared/assets/partnet")
+    parser.add_argument("--assets", type=Path, default=None, help="PartNet-Mobility root (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--repeats", type=int, default=15)
-    args = parser.parse_args()
-    asset = load_asset(args.assets / "safe_101593")
+    args = parser.parse_args(argv)
+    try:
+        root = assets_or_partnet(args.assets)
+    except MetricError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return 2
+    if not (root / ASSET / "mobility.urdf").is_file():
+        sys.stderr.write(f"error: {root} has no {ASSET}/mobility.urdf (the asset this benchmark times); wrong --assets?\n")
+        return 2
+    asset = load_asset(root / ASSET)
     plan = validate_plan(SAFE_PLAN, asset).document
     trajectory = execute(plan, asset)
     ends = [(segment.name, segment.t1) for segment in plan.timeline]
     links = len(asset.visual_links)
-    sys.stdout.write(f"safe_101593: {links} links with geometry, {trajectory.frame_count} frames at {trajectory.fps} fps\n")
+    sys.stdout.write(f"{ASSET}: {links} links with geometry, {trajectory.frame_count} frames at {trajectory.fps} fps\n")
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp)
 

@@ -12,13 +12,14 @@ perceiver, coverage views, HEAD/TAIL keyframes per critic case. With zero latenc
 time of a job is its local work. ``--latency S`` makes every reply take S seconds and
 prints how far the wall time exceeds the model's own critical path (the local work that
 did not overlap a call in flight). Target (models issue): local work <= 0.5 s per job.
+``ROOT`` defaults to ``$ARTIMO_PARTNET_ROOT``, else ``../shared/assets/partnet`` beside the
+repository (``benchmark/paths.py``); a root holding none of the cases' assets exits 2.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import os
 import statistics
 import sys
 import tempfile
@@ -32,15 +33,15 @@ from typing import Any
 
 from app.engine.asset.cache import load_asset_cached
 from app.engine.config import EngineConfig
-from app.engine.errors import EngineError
+from app.engine.errors import EngineError, MetricError
 from app.engine.offline.contract_io import causal_document
 from app.engine.offline.perceiver import read_prompt
 from app.engine.offline.planner import plan_intent
 from app.engine.pipeline import PipelineRequest, run_pipeline
 from app.engine.providers.registry import ProviderConfig, make_roles
 from benchmark.cases import read_cases
+from benchmark.paths import assets_or_partnet, check_assets_root
 
-DEFAULT_ASSETS = Path(os.environ.get("ARTIMO_PARTNET_ROOT", "/work/shared/assets/partnet"))
 ROLES = ("perceiver", "planner", "critic", "coverage")
 OK_VERDICT = {"semantic_ok": True, "visibility_ok": True, "link_motion_type": "static_or_unclear", "detailed_reasoning": "looks right",
               "issues": [], "param_fix_hints": [], "confidence": 0.9}
@@ -120,14 +121,21 @@ def _line(name: str, values: list[float]) -> None:
     sys.stdout.write(f"{name:<46} median {statistics.median(values):6.3f} s   mean {statistics.mean(values):6.3f} s   max {max(values):6.3f} s\n")
 
 
-def main() -> int:
+def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--cases", type=Path, default=Path(__file__).parent / "cases" / "dev.jsonl")
-    parser.add_argument("--assets", type=Path, default=DEFAULT_ASSETS)
+    parser.add_argument("--assets", type=Path, default=None, help="assets root (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--limit", type=int, default=20)
     parser.add_argument("--latency", type=float, default=0.0, help="seconds every model reply takes (default 0)")
     parser.add_argument("--no-cache", action="store_true", help="no asset/view cache: every job renders the perceiver's images (cold)")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
+    try:
+        cases = read_cases(args.cases)[: args.limit]
+        root = assets_or_partnet(args.assets)
+        check_assets_root(root, (case.asset for case in cases), str(args.cases))
+    except MetricError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return 2
     walls: list[float] = []
     local: list[float] = []
     per_stage: dict[str, list[float]] = {}
@@ -136,8 +144,8 @@ def main() -> int:
         state: dict[str, Any] = {"latency": args.latency, "replies": {}, "busy": []}
         cache = None if args.no_cache else work / "cache"
         with _instant_model(state) as url:
-            for index, case in enumerate(read_cases(args.cases)[: args.limit]):
-                asset_dir = args.assets / case.asset
+            for index, case in enumerate(cases):
+                asset_dir = root / case.asset
                 try:
                     state["replies"] = _replies(asset_dir, case.prompt, work / "replies-cache")
                     _job(url, asset_dir, case.prompt, work / f"warm{index}", cache, state)  # first job on the asset: caches fill, renderer warms up

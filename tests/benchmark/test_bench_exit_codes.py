@@ -106,3 +106,16 @@ def test_speed_agent_does_not_time_failed_runs(tmp_path: Path, examples_dir: Pat
     done = _script("benchmark.speed_agent", "--cases", str(cases), "--assets", str(examples_dir))
     assert done.returncode == 1, done.stdout + done.stderr
     assert "no successful run" in done.stdout and "failed:" in done.stderr and "GroundingError" in done.stderr
+
+
+@pytest.mark.parametrize("module", ["benchmark.speed_models", "benchmark.speed_exports"])
+def test_speed_scripts_take_the_root_from_the_shared_resolver_and_name_a_wrong_one(module: str, tmp_path: Path) -> None:
+    """Before: speed_models defaulted to a machine path and skipped every case; speed_exports ignored
+    $ARTIMO_PARTNET_ROOT (set to a missing folder it ran on ../shared/assets/partnet and exited 0)."""
+    nowhere = tmp_path / "nowhere"
+    unset = _script(module, env={"ARTIMO_PARTNET_ROOT": str(nowhere)})
+    assert unset.returncode == 2, unset.stdout + unset.stderr
+    assert f"$ARTIMO_PARTNET_ROOT is {str(nowhere)!r}, which is not a folder" in unset.stderr
+    wrong = _script(module, "--assets", str(tmp_path))
+    assert wrong.returncode == 2, wrong.stdout + wrong.stderr
+    assert str(tmp_path) in wrong.stderr and "wrong --assets?" in wrong.stderr
