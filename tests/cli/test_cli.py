@@ -58,6 +58,15 @@ def test_animate_and_refusal(capsys: pytest.CaptureFixture[str], tmp_path: Path,
     assert "Movable parts" in message and "door" in message
 
 
+def test_a_misspelt_part_name_suggests_the_closest_part(capsys: pytest.CaptureFixture[str], tmp_path: Path, examples_dir: Path) -> None:
+    """'medal' is a word of its own (never auto-corrected) a letter away from the bin's 'pedal'."""
+    out = tmp_path / "out"
+    assert main(["--no-cache", "animate", str(examples_dir / "pedal_bin"), "--prompt", "press the medal to open the bin", "--out", str(out)]) == 1
+    message = capsys.readouterr().err
+    assert "the prompt mentions 'the medal', but pedal_bin has no such movable part (did you mean 'pedal'?)" in message
+    assert not (out / "animation.glb").exists()
+
+
 def test_missing_asset_is_a_clear_error(capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
     assert main(["--no-cache", "inspect", str(tmp_path / "nothing")]) == 1
     assert "does not exist" in capsys.readouterr().err
