@@ -225,7 +225,8 @@ def _api_key(settings: Settings) -> tuple[str, str]:
         if settings.artimo_api_key is not None:
             client = ensure_client_for_key(session, key=settings.artimo_api_key.get_secret_value())
             shown = settings.artimo_api_key.get_secret_value()[:KEY_PREFIX_SHOWN]
-            return f"API key: the value of $ARTIMO_API_KEY ({shown}...), for any {where}", str(client.id)
+            return (f"API key: the value of $ARTIMO_API_KEY ({shown}...), registered in the {where} "
+                    f"(data folder {settings.data_dir})"), str(client.id)
         existing = session.execute(select(ApiClient).where(ApiClient.name == EMBEDDED_CLIENT)).scalars().first()
         if existing is not None:
             return (f"API key: the '{EMBEDDED_CLIENT}' key printed when this {where} was first served "

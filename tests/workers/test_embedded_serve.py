@@ -47,10 +47,11 @@ def test_serve_submit_wait_download_and_stop(tmp_path: Path) -> None:
     url = f"http://127.0.0.1:{port}"
     try:
         assert server.stdout is not None
-        banner = server.stdout.readline() + server.stdout.readline()
-        assert url in banner and str(data_dir) in banner and "broker: sqlite" in banner
-        match = KEY_LINE.search(banner)
-        assert match, banner
+        first, key_line = server.stdout.readline(), server.stdout.readline()
+        assert url in first and str(data_dir) in first and "broker: sqlite" in first
+        match = KEY_LINE.search(key_line)
+        assert match, first + key_line
+        assert f"valid for the database sqlite:///{data_dir / 'artimo.db'}; data folder {data_dir})" in key_line  # whose key it is
         stack.wait_until(lambda: _ready(url), SERVE_TIMEOUT_S, 0.1, "artimo serve /readyz")
         worker_pids = _children(server.pid)
         assert worker_pids, "no worker child process"
@@ -133,12 +134,14 @@ def test_second_start_does_not_print_a_new_key(tmp_path: Path) -> None:
         server = _serve(data_dir, stack.free_port())
         try:
             assert server.stdout is not None
-            banner = server.stdout.readline() + server.stdout.readline()
+            server.stdout.readline()
+            key_line = server.stdout.readline()
         finally:
             server.terminate()
             assert server.wait(SERVE_TIMEOUT_S) == 0
-        assert bool(KEY_LINE.search(banner)) is expect_new, banner
-    assert "printed when" in banner
+        assert bool(KEY_LINE.search(key_line)) is expect_new, key_line
+    assert f"printed when this database sqlite:///{data_dir / 'artimo.db'} was first served" in key_line
+    assert f"(with the same ARTIMO_DATA_DIR={data_dir})" in key_line
 
 
 def _ready(url: str) -> bool:
