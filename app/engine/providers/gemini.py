@@ -15,6 +15,7 @@ import base64
 import json
 import logging
 from typing import Any
+from urllib.parse import quote
 
 from app.engine.errors import ProviderBlocked, ProviderError, ProviderResponseError, ReplyTruncated
 from app.engine.providers.base import Message, ModelRequest, ModelResponse
@@ -66,7 +67,8 @@ class GeminiModel:
         self.model = model
         self.profile = profile or ModelProfile()
         self._key = api_key
-        self._url = f"{base_url.rstrip('/')}/models/{model}:generateContent"  # the name cannot leave this path (checked above)
+        # one escaped path segment as well as checked above: nothing in a name can leave models/ or add a query
+        self._url = f"{base_url.rstrip('/')}/models/{quote(model, safe='')}:generateContent"
         self._attempts = attempts
         self._timeouts = timeouts or Timeouts()
         self._mode: OutputMode = self.profile.output_mode

@@ -85,3 +85,22 @@ def test_ordinary_gemini_model_names_are_accepted(name: str) -> None:
     from app.engine.providers.gemini import GeminiModel
 
     assert GeminiModel(name, api_key="k", base_url="http://127.0.0.1:9").model == name
+
+
+@pytest.mark.parametrize(("name", "segment"), [("gemini-2.5-pro", "gemini-2.5-pro"),
+                                               ("../../admin/delete?confirm=1#", "..%2F..%2Fadmin%2Fdelete%3Fconfirm%3D1%23")])
+def test_the_gemini_url_escapes_the_model_name_even_past_the_name_check(name: str, segment: str, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Defence in depth: were the name check ever loosened, the name is still one escaped segment under models/
+    (before: pasted as is, '../../admin/delete?confirm=1#' posted to /admin/delete with the server's key)."""
+    from app.engine.providers import gemini
+    from app.engine.providers.base import Message, ModelRequest
+
+    monkeypatch.setattr(gemini, "valid_model_name", lambda _name: True)
+
+    async def call(base: str) -> None:
+        model = gemini.GeminiModel(name, api_key="k", base_url=base, attempts=1)
+        await model.complete(ModelRequest(system="You are the planner", messages=(Message(role="user", text="hi"),)))
+
+    with model_server({"planner": ["plain text"]}) as (url, script):
+        asyncio.run(call(url.removesuffix("/v1") + "/v1beta"))
+    assert [r["path"] for r in script.requests] == [f"/v1beta/models/{segment}:generateContent"]
