@@ -28,8 +28,8 @@ from app.core.storage import Storage, intact_local_path, sha256_file, stored_cop
 from app.crud.assets import find_assets_for_client, get_or_create_asset, get_or_create_content
 from app.db.models import ApiClient, Asset
 from app.engine.asset.cache import load_asset_cached
-from app.engine.asset.loader import urdf_in_zip
 from app.engine.asset.model import ArticulatedAsset
+from app.engine.asset.urdf_choice import urdf_in_zip
 from app.engine.errors import AssetError, EngineError
 
 logger = logging.getLogger(__name__)
@@ -119,7 +119,7 @@ def _chosen_urdf(source: Path, display: str, urdf: str | None) -> str:
     try:
         return urdf_in_zip(source, urdf)
     except AssetError as exc:  # name the client's file, not the temporary one
-        raise AssetError(exc.message.replace(source.name, display), file=display, element=exc.element) from exc
+        raise AssetError(exc.reason.replace(source.name, display), file=display, element=exc.element) from exc
 
 
 def _store_content(storage: Storage, key: str, source: Path, digest: str, size: int) -> bool:

@@ -35,6 +35,10 @@ def _submit(args: argparse.Namespace) -> int:
     except ValueError as exc:
         err(f"error: {exc}")
         return 2
+    problem = _local_asset_problem(args.asset, args.urdf)
+    if problem is not None:  # before zipping and uploading a folder the server would refuse
+        err(f"error: {problem}")
+        return 1
     client = open_client(args)
     if client is None:
         return 2
@@ -55,3 +59,22 @@ def _submit(args: argparse.Namespace) -> int:
         return 1
     out_json({k: final[k] for k in ("id", "status", "error", "error_kind", "timings")})
     return 0 if final["status"] == "succeeded" else 1
+
+
+def _local_asset_problem(asset: str, urdf: str | None) -> str | None:
+    """The server's refusal of a local folder or zip for its URDFs (several and no ``--urdf``, none, or an
+    ``--urdf`` matching none), found from the file names alone; None when it has one to use, or is not local."""
+    import zipfile
+
+    from app.engine.asset.urdf_choice import find_urdf, urdf_in_zip
+    from app.engine.errors import AssetError
+
+    path = Path(asset)
+    try:
+        if path.is_dir():
+            find_urdf(path.resolve(), requested=urdf)
+        elif path.is_file() and zipfile.is_zipfile(path):
+            urdf_in_zip(path, urdf)
+    except AssetError as exc:
+        return str(exc)
+    return None

@@ -39,6 +39,8 @@ class AssetError(EngineError):
     def __init__(self, message: str, *, file: str | None = None, element: str | None = None) -> None:
         where = ", ".join(p for p in (file and f"file {file}", element and f"element {element}") if p)
         super().__init__(f"{message} ({where})" if where else message, file=file, element=element)
+        self.reason = message
+        """The message without the file/element suffix (to re-raise naming another file)."""
         self.file = file
         self.element = element
 

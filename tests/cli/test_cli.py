@@ -87,6 +87,7 @@ def test_a_folder_of_several_assets_is_refused_and_lists_them(capsys: pytest.Cap
     assert main(["--no-cache", "animate", str(folder), "--prompt", "open the door", "--out", str(tmp_path / "out")]) == 1
     message = capsys.readouterr().err
     assert "microwave/microwave.urdf, pedal_bin/pedal_bin.urdf" in message and "--urdf" in message
+    assert message.count("pedal_bin.urdf") == 1, message  # before: the list again as the error's element
     assert not (tmp_path / "out" / "animation.glb").exists()
 
 
