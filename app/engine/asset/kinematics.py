@@ -8,6 +8,7 @@ rotation of the whole object) is pre-multiplied onto every link.
 from __future__ import annotations
 
 from collections.abc import Mapping
+from functools import lru_cache
 
 import numpy as np
 
@@ -86,14 +87,50 @@ def link_poses(
     dict of link name -> (t, 4, 4) world transforms.
     """
     count = _frame_count(joint_values, base, frames)
-    values = resolve_joint_values(asset, joint_values, count)
+    values = _driven_values(asset, joint_values, count)
+    at_rest = _rest_locals(asset)
     root = np.broadcast_to(np.eye(4), (count, 4, 4)).copy() if base is None else np.asarray(base, dtype=np.float64)
     poses: dict[str, Transforms] = {asset.root_link: root}
     for name in asset.joint_order:
         joint = asset.joints[name]
-        local = joint.origin[None] @ joint_motion(joint, values[name]) if joint.movable else np.broadcast_to(joint.origin, (count, 4, 4))
+        if name in values:
+            local = joint.origin[None] @ joint_motion(joint, values[name])
+        else:  # a fixed joint, or one at its rest value in every frame: the same transform each frame
+            local = np.broadcast_to(at_rest[name], (count, 4, 4))
         poses[joint.child] = poses[joint.parent] @ local
     return poses
+
+
+@lru_cache(maxsize=64)
+def _rest_locals(asset: ArticulatedAsset) -> dict[str, FloatArray]:
+    """(1, 4, 4) joint frame motion of every joint at rest (fixed joints: their origin), per asset: the joints a
+    call does not drive cost no motion of their own (one joint driven on a large asset was work in its size)."""
+    rest = resolve_joint_values(asset, {}, 1)
+    return {name: (joint.origin[None] @ joint_motion(joint, rest[name]) if joint.movable else joint.origin[None])
+            for name, joint in asset.joints.items()}
+
+
+def _driven_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:
+    """(t,) values of the movable joints given, and of the mimics following them (as :func:`resolve_joint_values`);
+    every other joint sits at the value it has when nothing is given."""
+    values: dict[str, FloatArray] = {}
+    for name, value in joint_values.items():
+        joint = asset.joints.get(name)
+        if joint is not None and joint.movable:
+            values[name] = np.asarray(value, dtype=np.float64).reshape(count)
+    if not values:
+        return values
+    pending = [n for n in asset.movable_joints if n not in values and asset.joints[n].mimic is not None]
+    progressed = True
+    while pending and progressed:
+        progressed = False
+        for name in list(pending):
+            mimic = asset.joints[name].mimic
+            if mimic is not None and mimic.joint in values:
+                values[name] = asset.joints[name].clamp_array(mimic.multiplier * values[mimic.joint] + mimic.offset)
+                pending.remove(name)
+                progressed = True
+    return values
 
 
 def resolve_joint_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass, field
+from functools import cached_property
 from typing import Literal
 
 import numpy as np
@@ -157,6 +158,21 @@ class LinkSpec:
         return np.concatenate([p.vertices for p in self.parts], axis=0)
 
 
+class LinkNames(tuple[str, ...]):
+    """Link names in ``link_order`` whose ``in`` is a set lookup: callers test every link of an asset
+    against the links a joint moves, which over a tuple made the per-joint work grow with the square
+    of the asset's size."""
+
+    def __contains__(self, name: object) -> bool:
+        members: frozenset[str] | None = self.__dict__.get("members")
+        if members is None:
+            members = self.__dict__["members"] = frozenset(self)
+        try:
+            return name in members
+        except TypeError:  # an unhashable value is no link name
+            return False
+
+
 @dataclass(frozen=True, eq=False)
 class ArticulatedAsset:
     """An asset ready for planning, execution and export.
@@ -175,42 +191,58 @@ class ArticulatedAsset:
     warnings: tuple[str, ...] = ()
     content_hash: str = ""
 
-    @property
+    @cached_property
     def movable_joints(self) -> tuple[str, ...]:
         """Non-fixed joints in ``joint_order`` (mimic joints included)."""
         return tuple(j for j in self.joint_order if self.joints[j].movable)
 
-    @property
+    @cached_property
     def controllable_joints(self) -> tuple[str, ...]:
         """Movable joints that are not mimics (the ones a plan may drive)."""
         return tuple(j for j in self.movable_joints if self.joints[j].mimic is None)
 
-    @property
+    @cached_property
     def visual_links(self) -> tuple[str, ...]:
         return tuple(n for n in self.link_order if self.links[n].has_geometry)
 
     def parent_joint(self, link: str) -> JointSpec | None:
         """The joint whose child is ``link`` (None for the root)."""
-        return self._parent_joint_map().get(link)
+        return self._parent_joint_map.get(link)
 
     def child_joints(self, link: str) -> tuple[JointSpec, ...]:
-        return tuple(self.joints[j] for j in self.joint_order if self.joints[j].parent == link)
+        """The joints whose parent is ``link``, in ``joint_order``."""
+        return self._child_joint_map.get(link, ())
 
-    def descendants(self, link: str) -> tuple[str, ...]:
-        """``link`` and every link below it, in ``link_order``."""
+    def descendants(self, link: str) -> LinkNames:
+        """``link`` and every link below it, in ``link_order`` (work in the size of the subtree, not of the asset)."""
         found = {link}
-        for j in self.joint_order:
-            joint = self.joints[j]
-            if joint.parent in found:
+        below = [link]
+        while below:
+            for joint in self._child_joint_map.get(below.pop(), ()):
                 found.add(joint.child)
-        return tuple(n for n in self.link_order if n in found)
+                below.append(joint.child)
+        index = self._link_index
+        return LinkNames(sorted((n for n in found if n in index), key=index.__getitem__))
 
-    def moving_links(self, joint: str) -> tuple[str, ...]:
+    def moving_links(self, joint: str) -> LinkNames:
         """Links moved by ``joint``: its child and all descendants."""
         return self.descendants(self.joints[joint].child)
 
+    @cached_property
     def _parent_joint_map(self) -> dict[str, JointSpec]:
         return {j.child: j for j in self.joints.values()}
+
+    @cached_property
+    def _child_joint_map(self) -> dict[str, tuple[JointSpec, ...]]:
+        children: dict[str, list[JointSpec]] = {}
+        for name in self.joint_order:
+            joint = self.joints[name]
+            children.setdefault(joint.parent, []).append(joint)
+        return {parent: tuple(joints) for parent, joints in children.items()}
+
+    @cached_property
+    def _link_index(self) -> dict[str, int]:
+        return {name: i for i, name in enumerate(self.link_order)}
 
     def rest_vector(self) -> FloatArray:
         """(j,) rest values of ``movable_joints``; a mimic joint follows its leader's rest.

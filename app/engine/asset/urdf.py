@@ -9,6 +9,7 @@ root, unknown links, duplicate names and cycles).
 from __future__ import annotations
 
 import io
+from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
@@ -84,7 +85,8 @@ def parse_urdf(data: bytes, file_name: str) -> ParsedUrdf:
     except (etree.XMLSyntaxError, ValueError, TypeError, AttributeError, KeyError, IndexError) as exc:
         raise AssetError(f"cannot parse URDF: {type(exc).__name__}: {exc}", file=file_name) from exc
     _check_names(robot, file_name)
-    joints = {j.name: _joint_spec(j, robot, file_name) for j in robot.joints}
+    link_names = frozenset(link.name for link in robot.links)  # once, not per joint (linear in the asset's size)
+    joints = {j.name: _joint_spec(j, link_names, file_name) for j in robot.joints}
     _check_mimics(joints, file_name)
     root, joint_order, link_order = _tree_order(robot, file_name)
     return ParsedUrdf(robot=robot, joints=joints, root_link=root, joint_order=joint_order, link_order=link_order)
@@ -103,9 +105,8 @@ def _check_names(robot: yourdfpy.Robot, file_name: str) -> None:
             seen.add(item.name)
 
 
-def _joint_spec(joint: yourdfpy.Joint, robot: yourdfpy.Robot, file_name: str) -> JointSpec:
+def _joint_spec(joint: yourdfpy.Joint, link_names: frozenset[str], file_name: str) -> JointSpec:
     element = f"joint {joint.name}"
-    link_names = {link.name for link in robot.links}
     if joint.type in ("floating", "planar"):
         raise AssetError(f"{joint.type} joints are not supported", file=file_name, element=element)
     if joint.type not in ("revolute", "continuous", "prismatic", "fixed"):
@@ -213,9 +214,9 @@ def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, 
     for joint in robot.joints:
         children.setdefault(joint.parent, []).append(joint)
     reached = set(roots)
-    queue = list(roots)
+    queue = deque(roots)
     while queue:
-        for joint in children.get(queue.pop(0), []):
+        for joint in children.get(queue.popleft(), []):
             reached.add(joint.child)
             queue.append(joint.child)
     unreached = [link.name for link in robot.links if link.name not in reached]
@@ -230,9 +231,9 @@ def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, 
         )
     joint_order: list[str] = []
     link_order: list[str] = [roots[0]]
-    queue = [roots[0]]
+    queue = deque([roots[0]])
     while queue:
-        for joint in children.get(queue.pop(0), []):
+        for joint in children.get(queue.popleft(), []):
             joint_order.append(joint.name)
             link_order.append(joint.child)
             queue.append(joint.child)

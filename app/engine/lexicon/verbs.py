@@ -220,6 +220,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("grab", S.GRASP, stative=True),
     VerbInfo("grasp", S.GRASP, stative=True),
     VerbInfo("grip", S.GRASP, stative=True),
+    VerbInfo("get_at", S.GRASP, stative=True),  # "to get at the second rack, ...": reach it (what follows moves it)
     VerbInfo("bring", S.MOVE, _p(up=S.RAISE, down=S.LOWER, back=S.RETURN, out=S.PULL_OUT, **{"in": S.PUSH_IN}, around=S.YAW, round=S.YAW),
              object_sense=S.MOVE),
     VerbInfo("stand", S.RAISE, _p(up=S.RAISE)),

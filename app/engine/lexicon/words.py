@@ -154,7 +154,7 @@ MULTIWORD: tuple[str, ...] = (
     "part way", "three quarters", "a quarter of the way", "a third of the way", "a quarter", "a third", "one third", "two thirds",
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
-    "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of",
+    "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
     "on top of", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
@@ -215,6 +215,18 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
+PLACE_SIDES: Mapping[str, Side] = MappingProxyType({
+    "floor": Side.BOTTOM, "ground": Side.BOTTOM, "counter": Side.BOTTOM, "countertop": Side.BOTTOM, "worktop": Side.BOTTOM,
+    "table": Side.BOTTOM, "ceiling": Side.TOP, "wall": Side.BACK})
+"""Places a part is nearest to ("the rack nearest the floor", "the dial closest to the counter"): the object's side they face."""
+OPPOSITE_SIDES: Mapping[Side, Side] = MappingProxyType({Side.BOTTOM: Side.TOP, Side.TOP: Side.BOTTOM, Side.BACK: Side.FRONT,
+                                                         Side.FRONT: Side.BACK, Side.LEFT: Side.RIGHT, Side.RIGHT: Side.LEFT})
+WHOLE_WORDS = frozenset({"whole", "entire", "asset", "model", "body"})
+"""Words that name the whole object, never the part a verb works on it ("rotate the whole tap asset": not its handle)."""
+WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
+"""What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
+ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
+"""Adverbs that say what a particle says ("push the sash outward" = push it out)."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers"})
@@ -263,7 +275,7 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
-                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "like_that", "like_this", "animating", "animation", "moving", "movement"})
+                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "same", "extension", "like_that", "like_this", "animating", "animation", "moving", "movement"})
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})

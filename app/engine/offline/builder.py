@@ -19,7 +19,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import OPERATED_OBJECTS
+from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.conditions import condition
 from app.engine.offline.explain import Explanation
@@ -252,7 +252,8 @@ class Builder:
             return False  # "start the toaster", "flush the toilet": the part the verb works
         if first.is_object:
             self._same_object(first)
-            if self.tracker.obj.category in OPERATED_OBJECTS and frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF):
+            if self.tracker.obj.category in OPERATED_OBJECTS and frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF) and (
+                    not WHOLE_WORDS & set(first.words.split())):
                 return False
             return moves_object(frame, pronoun=False, after_part=False) and not (
                 frame.sense in (VerbSense.OPEN, VerbSense.CLOSE) and openable(self.parts))
@@ -281,11 +282,12 @@ class Builder:
         """A button that cannot go deeper into its face cannot be pressed: refuse rather than pull it out."""
         if sense not in (VerbSense.PRESS, VerbSense.PUSH_IN, VerbSense.OPERATE):
             return
-        for part in parts:
+        for part in (p for p in parts if p.kind is not None and info(p.kind).press == "into_face" and p.geometry.type == "prismatic"):
             geometry = part.geometry
-            if part.kind is not None and info(part.kind).press == "into_face" and geometry.type == "prismatic" and (
-                    geometry.press_value is None or abs(geometry.press_value - self.tracker.value(part.joint)) < REACHED):
-                raise self.refs.refuse(f"'{frame.text}': the {part.kind.value} ({part.link}) cannot be pressed in any further")
+            if geometry.press_value is None or abs(geometry.press_value - self.tracker.value(part.joint)) < REACHED:
+                raise self.refs.refuse(f"'{frame.text}': the {part.kind.value} ({part.link}) cannot be pressed in any further")  # type: ignore[union-attr]
+            if geometry.press_outward:
+                self.notes.append(f"{part.link} ({part.joint}) rests at the deep end of its travel: pressed along the travel it has (outward)")
 
     def _check_motion(self, frame: Frame, parts: list[Part]) -> None:
         """A verb naming a motion the part cannot make is refused, not guessed: "fold down the tray"

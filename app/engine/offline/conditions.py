@@ -13,6 +13,7 @@ from app.engine.offline.reading.acts import Act
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
+    from app.engine.offline.reading.frames import Frame
 
 
 _GROUPS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console", "keyboard"})
@@ -24,12 +25,15 @@ def condition(builder: Builder, act: Act) -> None:
     frame = act.goal
     if frame.heading:
         builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
+        builder.refs.scene = next((m.sides for m in frame.themes if m.is_object and m.sides), builder.refs.scene)  # "top oven:"
+        if any(not m.is_object for m in frame.themes):
+            frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))
         try:
             builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
         except GroundingError:
             if any(m.kind is not None and m.head not in _GROUPS and not (m.plural or m.collective) for m in frame.themes):
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
-            # "Quick anim: ...": a summary that names no part
+            set_topic(builder, frame)  # "Quick anim: ...": a summary that names no part; "the chicken is on the lowest shelf - ..."
         return
     parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
     words_in = set(frame.text.split())
@@ -45,3 +49,16 @@ def condition(builder: Builder, act: Act) -> None:
     if moves:
         builder.complete(replace(act, goal=replace(frame, sense=wanted)), wanted, [], moves, why="prerequisite")
     builder.refs.remember(parts, [])
+
+
+def set_topic(builder: Builder, frame: Frame) -> None:
+    """"The roast is sitting on the middle shelf - get it out to me": a skipped clause that places something on
+    one part makes that part what "it" means next (when nothing else does yet)."""
+    if builder.refs.last or len(frame.instruments) != 1 or frame.instruments[0].kind is None:
+        return
+    try:
+        found, _ = builder.refs.resolve(frame.instruments[0])
+    except GroundingError:
+        return
+    if len(found) == 1:
+        builder.refs.last, builder.refs.last_kind = list(found), found[0].kind

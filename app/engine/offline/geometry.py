@@ -59,6 +59,8 @@ class JointGeometry:
     size: float
     tip: FloatArray
     """The moving part's point farthest from the joint axis at rest (the end a hand pushes)."""
+    press_outward: bool = False
+    """A button resting at the deep end of its travel: a press moves it along the only travel it has (outward)."""
 
     @property
     def span(self) -> float | None:
@@ -147,6 +149,7 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
     centroid = moved.mean(axis=0) if moved.shape[0] else frame[:3, 3]
     category = link_kind(asset, spec.child)
     closed = opened = press = up = down = None
+    press_outward = False
     face = np.zeros(3)
     size = float(np.linalg.norm(moved.max(axis=0) - moved.min(axis=0))) if moved.shape[0] else 0.0
     if static.shape[0]:
@@ -174,6 +177,9 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
             if abs(heights[0] - heights[1]) < 1e-6:
                 up = down = None
             press = float(values[int(np.argmin(depth))]) if abs(depth[0] - depth[1]) > 1e-9 else None
+            if press is not None and abs(press - spec.rest) < 1e-9 and category is not None and info(category).press == "into_face" and (
+                    spec.type == "prismatic"):
+                press, press_outward = float(values[int(np.argmax(depth))]), True  # its only travel leads out of its face
     home_centroid, home_face = centroid, face
     if closed is not None and static.shape[0]:
         home = _posed(points, link_poses(asset, {joint: np.array([closed])}, frames=1), moving)
@@ -196,6 +202,7 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
         closed_value=closed,
         open_value=opened,
         press_value=press,
+        press_outward=press_outward,
         up_value=up,
         down_value=down,
         face_normal=face,

@@ -113,10 +113,21 @@ def _lines(candidates: list[Part], obj: ObjectGeometry, axis: int) -> list[list[
     gap = max(0.5 * sizes[len(sizes) // 2] / 3.0, MIN_QUALIFIER_TOLERANCE_M)
     lines: list[list[Part]] = [[ordered[0]]]
     for previous, value, part in zip(values, values[1:], ordered[1:], strict=False):
-        if abs(value - previous) > gap:
+        if abs(value - previous) > gap or _stacked(part, lines[-1], obj, axis):
             lines.append([])
         lines[-1].append(part)
     return lines
+
+
+def _stacked(part: Part, line: list[Part], obj: ObjectGeometry, axis: int) -> bool:
+    """``part`` lies beyond every member of ``line`` along ``axis`` more than beside it: three oven racks close
+    together are three rows, not one (two drawers side by side stay one row)."""
+    here = position(part, obj)
+    for other in line:
+        offset = here - position(other, obj)
+        if abs(float(offset[axis])) <= max(float(np.linalg.norm(np.delete(offset, axis))), MIN_QUALIFIER_TOLERANCE_M):
+            return False
+    return True
 
 
 def _pick_line(candidates: list[Part], obj: ObjectGeometry, index: int, axis: int) -> list[Part]:

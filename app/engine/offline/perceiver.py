@@ -19,6 +19,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VERBS
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
+from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
 from app.engine.offline.naming import GENERIC, tokens
@@ -92,6 +93,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
                 raise  # a clause that names parts but not which one is never skipped
             skipped.append(exc)
+            set_topic(builder, act.goal)
             builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
     if not builder.steps:
         if skipped:

@@ -59,6 +59,8 @@ class Referents:
     """The last several parts one plural mention named ("both fridge doors")."""
     earlier: list[list[Part]] = field(default_factory=list)
     """Every earlier "it", most recent last: "close it" after spinning a turntable means the door opened before."""
+    scene: tuple[tuple[Side, bool], ...] = ()
+    """Sides of the object a heading named ("SHOT 4, top oven: door drops ..."): where a bare mention's parts are."""
     assigned: dict[str, Part] = field(default_factory=dict)
     """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
 
@@ -115,6 +117,9 @@ class Referents:
         if len(candidates) > 1 and mention.sides and not mention.plural and not mention.collective and self._same_place(mention, candidates):
             raise self.refuse(f"'{mention.words or mention.head}' does not tell the {len(candidates)} "
                               f"{kind.value if kind is not None else mention.head}s apart", candidates)
+        if not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
+            mention = replace(mention, region=self.scene)  # under "top oven:", "the door" is the top oven's
+            candidates = narrow(replace(mention, sides=self.scene), candidates, self.asset, self.obj, [], set())[0] or candidates
         if mention.region and len(candidates) > 1:
             candidates = self._compartment(mention, candidates) or candidates
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]

@@ -153,8 +153,9 @@ ROWS: list[Row] = [
     R("coffee_machine_103030", "lift the coffee machine lid", joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
     R("coffee_machine_103030", "turn the knob", joints={"joint_0": E(abs_end=PI / 2), "joint_2": E(still=True)}),
     R("toilet_102622", "lift the toilet lid", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
-    # the flush button rests flush and can only move outward: pressing it in is refused (not pulled out)
-    R("toilet_102622", "press the flush button", refuse=True),
+    # the flush button rests at the deep end of its travel (its only travel leads outward): a press moves it along that
+    # travel, with a note saying so (a blind round expected the motion; a refusal animated nothing)
+    R("toilet_102622", "press the flush button", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
     R("window_103135", "open the window", joints={"joint_0": E(end="upper")}),
     R("window_103135", "close the window", joints={"joint_0": E(end="lower")}),
     R("stapler_103099", "open the stapler", joints={"joint_0": E(end="upper")}),
@@ -376,7 +377,7 @@ ROWS: list[Row] = [
     R("safe_101564", "press 1, 2, 3 on the keypad", joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper"), "joint_2": E(peak="upper"), "joint_13": E(still=True)},
       order=(("joint_0", "joint_1"), ("joint_1", "joint_2"))),
     R("examples/cabinet", "open the cupboard door without touching the knob", joints={"door_hinge": E(end="lower"), "latch_knob_turn": E(still=True)}),
-    R("toilet_102622", "flush the toilet", refuse=True),
+    R("toilet_102622", "flush the toilet", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),  # its button, along its only travel
     R("examples/toy_car", "push the car forward 20 cm, then turn it around", base=None, yaw_deg=180.0),
     # --- blind dev probe, round 2 (benchmark/probes/dev_prompts.jsonl; dev assets from partnet-extra) ---
     R("examples/microwave", "open the trunk", refuse=True),
@@ -509,6 +510,29 @@ ROWS: list[Row] = [
     R("extra/coffee_machine_102145", "Flip the front flap up as far as it goes.", joints={"joint_3": E(end="upper"), "joint_1": E(still=True), "joint_2": E(still=True)}),
     R("oven_7138", "Swing the oven door right round to 160 degrees.", refuse=True),
     R("extra/oven_7179", "The oven door: open it, please.", refuse=True),
+    # --- blind dev probe, round 9 (benchmark/probes/dev_round9_prompts.jsonl): classes fixed, rephrased ---
+    R("extra/storage_25308", "Pull the right drawer out 15 cm and then do the same for the other one.",
+      joints={"joint_0": E(end=0.15), "joint_1": E(end=0.15)}, order=(("joint_0", "joint_1"),)),
+    R("extra/storage_25308", "Slide the left drawer out 10 cm, then give the other one the same.",
+      joints={"joint_1": E(end=0.10), "joint_0": E(end=0.10)}),
+    R("storage_19179", "Steps:\n* top drawer out 30 cm\n* top drawer back in", joints={"joint_1": E(peak=0.30, end=0.0), "joint_0": E(still=True)}),
+    R("extra/oven_7179", "Slide the second rack from the bottom all the way out.",
+      joints={"joint_3": E(end="upper"), "joint_1": E(end="upper"), "joint_0": E(still=True), "joint_2": E(still=True)}),
+    R("extra/oven_7179", "The chicken is on the lowest shelf - bring it out.",
+      joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
+    R("extra/oven_7179", "Take 2, upper oven: door goes down; its rack slides out a bit, then back in.",
+      joints={"joint_4": E(end="upper"), "joint_0": E(moves=True, end=0.0), "joint_3": E(still=True)}),
+    R("extra/oven_7179", "To get at the top rack, pull it out 20 cm.", joints={"joint_4": E(end="upper"), "joint_0": E(end=0.20)}),
+    R("extra/storage_24644", "I want its drawer to come out 10 cm.", joints={"joint_0": E(end=0.10)}),
+    R("window_103135", "Swing the sash outwards all the way.", joints={"joint_0": E(end="upper")}),
+    R("toaster_103483", "Sink the lever all the way down.", joints={"joint_0": E(end="upper")}),
+    R("faucet_148", "Animator here - turn the whole faucet model 90 degrees, lever untouched.", yaw_deg=90.0),
+    R("oven_7138", "The oven door drops open, and that's it.", joints={"joint_0": E(end="upper")}),
+    R("extra/microwave_7128", "The knob nearest the floor: a quarter turn.", joints={"joint_2": E(moves=True), "joint_3": E(still=True)}),
+    R("extra/coffee_machine_102145", "Move the lever on top of the coffee machine all the way left.", joints={"joint_0": E(end="lower")}),
+    R("washing_machine_103508", "Third knob from the left on the washer: a quarter turn.", joints={"joint_1": E(moves=True), "joint_2": E(still=True)}),
+    R("extra/safe_102380", "Spin the dial one and a half turns, door left alone.", joints={"joint_0": E(moves=True), "joint_2": E(still=True)}),
+    R("toilet_102622", "Somebody needs to use the bathroom; raise the lid.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
 ]
 
 

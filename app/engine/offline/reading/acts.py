@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
+from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import COUPLING_WORDS
 from app.engine.offline.reading.clauses import Link
@@ -39,6 +40,7 @@ class Act:
 _IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
 _STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 _PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
+_THIRD_PERSONS = frozenset({"someone", "somebody", "he", "she", "they", "everyone", "people", "guests"})
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
@@ -70,7 +72,7 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if frame.same and previous is not None and previous.verb is not None:
         source = previous if previous.quantities.amount is not None or measured is None else measured  # "the same amount": the last one said
         quantities = replace(frame.quantities, amount=frame.quantities.amount or source.quantities.amount)
-        if frame.verb is None or frame.verb == "do":
+        if frame.verb is None or frame.verb == "do" or frame.guessed_verb is not None:  # "give the other one the same"
             themes = frame.themes or frame.instruments  # "do the same with the other one": the other one is the theme
             return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
                            themes=themes or previous.themes, instruments=() if not frame.themes else frame.instruments)
@@ -87,7 +89,7 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         # "flick the switch on and then off again": the same verb with this particle, on the same part
         sense = VERBS[previous.verb].particles.get(frame.particle, previous.sense)
         return replace(frame, verb=previous.verb, sense=sense, themes=previous.themes, instruments=previous.instruments)
-    if frame.codes and not frame.themes:
+    if frame.codes and not frame.themes and not frame.returning:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
     if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):
         # "leave it there 4 s, then back to where it started": the return is the step, not another hold
@@ -97,7 +99,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         # "open the left drawer 25 cm, then the right one": the ellipsis repeats the whole request, amount included
         frame = replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
     if frame.themes or amount_only:
-        return replace(frame, verb=previous.verb, sense=previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
+        own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
+        return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
                        themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)
     return frame
 
@@ -141,6 +144,13 @@ def _is_event(frame: Frame) -> bool:
     told_next = frame.marker in ("then", "and_then", "after_that", "next", "finally", "afterwards", "later")
     return (frame.subject_theme and frame.verb is not None and not frame.stative and frame.link is not Link.PURPOSE and not told_next) or (
         frame.let and frame.text.split()[0] in ("watch", "see"))
+
+
+def _narrated(before: Frame, frame: Frame) -> bool:
+    """"door drops all the way; its rack slides halfway out": one told event after another, the first of a part
+    that operates nothing (a door, not a pedal), is the next step of the story, not what the first one caused."""
+    return before.subject_theme and frame.link is not Link.RESULT and bool(before.themes) and all(
+        m.kind is not None and not info(m.kind).control for m in before.themes) and all(not m.pronoun for m in frame.themes)
 
 
 def _corrected(act: Act, frame: Frame) -> Act | None:
@@ -211,14 +221,14 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.heading and frame is not frames[-1]:
             # "Turn both knobs at the same time: the top one ..., the bottom one ...": a summary of what follows;
             # it names the parts ("it"), the clauses after the colon say what each does
-            parts_named = tuple(m for m in frame.themes if not m.is_object) or frame.themes  # "On the washer, the third knob: ..."
+            parts_named = tuple(m for m in frame.themes if not m.is_object or m.sides) or frame.themes  # "On the washer, the third knob: ..."
             acts.append(Act(goal=replace(frame, sense=None, verb=None, themes=parts_named, quantities=replace(frame.quantities, amount=None)),
                             condition=True))
             together = frame.simultaneous
             previous_goal = frame  # the clauses after the colon may only name a part and an amount: they take its verb
             continue
-        if frame.aside and frame.link in (Link.RESULT, Link.PURPOSE) and acts:
-            continue  # "..., so I can put my plate in": why, not what
+        if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and acts:
+            continue  # "..., so I can put my plate in", "nothing else": why, or a remark, not what
         if frame.stative and COUPLING_WORDS & set(frame.text.split()):
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
         frame = _carry(frame, previous_goal, measured)
@@ -234,7 +244,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
         after_act = bool(acts) and not acts[-1].condition and acts[-1].goal.verb is not None and not acts[-1].goal.aside
         # a summary, a state or a clause about the user has no results of its own
-        if (frame.link is Link.RESULT and after_act) or (_is_event(frame) and after_act and not waits_for):
+        if (frame.link is Link.RESULT and after_act) or (_is_event(frame) and after_act and not waits_for and not _narrated(acts[-1].goal, frame)):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue
         if _is_subjectless_event(frame) and acts and acts[-1].results:
@@ -248,6 +258,14 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 pending_conditions.append(frame)  # "A and, once it is out, B": a state to reach before B
             else:
                 acts.append(Act(goal=frame, condition=True))  # "the drawer is sticking out; push it shut": sets "it"
+            continue
+        if frame.link is Link.PURPOSE and acts and acts[-1].goal.aside and acts[-1].goal.text.split()[0] in _THIRD_PERSONS:
+            acts.pop()  # "Someone needs to use the toilet, put the lid up": why (another person's aim), not what
+            continue
+        if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and acts[-1].goal.themes and not frame.themes:
+            # "I need its drawer to come out 12 inches": the wished part is what the verb after "to" moves
+            acts[-1] = replace(acts[-1], goal=replace(frame, themes=acts[-1].goal.themes, subject_theme=True, link=acts[-1].goal.link))
+            previous_goal = acts[-1].goal
             continue
         if frame.link is Link.PURPOSE and acts and acts[-1].means is None:
             last = acts.pop()

@@ -36,6 +36,7 @@ from app.engine.lexicon.words import (
     SPATIAL,
     SPEEDS,
     STATIVE_VERBS,
+    WISHES,
 )
 from app.engine.offline.reading.mentions import kind_at
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
@@ -121,8 +122,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         j += 1
     if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
-    if j < len(tokens) and tokens[j].text in ("it's", "they're", "that's", "it'll"):
-        return True  # "so it's not in the way"
+    if j < len(tokens) and (tokens[j].text in ("it's", "they're", "that's", "it'll") or tokens[j].text in WISHES):
+        return True  # "so it's not in the way", "Game dev here - I need ..."
     if j + 2 < len(tokens) and tokens[j].number is not None and tokens[j + 2].text in _PAUSES:
         return True  # "up to vertical, 2 s pause, then ...": a wait
     if j + 1 < len(tokens) and tokens[j].text in _STAYS and tokens[j + 1].text in ("there", "for", "like_that", "open", "shut", "closed"):

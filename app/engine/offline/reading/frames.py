@@ -21,6 +21,7 @@ from app.engine.lexicon.words import (
     SIMULTANEOUS,
     SPATIAL,
     STATIVE_VERBS,
+    WISHES,
 )
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
@@ -189,6 +190,12 @@ def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     return info.sense
 
 
+def _ends_the_same(tokens: list[Token]) -> bool:
+    """"give the other one the same (again)": the clause ends on "the same" (not "the same door")."""
+    said = [t.text for t in tokens if t.text not in (".", "!", "again", "too", "as_well", "please")]
+    return said[-2:] == ["the", "same"]
+
+
 def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Mention]) -> tuple[list[Mention], list[Mention]]:
     """(themes, instruments): a phrase after "with", "using", "by its", "on its" is how, not what;
     an object named after a reference preposition ("out of the oven") is where. ``prior``: a subject
@@ -206,8 +213,8 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue  # "rotate the box on the table": where, not what
         if preposition == "of" and themes and before > 0 and tokens[before - 1].text in _REGION_WORDS:
             continue  # "the small dial near the top of the door": where the dial is
-        if preposition in ("for", "like", "than") and mention.kind is None and not mention.pronoun:
-            continue  # "swing the handle left for hot water": why, not what
+        if preposition in ("for", "like", "than") and mention.kind is None and not mention.pronoun and not mention.anaphor:
+            continue  # "swing the handle left for hot water": why, not what ("do the same for the other one" names a part)
         if {t.text for t in tokens[max(0, mention.start - 3):mention.start]} & {"on", "onto"} and themes and mention.kind is None and (
                 not mention.pronoun and not mention.possessive and not mention.is_object):
             continue  # "lay the handle down on the back rim": where it ends, not a second part
@@ -242,15 +249,21 @@ _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", 
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
-_WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
+_WISH_LEADS = frozenset({"but", "so", "and", "ok", "okay", "for", "now", "right", "well", "anyway"})
+_WISH_ADVERBS = frozenset({"just", "really", "only", "also", "still", "actually"})
 _STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": VerbSense.OPEN, "closed": VerbSense.CLOSE, "shut": VerbSense.CLOSE,
                  "up": VerbSense.RAISE, "down": VerbSense.LOWER, "in": VerbSense.PUSH_IN}
 
 
 def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
     """"I need the rack out": drop the wish; what is left names a part and its wanted state."""
-    if tokens and tokens[0].text in _WISHES:
-        return True, tokens[1:]
+    k = 0
+    while k < len(tokens) - 1 and tokens[k].text in _WISH_LEADS:
+        k += 1  # "but for now I just need its drawer ...", "so I want ..."
+    if k < len(tokens) and tokens[k].text in WISHES:
+        return True, tokens[k + 1:]
+    if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
+        return True, tokens[k + 3:]
     return False, tokens
 
 
@@ -268,7 +281,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     if verb_index is None and len(tokens) > 1 and tokens[1].text in ("it", "them") and tokens[0].text.isalpha() and tokens[0].text not in DETERMINERS and (
             not named_side and tokens[0].lemma not in VERBS):
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "seat it back down": a noun used as a verb
-    if verb_index is None and tokens and unknown_verb(tokens[0]) and len(tokens) > 1 and not named_side:
+    if verb_index is None and len(tokens) > 1 and unknown_verb(tokens[0], tokens[1].text) and not named_side:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None
@@ -329,11 +342,14 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     inside = {k for m in objects for k in range(m.start, m.end)}
     if verb_index is None and any(t.text == "back" and k not in inside and not (k and tokens[k - 1].text in _FURTHER) for k, t in enumerate(tokens)):
         particle = "back"  # "then 0.3 m back" (not "the back one")
+        after = [tokens[k + 1].text for k, t in enumerate(tokens[:-1]) if t.text == "back"]
+        if after and after[0] in ("in", "out", "up", "down"):
+            particle, particle_at = after[0], next(k + 1 for k, t in enumerate(tokens) if t.text == "back")  # "then back in": back, and in
     elif verb_index is None and not objects and tokens and tokens[0].text in _SWITCHED:
         particle = tokens[0].text  # "flick it on and then off again": the verb of the clause before, this particle
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
-    back_before = particle in ("up", "down") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back"  # "set it back down"
+    back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back"  # "set it back down"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
         words & CENTRE_WORDS) or back_before
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
@@ -344,7 +360,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
         guessed_verb=guessed, same_direction="in_the_same_direction" in words,
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
-        same=bool(words & _SAME), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
+        same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool(words & _RETURN_WORDS), correction=correction,
         brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
     )

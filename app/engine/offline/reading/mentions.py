@@ -21,10 +21,12 @@ from app.engine.lexicon.words import (
     NOT_PART_NOUNS,
     OBJECT_NOUNS,
     OBJECT_SUFFIXES,
+    OPPOSITE_SIDES,
     ORDINALS,
     OTHER_WORDS,
     PERSONS,
     PHRASE_BREAKS,
+    PLACE_SIDES,
     PRONOUNS,
     SIZES,
     SPATIAL,
@@ -291,6 +293,7 @@ _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneat
               "farther": "far", "further": "far"}
 _VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
+_RELATIVE = frozenset({"that's", "that", "which", "which's", "is", "sits", "sitting"})
 
 
 def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
@@ -298,14 +301,18 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
     i = mention.end
     if i + 2 < len(tokens) and tokens[i].text in ("on", "at") and tokens[i + 1].text in DETERMINERS and tokens[i + 2].text in ("end", "side"):
         i += 3  # "the lever on the end closest to me"
-    while i < len(tokens) and tokens[i].text in _ADVERBS:
-        i += 1
+    while i < len(tokens) and tokens[i].text in _ADVERBS | _RELATIVE:
+        i += 1  # "the rack (that's) nearest the floor"
     if i >= len(tokens) or tokens[i].text not in _RELATIONS:
         return None
     relation = _RELATIONS[tokens[i].text]
     j = i + 1
     if j < len(tokens) and tokens[j].text in ("of", "to", "from"):
         j += 1
+    k = j + (j < len(tokens) and tokens[j].text in DETERMINERS)
+    if relation in ("near", "far") and k < len(tokens) and tokens[k].text in PLACE_SIDES:  # "the dial closest to the counter": the bottom one
+        side = PLACE_SIDES[tokens[k].text] if relation == "near" else OPPOSITE_SIDES[PLACE_SIDES[tokens[k].text]]
+        return replace(mention, sides=(*mention.sides, (side, True)), end=k + 1, words=_words(tokens, mention.start, k + 1))
     if relation == "near" and j < len(tokens) and tokens[j].text in _VIEWER:
         viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front
         return replace(mention, relation=(relation, viewer), end=j + 1, words=_words(tokens, mention.start, j + 1))
@@ -341,6 +348,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     if related is not None:
         return related
     i = mention.end
+    if i + 1 < len(tokens) and tokens[i].text == "on_top_of" and not mention.sides:  # "the lever on top of the machine": its top one
+        return replace(mention, sides=(SPATIAL["top"],), end=i + 1, words=_words(tokens, mention.start, i + 1))
     if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of"}:
         return mention
     prep = tokens[i].text

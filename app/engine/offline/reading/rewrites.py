@@ -12,10 +12,12 @@ from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
+    ADVERB_PARTICLES,
     ASIDE_PHRASES,
     ASIDE_WORDS,
     CORRECTION_LEADS,
     CORRECTIONS,
+    DETERMINERS,
     REQUEST_PHRASES,
     SHORTHAND,
     VIEWER_POSSESSIVES,
@@ -26,7 +28,7 @@ _AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
 _STAYING = frozenset({"stays", "stay", "remains", "remain"})
-_AS_IT_IS = frozenset({"still", "put", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed"})
+_AS_IT_IS = frozenset({"still", "put", "alone", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed"})
 
 
 def _kept_as_is(tokens: list[Token], i: int) -> bool:
@@ -97,7 +99,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
             skip = 2  # the rest of "leave X as they are"
             continue
-        if token.text in _STAYING and _kept_as_is(tokens, i):
+        left = token.text == "left" and 0 < i < len(tokens) - 1 and (
+            tokens[i - 1].text not in DETERMINERS and tokens[i - 1].lemma not in VERBS and tokens[i - 1].text.isalpha()) and tokens[i + 1].text in ("where", "alone", "as")
+        if (token.text in _STAYING or left) and _kept_as_is(tokens, i):  # "door left where it is": stays
             token = replace(token, text="stays_put", lemma="stays_put")  # "the plate inside stays still", "door stays shut"
             skip = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in _CLAUSE_BREAKS), len(tokens)) - i - 1
         if token.text in ("untouched", "unmoved", "unchanged") and (i + 1 == len(tokens) or tokens[i + 1].is_punct):
@@ -135,6 +139,10 @@ def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     """Chat shorthand to words ("cn u" -> "can you"): one token per word, the span of the shorthand."""
     out: list[Token] = []
     for token in tokens:
+        if token.text in ADVERB_PARTICLES:
+            word = ADVERB_PARTICLES[token.text]
+            out.append(Token(word, word, token.start, token.end))
+            continue
         full = SHORTHAND.get(token.text) if token.text not in known else None
         if full is None:
             out.append(token)

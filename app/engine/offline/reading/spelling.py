@@ -71,6 +71,12 @@ def domain_words() -> frozenset[str]:
 
 
 @lru_cache(maxsize=1)
+def _targets() -> frozenset[str]:
+    """Words a typo may be corrected to: not unit abbreviations ("Game dev here" is not "deg")."""
+    return domain_words() - {k for table in (LENGTH_UNITS, ANGLE_UNITS, TIME_UNITS) for k in table if len(k) <= 3}
+
+
+@lru_cache(maxsize=1)
 def _english() -> object:
     from spellchecker import SpellChecker
 
@@ -127,7 +133,7 @@ def correct(token: Token, known: frozenset[str]) -> Token:
     lemma, _ = lemma_of(word)
     if lemma in domain_words() or lemma in known:
         return token
-    fixed = suggest(word, domain_words() | known)
+    fixed = suggest(word, _targets() | known)
     if fixed is None:
         return token
     if _is_english(word) and not _rare_beside(word, fixed):
@@ -141,10 +147,12 @@ MUCH_COMMONER = 10
 
 def _rare_beside(word: str, candidate: str) -> bool:
     """A rare English word one slip away from a much commoner domain word is a typo of it ("dor" -> "door",
-    "pul" -> "pull", "trey" -> "tray"); a common word is left alone."""
+    "pul" -> "pull", "trey" -> "tray"); a common word, or a real word two edits away ("basting", not "basin"), is left alone."""
+    from rapidfuzz.distance import OSA
+
     frequency = _english()
     own, other = int(frequency[word]), int(frequency[candidate])  # type: ignore[index]
-    return own < RARE_WORD_COUNT and other >= MUCH_COMMONER * max(own, 1) and candidate in content_words()
+    return OSA.distance(word, candidate) == 1 and own < RARE_WORD_COUNT and other >= MUCH_COMMONER * max(own, 1) and candidate in content_words()
 
 
 @lru_cache(maxsize=1)

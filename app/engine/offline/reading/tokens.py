@@ -41,6 +41,8 @@ _LETTERS = frozenset("abcdefgh")
 """Letters that number steps: "a) close the lid b) ..."."""
 _ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
 """"i.e." / "e.g.": same length, read as a comma (offsets stay put)."""
+_BULLET = re.compile(r"(?m)^([ \t]*)[-*•](?=[ \t])")
+"""A list item's bullet at the start of a line ("- top drawer out 40 cm"): the end of the item before (same length)."""
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
 
@@ -48,6 +50,7 @@ _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
 def _raw_tokens(prompt: str) -> list[Token]:
     lowered = _ABBREVIATIONS.sub(lambda m: "," + " " * (len(m.group(0)) - 1), prompt.lower().replace("’", "'").replace("‘", "'"))
+    lowered = _BULLET.sub(lambda m: m.group(1) + ".", lowered)
     text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
     # the substitution above only inserts spaces: map offsets back to the original prompt
     offsets = _offset_map(lowered, text)

@@ -5,7 +5,7 @@ after its subject ("the lid opens")."""
 from __future__ import annotations
 
 from app.engine.lexicon.verbs import PARTICLES, VERBS
-from app.engine.lexicon.words import DETERMINERS, MODALS, OBJECT_NOUNS, PERSONS, SPATIAL, STATIVE_VERBS
+from app.engine.lexicon.words import DETERMINERS, MODALS, OBJECT_NOUNS, ORDINALS, PERSONS, SPATIAL, STATIVE_VERBS
 from app.engine.offline.reading.token import Token
 
 _SIDE_CUES = frozenset({"out", "in", "back", "open", "shut", "closed", "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise",
@@ -22,15 +22,19 @@ def side_of_part(tokens: list[Token]) -> bool:
     return len(tokens) == 2 or any(t.text in _SIDE_CUES for t in tokens[2:6])  # "Lower knob - turn it ...": the part alone
 
 
-def unknown_verb(token: Token) -> bool:
-    """An imperative verb the lexicon does not know ("jiggle", "nudge"): a base-form verb that is not a part name."""
+_DETERMINING = frozenset({"the", "its", "this", "that", "your", "both", "each", "my"})
+
+
+def unknown_verb(token: Token, following: str = "") -> bool:
+    """An imperative verb the lexicon does not know ("jiggle", "nudge"): a base-form verb that is not a part name
+    (nor an object's name, unless a determiner follows: "sink the toaster lever")."""
     from lemminflect import getAllLemmas
 
     from app.engine.offline.reading.mentions import kind_of_word
 
     word = token.text
-    if not word.isalpha() or word in DETERMINERS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
-            word in OBJECT_NOUNS):  # "bin lid: up to vertical": the object, not "to bin"
+    if not word.isalpha() or word in DETERMINERS or word in ORDINALS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
+            word in OBJECT_NOUNS and following not in _DETERMINING):  # "bin lid: up to vertical": the object, not "to bin"
         return False
     lemmas = getAllLemmas(word)
     return word in lemmas.get("VERB", ())
@@ -44,13 +48,15 @@ def _unknown_verb_form(word: str) -> bool:
 
 def aside(tokens: list[Token]) -> bool:
     """The clause is about a person ("I can put my plate in", "you can reach in") or says what something
-    else may then do ("they can air-dry")."""
+    else may then do ("they can air-dry"), or remarks on the request ("that's the whole anim", "nothing else")."""
     first = tokens[0].text if tokens else ""
     second = tokens[1].text if len(tokens) > 1 else ""
     weather = first == "it's" and second.endswith("ing") and len(tokens) > 1 and tokens[1].lemma not in VERBS  # "it's raining"
     if len(tokens) == 2 and first in ("it", "they") and tokens[1].lemma not in VERBS and _unknown_verb_form(second):
         return True  # "(while) it brews": what the object does, not a part's motion
-    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather
+    remark = first in ("that's", "nothing") or (first in ("that", "this") and second in ("is", "was", "will"))  # "that's the whole anim"
+    remark = remark or (1 < len(tokens) <= 4 and tokens[-1].text == "here")  # "Game dev here - ...": who is asking
+    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather or remark
 
 
 def intransitive(tokens: list[Token], verb_index: int | None) -> bool:
