@@ -93,10 +93,8 @@ def link_poses(
     poses: dict[str, Transforms] = {asset.root_link: root}
     for name in asset.joint_order:
         joint = asset.joints[name]
-        if name in values:
-            local = joint.origin[None] @ joint_motion(joint, values[name])
-        else:  # a fixed joint, or one at its rest value in every frame: the same transform each frame
-            local = np.broadcast_to(at_rest[name], (count, 4, 4))
+        # a joint not driven (fixed, or at its rest value in every frame) has the same (1, 4, 4) local transform each frame
+        local = joint.origin[None] @ joint_motion(joint, values[name]) if name in values else at_rest[name]
         poses[joint.child] = poses[joint.parent] @ local
     return poses
 
