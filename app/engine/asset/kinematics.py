@@ -8,7 +8,7 @@ rotation of the whole object) is pre-multiplied onto every link.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from functools import lru_cache
+from weakref import WeakKeyDictionary
 
 import numpy as np
 
@@ -99,13 +99,20 @@ def link_poses(
     return poses
 
 
-@lru_cache(maxsize=64)
+_REST_LOCALS: WeakKeyDictionary[ArticulatedAsset, dict[str, FloatArray]] = WeakKeyDictionary()
+"""Per asset, as long as the asset lives (a collected asset's GPU buffers are freed: nothing here keeps it)."""
+
+
 def _rest_locals(asset: ArticulatedAsset) -> dict[str, FloatArray]:
     """(1, 4, 4) joint frame motion of every joint at rest (fixed joints: their origin), per asset: the joints a
     call does not drive cost no motion of their own (one joint driven on a large asset was work in its size)."""
-    rest = resolve_joint_values(asset, {}, 1)
-    return {name: (joint.origin[None] @ joint_motion(joint, rest[name]) if joint.movable else joint.origin[None])
-            for name, joint in asset.joints.items()}
+    known = _REST_LOCALS.get(asset)
+    if known is None:
+        rest = resolve_joint_values(asset, {}, 1)
+        known = {name: (joint.origin[None] @ joint_motion(joint, rest[name]) if joint.movable else joint.origin[None])
+                 for name, joint in asset.joints.items()}
+        _REST_LOCALS[asset] = known
+    return known
 
 
 def _driven_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:

@@ -108,6 +108,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("step", S.PRESS, _p(on=S.PRESS, down=S.PRESS, off=S.RELEASE)),
     VerbInfo("stomp", S.PRESS, _p(on=S.PRESS)),
     VerbInfo("stamp", S.PRESS, _p(on=S.PRESS)),
+    VerbInfo("tread", S.PRESS, _p(on=S.PRESS, down=S.PRESS)),
     VerbInfo("tap", S.PRESS),
     VerbInfo("hit", S.PRESS, displaces=True, object_sense=S.MOVE),
     VerbInfo("punch", S.PRESS, _p(**{"in": S.PRESS}), displaces=True, object_sense=S.MOVE),

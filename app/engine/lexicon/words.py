@@ -166,7 +166,7 @@ MULTIWORD: tuple[str, ...] = (
     "like that", "like this", "as wide as", "as high as", "back to the middle", "back to the centre", "back to the center",
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
     "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
-    "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "as it was before", "as it was", "as before",
+    "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "how it was before", "how it was", "how they were", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in that order", "in this order", "to the stop", "to the max", "to the maximum", "in the same direction", "right angle", "rest of the way",
 )
 
@@ -210,7 +210,7 @@ CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"
 """What may come between a correction and its new amount."""
 SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
-    "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "ty": "thanks", "tho": "though",
+    "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
 })
@@ -223,6 +223,8 @@ OPPOSITE_SIDES: Mapping[Side, Side] = MappingProxyType({Side.BOTTOM: Side.TOP, S
                                                          Side.FRONT: Side.BACK, Side.LEFT: Side.RIGHT, Side.RIGHT: Side.LEFT})
 WHOLE_WORDS = frozenset({"whole", "entire", "asset", "model", "body"})
 """Words that name the whole object, never the part a verb works on it ("rotate the whole tap asset": not its handle)."""
+ASPECT_VERBS = frozenset({"starts", "start", "started", "begins", "begin", "began", "continues", "continue"})
+"""Verbs of starting or going on: the verb after them is the motion ("the plate starts turning / begins to turn")."""
 WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
 """What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
 ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})

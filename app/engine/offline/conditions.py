@@ -52,12 +52,14 @@ def condition(builder: Builder, act: Act) -> None:
 
 
 def set_topic(builder: Builder, frame: Frame) -> None:
-    """"The roast is sitting on the middle shelf - get it out to me": a skipped clause that places something on
-    one part makes that part what "it" means next (when nothing else does yet)."""
-    if builder.refs.last or len(frame.instruments) != 1 or frame.instruments[0].kind is None:
+    """"The roast is sitting on the middle shelf - get it out to me", "check on the roast on the top shelf": a skipped
+    clause that places something on one part makes that part what "it" means next (when nothing else does yet)."""
+    places = [*frame.instruments, *(m.owner for m in frame.themes if m.kind is None and not m.is_object and m.owner is not None)]
+    places = [m for m in places if m.kind is not None]
+    if builder.refs.last or len(places) != 1:
         return
     try:
-        found, _ = builder.refs.resolve(frame.instruments[0])
+        found, _ = builder.refs.resolve(places[0])
     except GroundingError:
         return
     if len(found) == 1:

@@ -362,6 +362,9 @@ class Referents:
             return list(self.last_controls)
         if plural and len(self.last) < len(self.group) and all(p in self.group for p in self.last):
             return list(self.group)
+        if plural and len(self.last) == 1 and self.earlier:  # "left drawer out, then the right one, then both back in"
+            before = [p for parts in reversed(self.earlier) for p in parts if p.kind is self.last[0].kind and p not in self.last]
+            return list(dict.fromkeys([*before[:1], *self.last]))
         if shuts and self.last and not any(_shuts(p) for p in self.last):
             return next((list(parts) for parts in reversed(self.earlier) if all(_shuts(p) for p in parts)), list(self.last))
         return list(self.last)

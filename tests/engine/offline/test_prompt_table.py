@@ -533,6 +533,20 @@ ROWS: list[Row] = [
     R("washing_machine_103508", "Third knob from the left on the washer: a quarter turn.", joints={"joint_1": E(moves=True), "joint_2": E(still=True)}),
     R("extra/safe_102380", "Spin the dial one and a half turns, door left alone.", joints={"joint_0": E(moves=True), "joint_2": E(still=True)}),
     R("toilet_102622", "Somebody needs to use the bathroom; raise the lid.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("safe_101564", "Tap the 5 key.", joints={"joint_4": E(moves=True, end=0.0), "joint_3": E(still=True), "joint_5": E(still=True)}),
+    R("extra/storage_25308", "Open the left drawer 20 cm, then the right one 20 cm, then push both back in.",
+      joints={"joint_1": E(peak=0.20, end=0.0), "joint_0": E(peak=0.20, end=0.0)}),
+    R("storage_19179", "top drawer out 10 cm and bottom drawer out 30 cm at the same time", joints={"joint_1": E(end=0.10), "joint_0": E(end=0.30)}),
+    R("refrigerator_11178", "opne both fridge dors", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("extra/storage_20279", "pul the drawr out 10 cm thnx", joints={"joint_0": E(end=0.10)}),
+    R("oven_7138", "Door down to 30 degrees, stays there for 2 s while the music plays, then shuts.", joints={"joint_0": E(peak=0.5236, end=0.0)}),
+    R("trash_can_102181", "Tread on the pedal, keep your foot down for 2 s, then step off.", joints={"joint_0": E(moves=True, end=0.0), "joint_1": E(moves=True, end=0.0)}),
+    R("laptop_10697", "Shut the laptop, then put it back how it was.", joints={"joint_1": E(peak="lower", end=0.0)}),
+    R("extra/microwave_7128", "The door opens, and while it is opening the turntable starts to turn half a turn.",
+      joints={"joint_0": E(end="upper"), "joint_4": E(moves=True)}),  # the plate turns while the door opens (no order)
+    R("extra/oven_7179", "I want to look at the bread on the middle rack - pull it out.", joints={"joint_3": E(end="upper"), "joint_1": E(end="upper")}),
+    R("bottle_cap_3558", "I'd like a drink, so unscrew the cap a quarter turn.", joints={"joint_0": E(moves=True)}),
+    R("kitchen_pot_100038", "Let the steam escape - lift the lid 2 cm.", joints={"joint_0": E(end=0.02)}),
 ]
 
 

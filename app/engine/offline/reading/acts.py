@@ -131,7 +131,7 @@ def _topic(frame: Frame, after: list[Frame]) -> bool:
     """A clause that only names one part, followed by one that works "it"."""
     bare = frame.verb is None and not frame.heading and len(frame.themes) == 1 and not frame.themes[0].is_object and not frame.themes[0].pronoun
     plain = frame.quantities == Quantities() and frame.particle is None and not frame.returning
-    return bare and plain and bool(after) and after[0].verb is not None and any(m.pronoun for m in after[0].themes)
+    return bare and plain and bool(after) and after[0].verb is not None and any(m.pronoun and not m.plural for m in after[0].themes)
 
 
 def _is_subjectless_event(frame: Frame) -> bool:
@@ -144,6 +144,11 @@ def _is_event(frame: Frame) -> bool:
     told_next = frame.marker in ("then", "and_then", "after_that", "next", "finally", "afterwards", "later")
     return (frame.subject_theme and frame.verb is not None and not frame.stative and frame.link is not Link.PURPOSE and not told_next) or (
         frame.let and frame.text.split()[0] in ("watch", "see"))
+
+
+def _progressive_of(frame: Frame, before: Frame) -> bool:
+    """"(the door opens, and while) it is opening": the -ing form of the verb before, said again."""
+    return before.verb is not None and any(w.endswith("ing") and w.startswith(before.verb[:4]) for w in frame.text.split())
 
 
 def _narrated(before: Frame, frame: Frame) -> bool:
@@ -166,6 +171,7 @@ def _corrected(act: Act, frame: Frame) -> Act | None:
 def build_acts(frames: list[Frame]) -> list[Act]:
     acts: list[Act] = []
     pending_wait = 0.0
+    restated = False
     pending_conditions: list[Frame] = []
     previous_goal: Frame | None = None
     measured: Frame | None = None
@@ -195,8 +201,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.let and frame.verb in _IDLE_VERBS and frame.quantities.duration_s is not None and all(m.pronoun or m.is_object for m in frame.themes):
             pending_wait += frame.quantities.duration_s  # "let it run for 4 seconds": time passes, nothing moves
             continue
-        if frame.verb is None and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
-            frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False)  # "..., rests there for 2 s"
+        if (frame.verb is None or frame.sense is VerbSense.HOLD) and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
+            frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False, stative=False)  # "..., rests there for 2 s"
         if frame.verb is None and not frame.themes and frame.quantities.duration_s is not None and set(frame.text.split()) & _PAUSE_NOUNS:
             pending_wait += frame.quantities.duration_s  # "up to vertical, 2 s pause, then ...": a wait, not a manner
             continue
@@ -229,6 +235,13 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue
         if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and acts:
             continue  # "..., so I can put my plate in", "nothing else": why, or a remark, not what
+        if frame.link is Link.PARALLEL and acts and not acts[-1].condition and frame.themes and all(m.pronoun for m in frame.themes) and (
+                (frame.sense is acts[-1].goal.sense and frame.sense is not None) or _progressive_of(frame, acts[-1].goal)):
+            restated = True  # "the door opens, and while it is opening the plate starts turning": the next step runs with it
+            continue
+        if frame.link is Link.PARALLEL and frame.verb is None and frame.themes and all(
+                m.kind is None and not m.is_object and not m.pronoun for m in frame.themes):
+            continue  # "..., while the narrator talks": what else happens meanwhile, not a part's motion
         if frame.stative and COUPLING_WORDS & set(frame.text.split()):
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
         frame = _carry(frame, previous_goal, measured)
@@ -244,7 +257,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
         after_act = bool(acts) and not acts[-1].condition and acts[-1].goal.verb is not None and not acts[-1].goal.aside
         # a summary, a state or a clause about the user has no results of its own
-        if (frame.link is Link.RESULT and after_act) or (_is_event(frame) and after_act and not waits_for and not _narrated(acts[-1].goal, frame)):
+        imperative = frame.verb is not None and not frame.subject_theme and frame.text.split()[0] in (frame.verb, frame.guessed_verb)
+        if (frame.link is Link.RESULT and after_act and not imperative) or (_is_event(frame) and after_act and not waits_for and not _narrated(acts[-1].goal, frame)):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue
         if _is_subjectless_event(frame) and acts and acts[-1].results:
@@ -262,6 +276,11 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.link is Link.PURPOSE and acts and acts[-1].goal.aside and acts[-1].goal.text.split()[0] in _THIRD_PERSONS:
             acts.pop()  # "Someone needs to use the toilet, put the lid up": why (another person's aim), not what
             continue
+        if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and not acts[-1].goal.themes and (
+                acts[-1].goal.verb is None):
+            acts[-1] = replace(acts[-1], goal=replace(frame, link=acts[-1].goal.link))  # "I want to check on the roast ...": the wish is the rest
+            previous_goal = acts[-1].goal
+            continue
         if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and acts[-1].goal.themes and not frame.themes:
             # "I need its drawer to come out 12 inches": the wished part is what the verb after "to" moves
             acts[-1] = replace(acts[-1], goal=replace(frame, themes=acts[-1].goal.themes, subject_theme=True, link=acts[-1].goal.link))
@@ -278,7 +297,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         for condition in pending_conditions:
             acts.append(Act(goal=condition, condition=True))
         pending_conditions = []
-        parallel = frame.link is Link.PARALLEL or ((together or (frame.simultaneous and verbless)) and any(not a.condition for a in acts))
+        parallel = frame.link is Link.PARALLEL or restated or ((together or (frame.simultaneous and verbless)) and any(not a.condition for a in acts))
+        restated = False
         act = Act(goal=frame, parallel=parallel, conjoined=frame.conjoined, wait_before_s=pending_wait)
         pending_wait = 0.0
         if frame.goes_first and acts:

@@ -17,6 +17,7 @@ from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     AFTER,
     ANGLE_UNITS,
+    ASPECT_VERBS,
     BEFORE,
     CAUSATIVES,
     CENTRE_WORDS,
@@ -160,7 +161,7 @@ def _elaboration(current: list[Token]) -> bool:
     """A verbless part-and-amount clause ("the top one a quarter turn clockwise", "the left to 120 degrees")."""
     from app.engine.offline.reading.quantities import read_quantities
 
-    return bool(current) and current[0].text in DETERMINERS and not any(verb_at(current, k, strict=True) for k in range(len(current))) and (
+    return bool(current) and (current[0].text in DETERMINERS or current[0].text in SPATIAL) and not any(verb_at(current, k, strict=True) for k in range(len(current))) and (
         read_quantities(current).amount is not None)
 
 
@@ -235,7 +236,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
                 word == "and" and link is Link.NEGATED and kind_at(tokens, nxt) is not None):  # "without the lid and latches"
             boundary = (Link.SEQUENCE, word, True)
         elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
-                tokens[nxt].text in DETERMINERS):
+                tokens[nxt].text in DETERMINERS or tokens[nxt].text in SPATIAL):  # "bottom drawer out 40 cm and top drawer out 20 cm"
             boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
         elif word == "but" and current and _starts_clause(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"
@@ -253,6 +254,11 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
             boundary = (Link.SEQUENCE, word, False)
+        elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
+                any(t.text.endswith("ing") for t in current[1:]) and _starts_clause(tokens, i)):
+            boundary, nxt = (Link.SEQUENCE, ",", True), i  # "while it's still opening the plate starts turning": a comma left out
+        elif word == "to" and current and current[-1].text in ASPECT_VERBS:
+            boundary = None  # "the plate starts to turn": one verb, not a purpose
         elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current:
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
@@ -315,11 +321,12 @@ def _bare_verb(tokens: list[Token]) -> bool:
 
 def _condition(tokens: list[Token], i: int) -> bool:
     """"while the door is open": a state, not a second action."""
-    for token in tokens[i:i + 8]:
+    for k, token in enumerate(tokens[i:i + 8]):
         if token.is_punct:
             return False
         if token.text in _AUX:
-            return True
+            after = tokens[i + k + 1:i + k + 3]
+            return not any(t.text.endswith("ing") and t.lemma in VERBS for t in after)  # "while it is opening": at the same time
     return False
 
 

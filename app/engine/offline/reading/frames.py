@@ -8,10 +8,11 @@ drawer closes it, "push" the cart moves it): grounding refines it with the theme
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
 from app.engine.lexicon.words import (
+    ASPECT_VERBS,
     CAUSATIVES,
     CENTRE_WORDS,
     DETERMINERS,
@@ -37,7 +38,8 @@ _BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
-                           "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before",
+                           "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before", "how_it_was", "how_it_was_before",
+                           "how_they_were",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
 _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
@@ -132,9 +134,11 @@ def _find_verb(tokens: list[Token]) -> int | None:
             return i
     for i in range(1, len(tokens)):
         token = tokens[i]
-        progressive = token.text.endswith("ing") and tokens[i - 1].text in ("is", "are", "was", "were")
+        progressive = token.text.endswith("ing") and tokens[i - 1].text in ("is", "are", "was", "were", *ASPECT_VERBS)
         if token.lemma in VERBS and token.text != token.lemma and verb_at(tokens, i) and (not token.text.endswith("ing") or progressive):
-            return i  # "the lid opens", "the door swings open" (not "its vent setting": an -ing form alone is no finite verb)
+            return i  # "the lid opens", "the door swings open", "the plate starts turning" (not "its vent setting")
+        if i > 1 and token.lemma in VERBS and tokens[i - 1].text == "to" and tokens[i - 2].text in ASPECT_VERBS:
+            return i  # "the plate begins to turn"
     return None
 
 
@@ -316,6 +320,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         themes = held[:1] or themes  # "I need something from the left drawer": the drawer
     if any(m.head in _BODY_PARTS and m.owner is not None for m in themes):
         themes = [m.owner if m.head in _BODY_PARTS and m.owner is not None else m for m in themes]  # "keep your finger on it": it
+    elif verb in ("keep", "hold") and themes and all(m.head in _BODY_PARTS for m in themes):
+        themes = [replace(themes[0], head="it", kind=None, pronoun=True, modifiers=())]  # "keep your foot down for 3 s": on what it pressed
     if any(m.head not in _CONTAINERS and m.kind is not None for m in themes):
         themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad": the keypad is where
     let = causative or particle == "go"

@@ -168,6 +168,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         elif word in DETERMINERS:
             determiner = True
             possessive = possessive or word in ("its", "their")
+        elif word == "both" and (i + 1 == len(tokens) or tokens[i + 1].text in ("back", "in", "out", "up", "down", "shut", "closed", "open", ",", ".", "together")):
+            return Mention(head="them", pronoun=True, plural=True, start=begin, end=i + 1, words=_words(tokens, begin, i + 1)), i + 1  # "then both back in"
         elif word in COLLECTIVE:
             collective = True
         elif word in OTHER_WORDS:
@@ -233,7 +235,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                           and not (tokens[j].lemma in _OBJECT_WORDS and j + 1 < len(tokens) and tokens[j + 1].text == "'s")
                           and tokens[j].text not in COLLECTIVE and tokens[j].text not in SPATIAL and tokens[j].text not in ORDINALS
                           and tokens[j].text not in SIZES and tokens[j].text not in OTHER_WORDS)
-        plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 for j in range(begin, head_index))
+        plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 and not (j and tokens[j - 1].text in ("the", "this", "that"))
+                                                             for j in range(begin, head_index))  # "2 drawers", not "the 5 key"
         head_word = " ".join(t.lemma for t in head_tokens)
     else:
         head_index, kind, is_object = unknown[-1], None, False

@@ -134,6 +134,9 @@ def correct(token: Token, known: frozenset[str]) -> Token:
     if lemma in domain_words() or lemma in known:
         return token
     fixed = suggest(word, _targets() | known)
+    if fixed is None and word.endswith("s") and len(word) > MIN_LENGTH:
+        single = suggest(word[:-1], _targets() | known)  # "dors" -> "doors": the plural of a misspelt part word
+        fixed = single + "s" if single is not None else None
     if fixed is None:
         return token
     if _is_english(word) and not _rare_beside(word, fixed):
