@@ -35,15 +35,15 @@ def _submit(args: argparse.Namespace) -> int:
     except ValueError as exc:
         err(f"error: {exc}")
         return 2
-    problem = _local_asset_problem(args.asset, args.urdf)
-    if problem is not None:  # before zipping and uploading a folder the server would refuse
-        err(f"error: {problem}")
-        return 1
     client = open_client(args)
     if client is None:
         return 2
     try:
         with client:
+            problem = _local_asset_problem(args.asset, args.urdf)
+            if problem is not None:  # before zipping and uploading a folder the server would refuse
+                err(f"error: {problem}")
+                return 1
             job = client.submit(args.asset, args.prompt, provider=args.provider, fps=args.fps, max_critic_rounds=args.critic_rounds,
                                 preview=args.preview or None, urdf=args.urdf, **models)
             err(f"job {job['id']} {job['status']}: {job['url']}")

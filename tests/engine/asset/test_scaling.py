@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import gc
 import itertools
+import weakref
 from pathlib import Path
 
 import numpy as np
@@ -67,6 +69,16 @@ def test_one_joint_driven_computes_the_motion_of_that_joint_and_its_mimics(tmp_p
     assert motions == ["j10", "j11"]  # j11 mimics j10
     link_poses(asset, {"side": np.array([0.1])})
     assert motions[2:] == ["side"]
+
+
+def test_the_rest_transforms_kept_per_asset_do_not_keep_it_alive(tmp_path: Path) -> None:
+    """A collected asset frees its GPU buffers (tests/engine/render): nothing kept for the kinematics holds it."""
+    asset = chain(tmp_path, 3)
+    link_poses(asset, {"j0": np.array([0.2])})
+    alive = weakref.ref(asset)
+    del asset
+    gc.collect()
+    assert alive() is None
 
 
 def test_the_layout_computes_a_bounded_number_of_motions_per_joint(tmp_path: Path, motions: list[str]) -> None:
