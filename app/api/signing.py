@@ -110,7 +110,7 @@ def verify(secret: bytes, token: str, kind: str) -> TokenClaims:
     if not payload or not signature or len(token) > MAX_TOKEN_CHARS:
         raise Forbidden("malformed token")
     expected = _b64(hmac.new(secret, payload.encode("ascii", "replace"), hashlib.sha256).digest())
-    if not hmac.compare_digest(expected, signature):
+    if not hmac.compare_digest(expected.encode("ascii"), signature.encode("utf-8", "replace")):  # str compare refuses non-ASCII
         raise Forbidden("invalid token: the signature does not match (altered or from another server)")
     try:
         claims = json.loads(_unb64(payload))

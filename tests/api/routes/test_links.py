@@ -51,6 +51,13 @@ def test_altered_token_is_403(http, alice, finished) -> None:
     assert http.get(path.split("?")[0]).status_code == 422  # no token at all
 
 
+def test_a_signature_with_non_ascii_characters_is_403_not_500() -> None:
+    """Found by schemathesis: ``?token=0.\x80`` was a TypeError in hmac.compare_digest (a 500)."""
+    for token in ("0.\x80", "e30.sig\u00e9", "\u00e9.\u00e9"):
+        with pytest.raises(signing.Forbidden, match="signature does not match"):
+            signing.verify(b"secret", token, "file")
+
+
 def test_expired_token_is_403(http, alice, settings, finished, monkeypatch) -> None:
     link = _links(http, alice.headers, finished, names=["animation.glb"], expires_in_s=30).json()["links"][0]["url"]
     path = "/" + link.split("/", 3)[3]
