@@ -84,11 +84,20 @@ def _turned(axis: tuple[float, float, float], yaw: float) -> tuple[float, float,
     return (round(c * x - s * y, 6) + 0.0, round(s * x + c * y, 6) + 0.0, z)
 
 
+def _pivot(obj: ObjectGeometry) -> tuple[float, float, float]:
+    """Where the object turns: about its own origin's vertical axis (as Blender and a robot's base frame do) when the
+    origin lies within its footprint, else about the centre of its box."""
+    c, half = obj.center, obj.extents / 2.0
+    if abs(float(c[0])) <= float(half[0]) and abs(float(c[1])) <= float(half[1]):
+        return (0.0, 0.0, float(c[2]))
+    return (float(c[0]), float(c[1]), float(c[2]))
+
+
 def object_motion(frame: Frame, obj: ObjectGeometry, yaw: float = 0.0) -> ObjectMotion:
     """The base motion a whole-object frame asks for (``yaw``: how far the object has turned so far)."""
     quantities = frame.quantities
     notes: list[str] = []
-    pivot = (float(obj.center[0]), float(obj.center[1]), float(obj.center[2]))
+    pivot = _pivot(obj)
     if is_yaw(frame):
         angle = quantities.amount.value if quantities.amount is not None and quantities.amount.unit == "rad" else None
         if angle is None:

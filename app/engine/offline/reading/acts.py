@@ -194,8 +194,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
         if _topic(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
-        if frame.text.startswith("of ") and frame.themes and index + 1 < len(frames):
-            frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist the middle one"
+        if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):
+            frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist ...", "On the keypad, tap ..."
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
         if frame.let and frame.verb in _IDLE_VERBS and frame.quantities.duration_s is not None and all(m.pronoun or m.is_object for m in frame.themes):

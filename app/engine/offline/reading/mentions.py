@@ -33,7 +33,7 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
-from app.engine.offline.reading.part_words import kind_at, kind_of_word
+from app.engine.offline.reading.part_words import kind_at, kind_of_word, side_run
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb, verb_ing
 
 __all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
@@ -363,6 +363,9 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
         return mention
     word = tokens[j].text
     nxt = tokens[j + 1].text if j + 1 < len(tokens) else ""
+    run, end = side_run(tokens, j)
+    if run and prep in ("on", "at", "in"):  # "the key in the bottom-left corner", "the knob at the top right"
+        return replace(mention, sides=(*mention.sides, *run), end=end, words=_words(tokens, mention.start, end))
     if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
         return _lined(mention, nxt, _line_index(word), j + 2, tokens)
     if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one")):

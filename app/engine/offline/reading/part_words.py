@@ -6,6 +6,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from app.engine.lexicon.kinds import REGISTRY, PartKind
+from app.engine.lexicon.words import SPATIAL, Side
 from app.engine.offline.reading.token import Token
 
 
@@ -31,3 +32,19 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
         if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
             return kind, n
     return None
+
+
+_PLACE_NOUNS = frozenset({"corner", "side", "end", "edge"})
+
+
+def side_run(tokens: list[Token], j: int) -> tuple[tuple[tuple[Side, bool], ...], int]:
+    """Two or more side words from ``j`` ("bottom left", "bottom-left", "top right corner"): (the sides, where the run
+    ends, past a closing "corner"/"side"); one side word alone is not a run (``((), j)``)."""
+    sides: list[tuple[Side, bool]] = []
+    k = j
+    while k < len(tokens) and all(part in SPATIAL for part in tokens[k].text.split("-")):
+        sides.extend(SPATIAL[part] for part in tokens[k].text.split("-"))
+        k += 1
+    if len(sides) < 2:
+        return (), j
+    return tuple(sides), k + (k < len(tokens) and tokens[k].text in _PLACE_NOUNS)

@@ -50,6 +50,12 @@ _SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", 
 _VIEWER_WORDS = frozenset({"me", "you", "us", "viewer", "camera", "user"})
 
 
+def _viewer_after(tokens: list[Token], i: int) -> bool:
+    """"(closer) to me", "(nearer) the camera": the viewer follows."""
+    words = [t.text for t in tokens[i:i + 3] if t.text not in ("to", "the")]
+    return bool(words) and words[0] in _VIEWER_WORDS
+
+
 def _side_after(tokens: list[Token], j: int) -> str | None:
     """"(toward) the front / the back of the bucket / the left side": a side of the object as a direction."""
     while j < len(tokens) and tokens[j].text in ("the", "its", "their", "it's"):
@@ -283,6 +289,8 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         if token.text == "away" and nxt is not None and nxt.text == "from" and i + 2 < len(tokens) and (
                 tokens[i + 2].text in _VIEWER_WORDS or (tokens[i + 2].text == "the" and i + 3 < len(tokens) and tokens[i + 3].text in _VIEWER_WORDS)):
             values.setdefault("direction", "backward")  # "push it 20 cm away from me"
+        if token.text in ("closer", "nearer", "near") and _viewer_after(tokens, i + 1):
+            values.setdefault("direction", "forward")  # "10 cm closer to me", "near to me"
         if token.text in _SIDE_PREPS and nxt is not None:
             side = _side_after(tokens, i + 1)
             if side is not None and "direction" not in values:

@@ -187,7 +187,9 @@ def same_words(tokens: list[Token]) -> list[Token]:
     for i, t in enumerate(tokens):
         before = tokens[i - 1].text if i else ""
         after = tokens[i + 1].text if i + 1 < len(tokens) else ""
-        if (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
+        if t.text == "on" and after in VIEWER_POSSESSIVES and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES:
+            t = replace(t, text="to", lemma="to")  # "25 cm on my right side": to my right
+        elif (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
             t = replace(t, text="the", lemma="the")
         elif t.number == 2 and t.text == "2" and after in _TO and before not in ("", ",", ".", "and"):
             t = Token("to", "to", t.start, t.end, corrected_from="2")
