@@ -3,7 +3,13 @@ Celery worker) in a temporary data folder, and Debian's Chromium driven by Playw
 Python (``/usr/bin/chromium``, headless; never a downloaded browser build).
 
 Every page must work offline: requests to any host but the server are aborted and fail the
-test. Screenshots go to ``out/test-artifacts/web/`` (kept after the run).
+test. Screenshots go to ``out/test-artifacts/web/`` (kept after the run);
+``ARTIMO_UPDATE_DOCS_SCREENSHOT=1`` also copies the main one over ``docs/page.png`` (the
+README's picture, left alone otherwise; see test_page.py).
+
+One server and one browser serve the whole session (each module opens its own page), so
+jobs, assets and batches made by one module are seen by the others: tests look for their
+own by id or by a prompt or name of their own.
 """
 
 from __future__ import annotations
@@ -76,7 +82,7 @@ def _wait_ready(url: str, process: subprocess.Popen[str]) -> None:
     raise AssertionError(f"{url} not ready after {SERVE_TIMEOUT_S:.0f} s")
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def served(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Served]:
     """``artimo serve`` as a user starts it; the page link is read from what it prints."""
     data_dir = tmp_path_factory.mktemp("web-data")
@@ -104,7 +110,7 @@ def served(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Served]:
             process.wait(10)
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def browser() -> Iterator[Any]:
     if not CHROMIUM.is_file():
         pytest.fail("Debian's Chromium is missing: apt-get install chromium (make test installs it)")
@@ -154,3 +160,13 @@ def probe(browser: Any, served: Served) -> Iterator[PageProbe]:
     yield probe
     probe.context.close()
     probe.check_clean()
+
+
+@pytest.fixture(scope="session")
+def finished_job(served: Served) -> dict[str, Any]:
+    """A succeeded job of the pedal bin, submitted through the API (as the job's JSON)."""
+    from tests.web.pages import PROMPT, submit_job, wait_finished
+
+    job = wait_finished(served, submit_job(served, PROMPT)["id"])
+    assert job["status"] == "succeeded", job
+    return job

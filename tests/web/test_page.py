@@ -7,49 +7,25 @@ The tests share one page and run in order (each step builds on the one before).
 
 from __future__ import annotations
 
-import io
 import json
+import os
+import shutil
 import time
 from typing import Any
 
 import httpx
 import numpy as np
 import pytest
-from PIL import Image
 
 from tests.web.conftest import REPO, PageProbe, Served
+from tests.web.pages import BACKGROUND, JOB_TIMEOUT_MS, PEDAL_URDF, PROMPT, pixels, set_time, status_is, trajectory
 
-PEDAL_URDF = REPO / "examples" / "pedal_bin" / "pedal_bin.urdf"
-PROMPT = "press the pedal to open the bin"
-JOB_TIMEOUT_MS = 90_000
-BACKGROUND = np.array([0xE9, 0xED, 0xF3])
 NEW_LID_TARGET = -0.7
+DOCS_SCREENSHOT = REPO / "docs" / "page.png"
+UPDATE_DOCS_SCREENSHOT = "ARTIMO_UPDATE_DOCS_SCREENSHOT"
+"""Set to 1 to copy the page's screenshot over docs/page.png, the README's picture (it is
+left alone otherwise): ``ARTIMO_UPDATE_DOCS_SCREENSHOT=1 pytest tests/web``."""
 state: dict[str, Any] = {}
-
-
-def _pixels(png: bytes) -> np.ndarray:
-    return np.asarray(Image.open(io.BytesIO(png)).convert("RGB")).astype(int)
-
-
-def _status_is(page: Any, word: str, timeout: int = JOB_TIMEOUT_MS) -> None:
-    page.wait_for_function(
-        "word => (document.querySelector('[data-testid=job-status]')?.textContent || '').trim().endsWith(word)",
-        arg=word, timeout=timeout,
-    )
-
-
-def _set_time(page: Any, t: float) -> None:
-    page.eval_on_selector(
-        "[data-testid=scrubber]",
-        "(el, t) => { el.value = String(t); el.dispatchEvent(new Event('input', {bubbles: true})); }", t,
-    )
-    page.evaluate("() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))")  # drawn
-
-
-def _trajectory(served: Served, job_id: str) -> list[dict[str, Any]]:
-    with served.client() as client:
-        text = client.get(f"/v1/animations/{job_id}/trajectory.jsonl").raise_for_status().text
-    return [json.loads(line) for line in text.splitlines() if line.strip()]
 
 
 def test_sign_in_upload_submit_and_follow_progress(probe: PageProbe, served: Served) -> None:
@@ -63,9 +39,9 @@ def test_sign_in_upload_submit_and_follow_progress(probe: PageProbe, served: Ser
     page.click("[data-testid=submit]")
     page.wait_for_function("() => location.hash.startsWith('#/jobs/')")
     state["job_id"] = page.url.rsplit("/", 1)[1]
-    _status_is(page, "running")
+    status_is(page, "running")
     probe.shot("01-running")
-    _status_is(page, "succeeded")
+    status_is(page, "succeeded")
     page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
     assert "(events)" in page.text_content("[data-testid=job-status]"), "progress did not come from the event stream"
     assert PROMPT in page.text_content("[data-testid=jobs-list]")
@@ -75,25 +51,25 @@ def test_sign_in_upload_submit_and_follow_progress(probe: PageProbe, served: Ser
 def test_canvas_shows_the_asset_and_the_scrubber_changes_it(probe: PageProbe) -> None:
     page = probe.page
     canvas = page.locator("[data-testid=viewer-canvas]")
-    _set_time(page, 0.0)
-    start = _pixels(canvas.screenshot())
+    set_time(page, 0.0)
+    start = pixels(canvas.screenshot())
     probe.shot("03-canvas-start", canvas)
     drawn = np.abs(start - BACKGROUND).sum(axis=2) > 30
     assert drawn.mean() > 0.05, f"the canvas is almost blank ({drawn.mean():.3f} of its pixels drawn)"
     end_time = float(page.get_attribute("[data-testid=scrubber]", "max"))
-    _set_time(page, end_time)
-    end = _pixels(canvas.screenshot())
+    set_time(page, end_time)
+    end = pixels(canvas.screenshot())
     probe.shot("04-canvas-end", canvas)
     changed = np.abs(end - start).sum(axis=2) > 30
     assert changed.mean() > 0.005, f"moving the scrubber to the end changed only {changed.mean():.4f} of the picture"
 
 
-def test_joint_panel_follows_the_trajectory(probe: PageProbe, served: Served) -> None:
+def test_joint_panel_follows_thetrajectory(probe: PageProbe, served: Served) -> None:
     page = probe.page
-    frames = _trajectory(served, state["job_id"])
+    frames = trajectory(served, state["job_id"])
     step = frames[1]["time_s"] - frames[0]["time_s"]
     for t in (0.2, 0.45, 0.9, frames[-1]["time_s"]):
-        _set_time(page, t)
+        set_time(page, t)
         expected = frames[min(round(t / step), len(frames) - 1)]
         assert page.get_attribute("[data-testid=joint-panel]", "data-frame") == str(expected["frame_idx"])
         rows = page.eval_on_selector_all("[data-testid=joint-panel] tr[data-joint]", "rows => rows.map(r => [r.dataset.joint, Number(r.dataset.value)])")
@@ -103,7 +79,7 @@ def test_joint_panel_follows_the_trajectory(probe: PageProbe, served: Served) ->
 
 def test_play_pause_and_speed(probe: PageProbe) -> None:
     page = probe.page
-    _set_time(page, 0.0)
+    set_time(page, 0.0)
     page.select_option("[data-testid=speed]", "0.5")
     ratio, playing = page.evaluate("""async () => {
         const button = document.querySelector('[data-testid=play]');
@@ -124,20 +100,23 @@ def test_play_pause_and_speed(probe: PageProbe) -> None:
 
 def test_hover_names_and_highlights_a_link(probe: PageProbe) -> None:
     page = probe.page
-    _set_time(page, 1.0)
+    set_time(page, 1.0)
     canvas = page.locator("[data-testid=viewer-canvas]")
     box = canvas.bounding_box()
     page.mouse.move(box["x"] + 2, box["y"] + 2)
     page.wait_for_timeout(200)
-    before = _pixels(canvas.screenshot())
+    before = pixels(canvas.screenshot())
     spot = page.evaluate("artimoPlayer.linkScreenPosition('pedal')")
     page.mouse.move(box["x"] + spot["x"], box["y"] + spot["y"])
     page.wait_for_function("() => document.querySelector('.viewer').dataset.hoveredLink === 'pedal'")
     assert "pedal_pivot" in page.text_content(".viewer .tip")
-    after = _pixels(canvas.screenshot())
+    after = pixels(canvas.screenshot())
     probe.shot("05-hover-pedal", canvas)
     page.evaluate("window.scrollTo(0, 0)")
-    probe.shot("page", full_page=False)  # the README's picture (docs/page.png is a copy)
+    shot = probe.shot("page", full_page=False)  # the README's picture
+    if os.environ.get(UPDATE_DOCS_SCREENSHOT) == "1":
+        shutil.copyfile(shot, DOCS_SCREENSHOT)
+        assert DOCS_SCREENSHOT.read_bytes() == shot.read_bytes()
     assert (np.abs(after - before).sum(axis=2) > 30).mean() > 0.001, "the hovered link is not highlighted"
     page.mouse.move(box["x"] + 2, box["y"] + 2)
 
@@ -214,16 +193,16 @@ def test_edit_a_target_and_run_it_as_a_new_job(probe: PageProbe, served: Served)
     with served.client() as client:
         page.wait_for_function("old => location.hash.startsWith('#/jobs/') && !location.hash.includes(old)", arg=state["job_id"])
     new_id = page.url.rsplit("/", 1)[1]
-    _status_is(page, "succeeded")
+    status_is(page, "succeeded")
     page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
-    frames = _trajectory(served, new_id)
+    frames = trajectory(served, new_id)
     assert frames[-1]["joint_angles"]["lid_hinge"] == pytest.approx(NEW_LID_TARGET)
-    assert _trajectory(served, state["job_id"])[-1]["joint_angles"]["lid_hinge"] != pytest.approx(NEW_LID_TARGET)
+    assert trajectory(served, state["job_id"])[-1]["joint_angles"]["lid_hinge"] != pytest.approx(NEW_LID_TARGET)
     with served.client() as client:
         report = client.get(f"/v1/animations/{new_id}/report.json").json()
     assert report["provider"] == "plan" and "no perceiver" in report["final_state"]
     assert "a plan job skips the perceiver" in page.text_content("[data-testid=explain]")
-    _set_time(page, frames[-1]["time_s"])
+    set_time(page, frames[-1]["time_s"])
     probe.shot("08-plan-job")
 
 
@@ -270,7 +249,7 @@ def test_a_failed_job_says_why(probe: PageProbe, served: Served) -> None:
         files = [("asset", ("pedal_bin/pedal_bin.urdf", PEDAL_URDF.read_bytes()))]
         job = client.post("/v1/animations", data={"prompt": "spin the propeller"}, files=files).json()
     page.goto(f"{served.url}/#/jobs/{job['id']}")
-    _status_is(page, "failed")
+    status_is(page, "failed")
     page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
     error = page.text_content("#main .error")
     assert "GroundingError" in error and "propeller" in error
@@ -289,7 +268,7 @@ def test_progress_falls_back_to_polling_without_the_event_stream(browser: Any, s
             files = [("asset", ("pedal_bin/pedal_bin.urdf", PEDAL_URDF.read_bytes()))]
             job = client.post("/v1/animations", data={"prompt": PROMPT}, files=files).json()
         page.goto(f"{served.url}/#/jobs/{job['id']}")
-        _status_is(page, "succeeded")
+        status_is(page, "succeeded")
         assert "(polling)" in page.text_content("[data-testid=job-status]")
         page.wait_for_selector("#main[data-loaded=true]", timeout=JOB_TIMEOUT_MS)
     finally:
