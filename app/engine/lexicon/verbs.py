@@ -149,6 +149,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("set", S.TURN, _p(down=S.LOWER, back=S.RETURN)),
     VerbInfo("swivel", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("pivot", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("yaw", S.YAW, object_sense=S.YAW),  # about the vertical axis: the whole object
     VerbInfo("angle", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("spin", S.SPIN, _p(around=S.SPIN, round=S.SPIN), object_sense=S.YAW),
     VerbInfo("revolve", S.SPIN),
@@ -162,6 +163,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("lift", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("raise", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("hoist", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("levitate", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("elevate", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("elevate", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("pick", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("lower", S.LOWER, _LOWERING, object_sense=S.MOVE),

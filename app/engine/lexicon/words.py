@@ -93,7 +93,7 @@ LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little
 SPEEDS: Mapping[str, float] = MappingProxyType({
     # duration multiplier
     "slowly": 2.0, "slow": 2.0, "gently": 1.5, "carefully": 1.5, "gradually": 2.0, "leisurely": 2.0, "softly": 1.5,
-    "quickly": 0.5, "fast": 0.5, "rapidly": 0.5, "swiftly": 0.5, "briskly": 0.6, "suddenly": 0.4, "quick": 0.5,
+    "quickly": 0.5, "fast": 0.5, "rapidly": 0.5, "swiftly": 0.5, "briskly": 0.6, "suddenly": 0.4, "quick": 0.5, "real_quick": 0.5, "real_fast": 0.5, "real_slow": 2.0,
     "abruptly": 0.4, "vigorously": 0.5, "hard": 0.7, "firmly": 0.9, "smoothly": 1.2, "sharply": 0.5,
 })
 ROTATION_SENSE: Mapping[str, str] = MappingProxyType({
@@ -155,7 +155,7 @@ MULTIWORD: tuple[str, ...] = (
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
     "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
-    "on top of", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
+    "on top of", "real quick", "real fast", "real slow", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
@@ -277,7 +277,8 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
-                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "same", "extension", "like_that", "like_this", "animating", "animation", "moving", "movement"})
+                        "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "same", "extension", "pose", "target", "shot", "take", "scene", "clip", "anim", "loop", "keyframe", "frame", "camera",
+                        "dev", "developer", "game", "render", "rig", "tutorial", "cutscene", "storyboard", "narrator", "demo", "like_that", "like_this", "animating", "animation", "moving", "movement"})
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})

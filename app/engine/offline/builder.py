@@ -223,7 +223,8 @@ class Builder:
             controls = self._instrument_controls(goal)
         effects_parts, effect_words = self.ground(goal, sense, goal.themes, prefer=prefer)
         if not effects_parts and not goal.themes and not controls:
-            effects_parts = self.refs.pronoun(release=sense is VerbSense.RELEASE)
+            effects_parts = self.refs.pronoun(release=sense is VerbSense.RELEASE) or (
+                self._object_parts(goal, sense) if goal.verb in VERBS and VERBS[goal.verb].implies else [])  # "flush!"
             effect_words = ["it"] * len(effects_parts)
         if not effects_parts and not controls:
             raise self.refs.refuse(f"nothing in '{goal.text}' names a part to move")
@@ -261,7 +262,7 @@ class Builder:
             if self.refs.last_object:
                 return moves_object(frame, pronoun=True, after_part=False) or frame.returning
             after_part = bool(self.refs.last)
-            return moves_object(frame, pronoun=True, after_part=after_part) and (after_part or not self.parts or frame.verb in ("push", "move"))
+            return moves_object(frame, pronoun=True, after_part=after_part) and (after_part or not self.parts or frame.verb in ("push", "move", "yaw"))
         return False
 
     def _same_object(self, mention: Mention) -> None:

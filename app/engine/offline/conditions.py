@@ -26,6 +26,9 @@ def condition(builder: Builder, act: Act) -> None:
     if frame.heading:
         builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
         builder.refs.scene = next((m.sides for m in frame.themes if m.is_object and m.sides), builder.refs.scene)  # "top oven:"
+        if frame.themes and all(m.is_object for m in frame.themes):
+            builder.refs.last_object = True  # "Chest: slide it 60 cm forward": the object named as a topic is "it"
+            return
         if any(not m.is_object for m in frame.themes):
             frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))
         try:

@@ -547,6 +547,22 @@ ROWS: list[Row] = [
     R("extra/oven_7179", "I want to look at the bread on the middle rack - pull it out.", joints={"joint_3": E(end="upper"), "joint_1": E(end="upper")}),
     R("bottle_cap_3558", "I'd like a drink, so unscrew the cap a quarter turn.", joints={"joint_0": E(moves=True)}),
     R("kitchen_pot_100038", "Let the steam escape - lift the lid 2 cm.", joints={"joint_0": E(end=0.02)}),
+    # --- blind dev probe, round 10 (benchmark/probes/dev_round10_prompts.jsonl): classes fixed, rephrased ---
+    R("storage_27044", "animator here, I need the drawer all the way out", joints={"joint_0": E(end="upper")}),
+    R("door_8877", "Door: shut it, wait 1 s, then back to the start pose.", joints={"joint_1": E(peak="lower", end=0.0)}),
+    R("box_102456", "Levitate the chest 10 cm.", base=(0.0, 0.0, 0.10)),
+    R("stapler_103099", "yaw the stapler 90 degrees", yaw_deg=90.0, joints={"joint_0": E(still=True)}),
+    R("bucket_100454", "Bucket: yaw it 90 degrees on the spot.", yaw_deg=90.0),
+    R("toilet_102622", "toilet - lift the lid", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("safe_101593", "Make the door to open, please.", joints={"joint_0": E(end="upper")}),
+    R("coffee_machine_103030", "Nudge the reservoir up 2 cm.", joints={"joint_1": E(end=0.02)}),
+    R("toilet_102622", "Flush.", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
+    R("coffee_machine_103030", "Dial on the front: half a rotation.", joints={"joint_0": E(moves=True), "joint_1": E(still=True)}),
+    R("extra/safe_102380", "Combination dial -> half a revolution.", joints={"joint_0": E(abs_end=3.1416), "joint_2": E(still=True)}),
+    R("toaster_103477", "turn the browning control 90 degrees", joints={"joint_0": E(moves=True)}),
+    R("extra/safe_101612", "Spin the combination wheel a quarter rotation.", joints={"joint_1": E(moves=True)}),
+    R("microwave_7304", "open the microwave real quick, then close it", joints={"joint_1": E(peak="upper", end=0.0)}),
+    R("microwave_7236", "opn teh dore all the way", joints={"joint_0": E(end="upper")}),
 ]
 
 

@@ -192,6 +192,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             # "the left to 120 degrees, the right to 60": the unit of the one before
             amount = replace(measured.quantities.amount, value=abs(frame.quantities.target) * 3.141592653589793 / 180.0, words=f"{frame.quantities.target:g}")
             frame = replace(frame, quantities=replace(frame.quantities, amount=amount))
+        if frame.verb is None and frame.themes and all(m.is_object for m in frame.themes) and frame.quantities == Quantities() and (
+                frame.particle is None and index + 1 < len(frames) and frames[index + 1].verb is not None and frames[index + 1].themes):
+            frame = replace(frame, heading=True)  # "toilet - put the cover up": the object named as a topic, not worked
         if _topic(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
         if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):

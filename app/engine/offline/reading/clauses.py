@@ -116,6 +116,9 @@ _PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
 _STAYS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 
 
+_CAUSING = frozenset({"make", "have", "help", "cause", "allow"})
+
+
 def _starts_clause(tokens: list[Token], i: int) -> bool:
     """A new clause starts at ``i`` (after "and" / a comma): a verb, or a subject followed by a verb."""
     j = i
@@ -257,6 +260,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
                 any(t.text.endswith("ing") for t in current[1:]) and _starts_clause(tokens, i)):
             boundary, nxt = (Link.SEQUENCE, ",", True), i  # "while it's still opening the plate starts turning": a comma left out
+        elif word == "to" and any(not t.is_punct for t in current) and next(t for t in current if not t.is_punct).lemma in _CAUSING and nxt < len(tokens) and (
+                verb_at(tokens, nxt, strict=True)):
+            i += 1  # "make the safe door to open": make it open (the "to" of a learner's causative)
+            continue
         elif word == "to" and current and current[-1].text in ASPECT_VERBS:
             boundary = None  # "the plate starts to turn": one verb, not a purpose
         elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current:

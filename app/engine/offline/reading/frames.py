@@ -28,6 +28,7 @@ from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 from app.engine.offline.reading.verb_cues import aside, side_of_part, unknown_verb
@@ -278,8 +279,9 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
     named_side = (clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL) or side_of_part(tokens)
-    if verb_index == 0 and named_side:
-        verb_index = None  # "Lower knob: give it a 45 degree turn", "lower drawer out 0.5 m": "lower" is the part's side
+    if verb_index == 0 and (named_side or (clause.heading and kind_of_word(tokens[0].text) is not None and (
+            len(tokens) == 1 or tokens[1].text in ("on", "at", "in", "of", "near", "by", "nearest", "closest")))):
+        verb_index = None  # "Dial on the front: one full rotation": the part, not the verb  # "Lower knob: give it a 45 degree turn", "lower drawer out 0.5 m": "lower" is the part's side
     verb = tokens[verb_index].lemma if verb_index is not None else None
     guessed = None
     if verb_index is None and len(tokens) > 1 and tokens[1].text in ("it", "them") and tokens[0].text.isalpha() and tokens[0].text not in DETERMINERS and (

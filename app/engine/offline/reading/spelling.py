@@ -92,7 +92,7 @@ def _budget(word: str) -> int:
     return 1 if len(word) <= 5 else 2
 
 
-def suggest(word: str, vocabulary: frozenset[str]) -> str | None:
+def suggest(word: str, vocabulary: frozenset[str], budget: int | None = None) -> str | None:
     """The closest word of ``vocabulary`` within the edit budget, else ``None``.
 
     Ties on the edit distance go to a word with the same letters (a swap: "opne" -> "open"),
@@ -101,7 +101,7 @@ def suggest(word: str, vocabulary: frozenset[str]) -> str | None:
     """
     from rapidfuzz.distance import OSA, JaroWinkler
 
-    budget = _budget(word)
+    budget = _budget(word) if budget is None else budget
     scored: list[tuple[int, bool, float, int, str]] = []
     for candidate in vocabulary:
         if abs(len(candidate) - len(word)) > budget or len(candidate) < MIN_LENGTH:
@@ -169,3 +169,24 @@ def content_words() -> frozenset[str]:
     words.update(OBJECT_NOUNS)
     words.update(w for w in SPATIAL if w.isalpha())
     return frozenset(words)
+
+
+@lru_cache(maxsize=1)
+def _nouns() -> frozenset[str]:
+    """Part and object nouns of the lexicon (single words)."""
+    words = {w for entry in REGISTRY.values() for phrase in entry.words for w in phrase.replace("-", " ").split()}
+    return frozenset(w for w in words | set(OBJECT_NOUNS) if w.isalpha() and len(w) >= MIN_LENGTH + 1)
+
+
+def correct_noun(token: Token, known: frozenset[str]) -> Token:
+    """After a determiner a part or an object is expected: "the dore" is "the door" (two edits away), not "done"."""
+    typed = token.corrected_from or token.text
+    if token.text in SPATIAL or token.text in ORDINALS or token.text in SIZES or token.text in OTHER_WORDS or token.text in COLLECTIVE:
+        return token  # "the rihgt" -> "the right": a side may follow a determiner
+    if len(typed) < MIN_LENGTH + 1 or typed in known or token.text in _nouns() or token.text in known or (
+            token.corrected_from is None and (typed in domain_words() or _is_english(typed))):
+        return token
+    fixed = suggest(typed, _nouns() | known, budget=2)
+    if fixed is None or fixed == token.text:
+        return token
+    return replace(token, text=fixed, lemma=fixed, corrected_from=typed)

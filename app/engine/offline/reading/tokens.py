@@ -17,6 +17,7 @@ from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import DENOMINATORS, MULTIWORD, NUMBER_WORDS
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
 
@@ -70,7 +71,7 @@ def _raw_tokens(prompt: str) -> list[Token]:
             continue
         if kind == "arrow":  # "drawer: half open -> pause -> closed": then; "door -> open it": a heading
             segment = list(itertools.takewhile(lambda t: not (t.is_sentence_end or t.text in (":", "then")), reversed(tokens)))
-            verbless = bool(segment) and not any(t.text in VERBS for t in segment)
+            verbless = bool(segment) and not any(t.text in VERBS and (t is segment[-1] or kind_of_word(t.text) is None) for t in segment)  # "combination dial ->"
             tokens.append(Token(":" if verbless else "then", ":" if verbless else "then", start, end))
             continue
         if depth:
@@ -276,9 +277,11 @@ def verb_ing(word: str) -> bool:
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
-    from app.engine.offline.reading.spelling import correct
+    from app.engine.offline.reading.spelling import correct, correct_noun
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in expand(_raw_tokens(prompt), known)]
+    tokens = [correct_noun(t, known) if k and tokens[k - 1].text in ("the", "its", "this", "that") and t.text.isalpha() else t
+              for k, t in enumerate(tokens)]  # "the dore": a part is expected
     tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(same_words(tokens))))))
     out = []
     for token in tokens:
