@@ -224,7 +224,7 @@ class Builder:
         effects_parts, effect_words = self.ground(goal, sense, goal.themes, prefer=prefer)
         if not effects_parts and not goal.themes and not controls:
             effects_parts = self.refs.pronoun(release=sense is VerbSense.RELEASE) or (
-                self._object_parts(goal, sense) if goal.verb in VERBS and VERBS[goal.verb].implies else [])  # "flush!"
+                self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else [])  # "flush!"
             effect_words = ["it"] * len(effects_parts)
         if not effects_parts and not controls:
             raise self.refs.refuse(f"nothing in '{goal.text}' names a part to move")
