@@ -82,7 +82,7 @@ def _wait_ready(url: str, process: subprocess.Popen[str]) -> None:
     raise AssertionError(f"{url} not ready after {SERVE_TIMEOUT_S:.0f} s")
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def served(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Served]:
     """``artimo serve`` as a user starts it; the page link is read from what it prints."""
     data_dir = tmp_path_factory.mktemp("web-data")
@@ -110,8 +110,10 @@ def served(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Served]:
             process.wait(10)
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def browser() -> Iterator[Any]:
+    """One Chromium for the browser tests, closed after the last of them: Playwright's sync API keeps an event loop
+    running while it is open, which would break ``asyncio.run`` in the test packages after this one."""
     if not CHROMIUM.is_file():
         pytest.fail("Debian's Chromium is missing: apt-get install chromium (make test installs it)")
     from playwright.sync_api import sync_playwright
@@ -162,7 +164,7 @@ def probe(browser: Any, served: Served) -> Iterator[PageProbe]:
     probe.check_clean()
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope="package")
 def finished_job(served: Served) -> dict[str, Any]:
     """A succeeded job of the pedal bin, submitted through the API (as the job's JSON)."""
     from tests.web.pages import PROMPT, submit_job, wait_finished
