@@ -24,7 +24,7 @@ _OBJECT_ONLY = frozenset({"roll", "drag", "carry", "pick", "transport", "drive",
                           "nudge", "scoot", "relocate", "reposition", "hoist", "coast"})
 _PULLING = frozenset({"pull", "drag", "tow", "haul", "yank", "tug", "draw"})
 _COASTING = frozenset({"coast", "glide", "roll"})
-_IN_PLACE = frozenset({"table", "floor", "spot", "place", "ground", "counter", "axis", "itself", "vertical"})
+_IN_PLACE = frozenset({"table", "floor", "spot", "place", "ground", "counter", "axis", "itself", "vertical", "on_the_spot", "in_place", "where_it_stands"})
 
 
 @dataclass(frozen=True)
@@ -38,8 +38,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
     if frame.verb is None or frame.sense is None:
         return False
     info = VERBS.get(frame.verb)
-    if info is None or (info.object_sense is None and frame.sense not in _TRANSLATING):
-        return False
+    if info is None or (info.object_sense is None and frame.sense not in _TRANSLATING and frame.sense is not VerbSense.YAW):
+        return False  # ("flip it round": its particle turns the object)
     quantities = frame.quantities
     directional = quantities.direction in ("forward", "backward", "left", "right", "sideways") or quantities.axis is not None
     if pronoun and after_part and quantities.amount is not None and quantities.amount.unit == "fraction":
@@ -52,12 +52,14 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
         return False
     if frame.particle in ("in", "out", "open", "shut", "closed"):
         return False
-    return info.object_sense is not None or frame.sense in _TRANSLATING
+    return info.object_sense is not None or frame.sense in _TRANSLATING or frame.sense is VerbSense.YAW
 
 
 def is_yaw(frame: Frame) -> bool:
     """"turn it around", "rotate the box 90 degrees (on the table)", "spin the chair"."""
     info = VERBS.get(frame.verb or "")
+    if info is not None and frame.sense is VerbSense.YAW:
+        return True  # "flip it round", "yaw it"
     if info is None or info.object_sense is not VerbSense.YAW:
         return False
     words = set(frame.text.split())

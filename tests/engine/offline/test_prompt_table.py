@@ -563,6 +563,14 @@ ROWS: list[Row] = [
     R("extra/safe_101612", "Spin the combination wheel a quarter rotation.", joints={"joint_1": E(moves=True)}),
     R("microwave_7304", "open the microwave real quick, then close it", joints={"joint_1": E(peak="upper", end=0.0)}),
     R("microwave_7236", "opn teh dore all the way", joints={"joint_0": E(end="upper")}),
+    # --- blind dev probe, round 11 (benchmark/probes/dev_round11_prompts.jsonl): classes fixed, rephrased ---
+    R("laptop_10248", "I want the screen at 60 degrees, counted from fully closed.", joints={"joint_1": E(end=-0.6632)}),
+    R("microwave_7236", "need the microwave flipped round, facing away", yaw_deg=180.0, joints={"joint_0": E(still=True)}),
+    R("extra/kitchen_pot_100015", "Lift the lid the whole 6 cm it can travel.", joints={"joint_0": E(end=0.06)}),
+    R("trash_can_102155", "Spin the left-side wheel a quarter turn.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
+    R("extra/storage_20279", "I'm about to sit down at the desk, so shut the drawer.", joints={"joint_0": E(end="lower")}),
+    R("extra/coffee_machine_102145", "Push the lever on top all the way to the left so the machine starts heating.",
+      joints={"joint_0": E(end="lower"), "joint_1": E(still=True), "joint_2": E(still=True)}),
 ]
 
 

@@ -9,7 +9,7 @@ from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import COUPLING_WORDS
+from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Quantities
@@ -40,7 +40,6 @@ class Act:
 _IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
 _STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 _PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
-_THIRD_PERSONS = frozenset({"someone", "somebody", "he", "she", "they", "everyone", "people", "guests"})
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
@@ -171,7 +170,7 @@ def _corrected(act: Act, frame: Frame) -> Act | None:
 def build_acts(frames: list[Frame]) -> list[Act]:
     acts: list[Act] = []
     pending_wait = 0.0
-    restated = False
+    restated = said_aside = False
     pending_conditions: list[Frame] = []
     previous_goal: Frame | None = None
     measured: Frame | None = None
@@ -236,7 +235,14 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             together = frame.simultaneous
             previous_goal = frame  # the clauses after the colon may only name a part and an amount: they take its verb
             continue
-        if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and acts:
+        if frame.link is Link.RESULT and frame.themes and all(m.is_object for m in frame.themes) and ASPECT_VERBS & set(frame.text.split()) and (
+                frame.verb is None or frame.verb not in VERBS):
+            continue  # "... so the machine starts brewing": what the object then does, not a part's motion
+        if frame.link is Link.PURPOSE and said_aside:
+            continue  # "I'm about | to roll the chair under the desk", "Someone needs | to use the toilet": a person's aim
+        said_aside = False
+        if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and (acts or index + 1 < len(frames)):
+            said_aside = True
             continue  # "..., so I can put my plate in", "nothing else": why, or a remark, not what
         if frame.link is Link.PARALLEL and acts and not acts[-1].condition and frame.themes and all(m.pronoun for m in frame.themes) and (
                 (frame.sense is acts[-1].goal.sense and frame.sense is not None) or _progressive_of(frame, acts[-1].goal)):
@@ -275,9 +281,6 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 pending_conditions.append(frame)  # "A and, once it is out, B": a state to reach before B
             else:
                 acts.append(Act(goal=frame, condition=True))  # "the drawer is sticking out; push it shut": sets "it"
-            continue
-        if frame.link is Link.PURPOSE and acts and acts[-1].goal.aside and acts[-1].goal.text.split()[0] in _THIRD_PERSONS:
-            acts.pop()  # "Someone needs to use the toilet, put the lid up": why (another person's aim), not what
             continue
         if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and not acts[-1].goal.themes and (
                 acts[-1].goal.verb is None):

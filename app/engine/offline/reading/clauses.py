@@ -133,7 +133,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     if j + 1 < len(tokens) and tokens[j].text in _STAYS and tokens[j + 1].text in ("there", "for", "like_that", "open", "shut", "closed"):
         return True  # "the lid comes down, rests there for two seconds, ...": a hold
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
-            tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and tokens[j + 1].lemma in VERBS)):
+            tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and (tokens[j + 1].lemma in VERBS or _verb_form(tokens[j + 1].text)))):
         return True  # "so I can put my plate in", "so they can air-dry"
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j

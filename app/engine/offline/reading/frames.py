@@ -265,8 +265,9 @@ def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
     k = 0
     while k < len(tokens) - 1 and tokens[k].text in _WISH_LEADS:
         k += 1  # "but for now I just need its drawer ...", "so I want ..."
-    if k < len(tokens) and tokens[k].text in WISHES:
-        return True, tokens[k + 1:]
+    if k < len(tokens) and (tokens[k].text in WISHES or (tokens[k].text in ("need", "needs", "want") and k + 1 < len(tokens)
+                                                          and tokens[k + 1].text in ("the", "this", "that", "both", "its", "my"))):
+        return True, tokens[k + 1:]  # "I need ...", "need the whole microwave flipped round"
     if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
         return True, tokens[k + 3:]
     return False, tokens

@@ -10,7 +10,7 @@ own part names, else refused). Trailing phrases qualify or own it: "the knob on 
 
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import PARTICLES, VERBS
@@ -18,6 +18,7 @@ from app.engine.lexicon.words import (
     AMOUNTS,
     COLLECTIVE,
     DETERMINERS,
+    MODALS,
     NOT_PART_NOUNS,
     OBJECT_NOUNS,
     OBJECT_SUFFIXES,
@@ -33,6 +34,7 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
+from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.part_words import kind_at, kind_of_word, side_run
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb, verb_ing
 
@@ -47,47 +49,6 @@ _NOT_HEADS = NOT_PART_NOUNS
 _OBJECT_WORDS = frozenset(OBJECT_NOUNS)
 
 
-@dataclass(frozen=True)
-class Mention:
-    """A reference to a part (or to the whole object) in a clause."""
-
-    head: str
-    """The head noun as written (after spelling correction), e.g. "door", "it", "spoiler"."""
-    kind: PartKind | None = None
-    is_object: bool = False
-    pronoun: bool = False
-    anaphor: bool = False
-    """"the left one", "the other one": the head is the kind of an earlier mention."""
-    other: bool = False
-    sides: tuple[tuple[Side, bool], ...] = ()
-    """(side, extreme) qualifiers: "upper" -> (TOP, False), "leftmost" -> (LEFT, True)."""
-    ordinal: int | None = None
-    ordinal_from: Side | None = None
-    """"the second drawer from the bottom": counted from that side (default: reading order)."""
-    row: int | None = None
-    column: int | None = None
-    size: str | None = None
-    plural: bool = False
-    collective: bool = False
-    modifiers: tuple[str, ...] = ()
-    """Other words before the head ("release" in "the release button")."""
-    owner: Mention | None = None
-    region: tuple[tuple[Side, bool], ...] = ()
-    possessive: bool = False
-    """"its rack", "their handles": owned by what the clause before was about."""
-    """Sides of the object the part sits in: "the rack of the top oven" (the compartment behind the top door)."""
-    whose: str | None = None
-    """The object that owns the part, when the prompt says so ("the stapler's magazine", "the magazine of the stapler")."""
-    one_of: bool = False
-    """"one of the knobs": the user leaves the choice among them."""
-    relation: tuple[str, Mention] | None = None
-    """"the key right below it", "the knob next to the door": (below / above / beside / left / right, the reference)."""
-    start: int = 0
-    end: int = 0
-    """Token span inside the clause."""
-    words: str = ""
-
-
 def _line_index(word: str) -> int | None:
     if word in ORDINALS:
         return ORDINALS[word]
@@ -95,6 +56,20 @@ def _line_index(word: str) -> int | None:
     if side is None:
         return None
     return {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1, Side.MIDDLE: 0}.get(side[0])
+
+
+def _verb_only(word: str) -> bool:
+    """A word English uses only as a verb form ("counted", "allows", "looking"): never the head of a part's name."""
+    from lemminflect import getAllLemmas
+
+    lemmas = getAllLemmas(word)
+    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and kind_of_word(word) is None
+
+
+def _can_be_verb(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word in VERBS or "VERB" in getAllLemmas(word)
 
 
 def _nominal(token: Token) -> bool:
@@ -200,19 +175,21 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
                               start=begin, end=i + 1, words=_words(tokens, begin, i + 1))
             return pronoun, i + 1
+        elif word in MODALS and i + 1 < len(tokens) and _can_be_verb(tokens[i + 1].text) and not (i and tokens[i - 1].text in DETERMINERS):
+            break  # "the entire 6 cm it can travel": a modal, not the noun "can"
         elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
             nouns.append((i, 1, None, True))
         elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not _continues(tokens, i + 1))):
             break  # a verb ends the phrase ("the lid | drops"); "the door release button" goes on
-        elif "-" in word and all(part in SPATIAL for part in word.split("-")):
-            sides.extend(SPATIAL[part] for part in word.split("-"))  # "upper-left", "bottom-right"
+        elif "-" in word and all(part in SPATIAL or part in ("side", "hand") for part in word.split("-")) and word.split("-")[0] in SPATIAL:
+            sides.extend(SPATIAL[part] for part in word.split("-") if part in SPATIAL)  # "upper-left", "bottom-right", "left-side"
         elif word in PARTICLES:
             break
         elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
         elif nouns and (finite_unknown_verb(word) or (word not in _ING_NOUNS and verb_ing(word))):
             break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know
-        elif (token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word:
+        elif ((token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word) and not (_verb_only(word) and not nouns and not unknown and not determiner):
             unknown.append(i)
         elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):
             i += 1
