@@ -237,6 +237,8 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
             offset = geometry.pivot_world - center
             offset = offset - (offset @ geometry.axis_world) * geometry.axis_world
             return -0.5 * _horizontal(offset)
+        if abs(float(geometry.axis_world @ geometry.home_face)) > 0.7:
+            return np.zeros(3)  # hinged about the normal of its nearest face (a stapler's arm): that face is no front
         return 1.0 * _horizontal(geometry.home_face)
     # controls say nothing reliable: a washer's knobs sit on a back panel facing the user,
     # a faucet's lever on a column whose nearest box face is a side

@@ -568,6 +568,8 @@ ROWS: list[Row] = [
     R("microwave_7236", "need the microwave flipped round, facing away", yaw_deg=180.0, joints={"joint_0": E(still=True)}),
     R("extra/kitchen_pot_100015", "Lift the lid the whole 6 cm it can travel.", joints={"joint_0": E(end=0.06)}),
     R("trash_can_102155", "Spin the left-side wheel a quarter turn.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),
+    # a part hinged about the normal of its nearest face (a stapler's arm) says nothing of the front: -X, the dataset's
+    R("stapler_103099", "Push the stapler 5 cm to the left.", base=(0.0, 0.05, 0.0), joints={"joint_0": E(still=True)}),
     R("extra/storage_20279", "I'm about to sit down at the desk, so shut the drawer.", joints={"joint_0": E(end="lower")}),
     R("extra/coffee_machine_102145", "Push the lever on top all the way to the left so the machine starts heating.",
       joints={"joint_0": E(end="lower"), "joint_1": E(still=True), "joint_2": E(still=True)}),
