@@ -8,10 +8,13 @@ the repository, not to the working directory), else an error that says how to se
 from __future__ import annotations
 
 import os
+import sys
 from collections.abc import Iterable
 from pathlib import Path
 
 from app.engine.errors import MetricError
+from app.engine.metrics.annotation import Case
+from benchmark.cases import read_cases
 
 REPOSITORY = Path(__file__).resolve().parents[1]
 ENV_VARIABLE = "ARTIMO_PARTNET_ROOT"
@@ -62,3 +65,25 @@ def check_assets_root(root: Path, assets: Iterable[str], what: str) -> list[str]
 def assets_or_partnet(value: Path | None) -> Path:
     """``--assets`` when given, else :func:`partnet_root` (for the scripts' defaults)."""
     return value if value is not None else partnet_root()
+
+
+def script_root(value: Path | None) -> Path | None:
+    """:func:`assets_or_partnet` for a benchmark script: ``None`` after printing the error (the script exits 2)."""
+    try:
+        return assets_or_partnet(value)
+    except MetricError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return None
+
+
+def script_cases(cases_file: Path, assets: Path | None, limit: int) -> tuple[list[Case], Path] | None:
+    """The first ``limit`` cases of ``cases_file`` and the root holding their assets, for a benchmark script:
+    ``None`` after printing the error (a bad file, no root, or a root holding none of the cases' assets)."""
+    try:
+        cases = read_cases(cases_file)[:limit]
+        root = assets_or_partnet(assets)
+        check_assets_root(root, (case.asset for case in cases), str(cases_file))
+    except MetricError as exc:
+        sys.stderr.write(f"error: {exc}\n")
+        return None
+    return cases, root

@@ -23,11 +23,10 @@ import time
 from pathlib import Path
 
 from app.engine.asset.loader import load_asset
-from app.engine.errors import EngineError, MetricError
+from app.engine.errors import EngineError
 from app.engine.pipeline import PipelineRequest, run_pipeline
 from app.engine.providers.registry import make_roles
-from benchmark.cases import read_cases
-from benchmark.paths import assets_or_partnet, check_assets_root
+from benchmark.paths import script_cases
 
 
 def _animate(asset: Path, prompt: str, out: Path, cache: Path) -> tuple[float, str | None]:
@@ -54,13 +53,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--limit", type=int, default=20)
     parser.add_argument("--allow-failures", action="store_true", help="exit 0 even when a case fails (its time is never counted)")
     args = parser.parse_args(argv)
-    try:
-        cases = read_cases(args.cases)[: args.limit]
-        root = assets_or_partnet(args.assets)
-        check_assets_root(root, (case.asset for case in cases), str(args.cases))
-    except MetricError as exc:
-        sys.stderr.write(f"error: {exc}\n")
+    found = script_cases(args.cases, args.assets, args.limit)
+    if found is None:
         return 2
+    cases, root = found
     cold: list[float] = []
     warm: list[float] = []
     inside: list[float] = []

@@ -23,12 +23,11 @@ import time
 from pathlib import Path
 
 from app.engine.asset.loader import load_asset
-from app.engine.errors import MetricError
 from app.engine.execute.executor import execute
 from app.engine.export.glb import glb_bytes
 from app.engine.export.jsonl import dumps_trajectory
 from app.engine.plan.checks import validate_plan
-from benchmark.paths import assets_or_partnet
+from benchmark.paths import script_root
 
 ASSET = "safe_101593"
 
@@ -77,10 +76,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--assets", type=Path, default=None, help="PartNet-Mobility root (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--repeats", type=int, default=7)
     args = parser.parse_args(argv)
-    try:
-        root = assets_or_partnet(args.assets)
-    except MetricError as exc:
-        sys.stderr.write(f"error: {exc}\n")
+    root = script_root(args.assets)
+    if root is None:
         return 2
     asset_dir = root / ASSET
     if not (asset_dir / "mobility.urdf").is_file():

@@ -24,7 +24,6 @@ from collections.abc import Callable
 from pathlib import Path
 
 from app.engine.asset.loader import load_asset
-from app.engine.errors import MetricError
 from app.engine.execute.executor import execute
 from app.engine.export.csv_table import write_csv
 from app.engine.export.mjcf import write_mjcf
@@ -35,7 +34,7 @@ from app.engine.export.usd import write_usd
 from app.engine.interaction.phases import actuated_phases
 from app.engine.interaction.targets import interaction_targets, write_interactions
 from app.engine.plan.checks import validate_plan
-from benchmark.paths import assets_or_partnet
+from benchmark.paths import script_root
 from benchmark.speed_engine import ASSET, SAFE_PLAN
 
 Step = Callable[[], object]
@@ -61,10 +60,8 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--assets", type=Path, default=None, help="PartNet-Mobility root (default: $ARTIMO_PARTNET_ROOT, else ../shared/assets/partnet)")
     parser.add_argument("--repeats", type=int, default=15)
     args = parser.parse_args(argv)
-    try:
-        root = assets_or_partnet(args.assets)
-    except MetricError as exc:
-        sys.stderr.write(f"error: {exc}\n")
+    root = script_root(args.assets)
+    if root is None:
         return 2
     if not (root / ASSET / "mobility.urdf").is_file():
         sys.stderr.write(f"error: {root} has no {ASSET}/mobility.urdf (the asset this benchmark times); wrong --assets?\n")

@@ -33,14 +33,13 @@ from typing import Any
 
 from app.engine.asset.cache import load_asset_cached
 from app.engine.config import EngineConfig
-from app.engine.errors import EngineError, MetricError
+from app.engine.errors import EngineError
 from app.engine.offline.contract_io import causal_document
 from app.engine.offline.perceiver import read_prompt
 from app.engine.offline.planner import plan_intent
 from app.engine.pipeline import PipelineRequest, run_pipeline
 from app.engine.providers.registry import ProviderConfig, make_roles
-from benchmark.cases import read_cases
-from benchmark.paths import assets_or_partnet, check_assets_root
+from benchmark.paths import script_cases
 
 ROLES = ("perceiver", "planner", "critic", "coverage")
 OK_VERDICT = {"semantic_ok": True, "visibility_ok": True, "link_motion_type": "static_or_unclear", "detailed_reasoning": "looks right",
@@ -129,13 +128,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--latency", type=float, default=0.0, help="seconds every model reply takes (default 0)")
     parser.add_argument("--no-cache", action="store_true", help="no asset/view cache: every job renders the perceiver's images (cold)")
     args = parser.parse_args(argv)
-    try:
-        cases = read_cases(args.cases)[: args.limit]
-        root = assets_or_partnet(args.assets)
-        check_assets_root(root, (case.asset for case in cases), str(args.cases))
-    except MetricError as exc:
-        sys.stderr.write(f"error: {exc}\n")
+    found = script_cases(args.cases, args.assets, args.limit)
+    if found is None:
         return 2
+    cases, root = found
     walls: list[float] = []
     local: list[float] = []
     per_stage: dict[str, list[float]] = {}
