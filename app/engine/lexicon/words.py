@@ -221,6 +221,8 @@ PLACE_SIDES: Mapping[str, Side] = MappingProxyType({
 """Places a part is nearest to ("the rack nearest the floor", "the dial closest to the counter"): the object's side they face."""
 OPPOSITE_SIDES: Mapping[Side, Side] = MappingProxyType({Side.BOTTOM: Side.TOP, Side.TOP: Side.BOTTOM, Side.BACK: Side.FRONT,
                                                          Side.FRONT: Side.BACK, Side.LEFT: Side.RIGHT, Side.RIGHT: Side.LEFT})
+DEFINITES = frozenset({"the", "this", "that", "its"})
+"""Determiners of one known thing: "the 5 key" is the key labelled 5 (not five keys), "the dore" is a part misspelt."""
 WHOLE_WORDS = frozenset({"whole", "entire", "asset", "model", "body"})
 """Words that name the whole object, never the part a verb works on it ("rotate the whole tap asset": not its handle)."""
 ASPECT_VERBS = frozenset({"starts", "start", "started", "begins", "begin", "began", "continues", "continue"})

@@ -286,7 +286,7 @@ class Builder:
         for part in (p for p in parts if p.kind is not None and info(p.kind).press == "into_face" and p.geometry.type == "prismatic"):
             geometry = part.geometry
             if geometry.press_value is None or abs(geometry.press_value - self.tracker.value(part.joint)) < REACHED:
-                raise self.refs.refuse(f"'{frame.text}': the {part.kind.value} ({part.link}) cannot be pressed in any further")  # type: ignore[union-attr]
+                raise self.refs.refuse(f"'{frame.text}': the {_label(part)} ({part.link}) cannot be pressed in any further")
             if geometry.press_outward:
                 self.notes.append(f"{part.link} ({part.joint}) rests at the deep end of its travel: pressed along the travel it has (outward)")
 

@@ -147,7 +147,9 @@ def _is_event(frame: Frame) -> bool:
 
 def _progressive_of(frame: Frame, before: Frame) -> bool:
     """"(the door opens, and while) it is opening": the -ing form of the verb before, said again."""
-    return before.verb is not None and any(w.endswith("ing") and w.startswith(before.verb[:4]) for w in frame.text.split())
+    from lemminflect import getAllLemmas
+
+    return before.verb is not None and any(w.endswith("ing") and before.verb in getAllLemmas(w).get("VERB", ()) for w in frame.text.split())
 
 
 def _narrated(before: Frame, frame: Frame) -> bool:

@@ -40,7 +40,7 @@ from app.engine.lexicon.words import (
     WISHES,
 )
 from app.engine.offline.reading.mentions import kind_at
-from app.engine.offline.reading.tokens import Token, finite_unknown_verb
+from app.engine.offline.reading.tokens import Token, finite_unknown_verb, inflected_verb
 
 
 class Link(StrEnum):
@@ -133,7 +133,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     if j + 1 < len(tokens) and tokens[j].text in _STAYS and tokens[j + 1].text in ("there", "for", "like_that", "open", "shut", "closed"):
         return True  # "the lid comes down, rests there for two seconds, ...": a hold
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
-            tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and (tokens[j + 1].lemma in VERBS or _verb_form(tokens[j + 1].text)))):
+            tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and (tokens[j + 1].lemma in VERBS or inflected_verb(tokens[j + 1].text)))):
         return True  # "so I can put my plate in", "so they can air-dry"
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
@@ -146,7 +146,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
             return True  # "so the steam can escape", "so the camera can see inside"
         if k > j + 1 and tokens[j].text in DETERMINERS and (finite_unknown_verb(tokens[k].text) or (
-                k == j + 2 and tokens[k].text.endswith("s") and tokens[k].text != tokens[k].lemma and _verb_form(tokens[k].text))):
+                k == j + 2 and tokens[k].text.endswith("s") and tokens[k].text != tokens[k].lemma and inflected_verb(tokens[k].text))):
             return True  # "so the steam clears / escapes": a verb the lexicon does not know
         k += 1
     return False
@@ -178,12 +178,6 @@ def _other_verb(tokens: list[Token], i: int) -> bool:
     base = token.text in lemmas.get("VERB", ())
     return token.text.isalpha() and "VERB" in lemmas and (follows in DETERMINERS or follows in ("it", "them", "that", "this") or (
         base and follows in ("", ",", ".", ";", "!", "?", "and", "then", "on", "in", "at", "for", "inside", "up")))  # "to check on the dishes"
-
-
-def _verb_form(word: str) -> bool:
-    from lemminflect import getAllLemmas
-
-    return word.isalpha() and any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
 
 
 def _ing(token: Token) -> bool:

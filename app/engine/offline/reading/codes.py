@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import DETERMINERS, ORDINALS, SPATIAL
+from app.engine.lexicon.words import DEFINITES, DETERMINERS, ORDINALS, SPATIAL
 from app.engine.offline.reading.tokens import Token
 
 CODE_VERBS = frozenset({"type", "enter", "key", "punch", "input", "press", "tap", "push", "hit"})
@@ -53,7 +53,7 @@ def code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[t
         if i in used:
             continue
         counts = i + 1 < len(tokens) and tokens[i + 1].lemma in ("key", "button") and (
-            tokens[i + 1].plural or not (i and tokens[i - 1].text in ("the", "this", "that")))  # "the three keys of the top row": a count; "the 5 key": its label
+            tokens[i + 1].plural or not (i and tokens[i - 1].text in DEFINITES))  # "the three keys of the top row": a count; "the 5 key": its label
         if token.number is not None and token.number == int(token.number) and token.number >= 0 and not counts:
             items.extend(("digit", d) for d in token.text.split(".")[0])
             continue

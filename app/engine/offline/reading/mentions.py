@@ -17,6 +17,7 @@ from app.engine.lexicon.verbs import PARTICLES, VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
     COLLECTIVE,
+    DEFINITES,
     DETERMINERS,
     MODALS,
     NOT_PART_NOUNS,
@@ -36,7 +37,7 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.part_words import kind_at, kind_of_word, side_run
-from app.engine.offline.reading.tokens import Token, finite_unknown_verb, verb_ing
+from app.engine.offline.reading.tokens import Token, can_be_verb, finite_unknown_verb, verb_ing, verb_only
 
 __all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
 
@@ -56,20 +57,6 @@ def _line_index(word: str) -> int | None:
     if side is None:
         return None
     return {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1, Side.MIDDLE: 0}.get(side[0])
-
-
-def _verb_only(word: str) -> bool:
-    """A word English uses only as a verb form ("counted", "allows", "looking"): never the head of a part's name."""
-    from lemminflect import getAllLemmas
-
-    lemmas = getAllLemmas(word)
-    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and kind_of_word(word) is None
-
-
-def _can_be_verb(word: str) -> bool:
-    from lemminflect import getAllLemmas
-
-    return word in VERBS or "VERB" in getAllLemmas(word)
 
 
 def _nominal(token: Token) -> bool:
@@ -175,7 +162,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
                               start=begin, end=i + 1, words=_words(tokens, begin, i + 1))
             return pronoun, i + 1
-        elif word in MODALS and i + 1 < len(tokens) and _can_be_verb(tokens[i + 1].text) and not (i and tokens[i - 1].text in DETERMINERS):
+        elif word in MODALS and i + 1 < len(tokens) and can_be_verb(tokens[i + 1].text) and not (i and tokens[i - 1].text in DETERMINERS):
             break  # "the entire 6 cm it can travel": a modal, not the noun "can"
         elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
             nouns.append((i, 1, None, True))
@@ -189,7 +176,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
         elif nouns and (finite_unknown_verb(word) or (word not in _ING_NOUNS and verb_ing(word))):
             break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know
-        elif ((token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word) and not (_verb_only(word) and not nouns and not unknown and not determiner):
+        elif ((token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word) and not (verb_only(word) and not nouns and not unknown and not determiner):
             unknown.append(i)
         elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):
             i += 1
@@ -212,7 +199,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                           and not (tokens[j].lemma in _OBJECT_WORDS and j + 1 < len(tokens) and tokens[j + 1].text == "'s")
                           and tokens[j].text not in COLLECTIVE and tokens[j].text not in SPATIAL and tokens[j].text not in ORDINALS
                           and tokens[j].text not in SIZES and tokens[j].text not in OTHER_WORDS)
-        plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 and not (j and tokens[j - 1].text in ("the", "this", "that"))
+        plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 and not (j and tokens[j - 1].text in DEFINITES)
                                                              for j in range(begin, head_index))  # "2 drawers", not "the 5 key"
         head_word = " ".join(t.lemma for t in head_tokens)
     else:

@@ -16,12 +16,12 @@ from dataclasses import replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import DENOMINATORS, MULTIWORD, NUMBER_WORDS
+from app.engine.lexicon.words import DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
 
-__all__ = ["Token", "finite_unknown_verb", "lemma_of", "tokenize", "verb_ing"]
+__all__ = ["Token", "can_be_verb", "finite_unknown_verb", "inflected_verb", "lemma_of", "tokenize", "verb_ing", "verb_only"]
 
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
@@ -263,6 +263,33 @@ def finite_unknown_verb(word: str) -> bool:
 
 
 @lru_cache(maxsize=4096)
+def inflected_verb(word: str) -> bool:
+    """An inflected form of some English verb ("faces", "looking", "brewed")."""
+    from lemminflect import getAllLemmas
+
+    return word.isalpha() and any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
+
+
+@lru_cache(maxsize=4096)
+def verb_only(word: str) -> bool:
+    """A word English uses only as a verb form ("counted", "allows", "looking"), and no part word: never a part's head."""
+    from lemminflect import getAllLemmas
+
+    from app.engine.offline.reading.part_words import kind_of_word
+
+    lemmas = getAllLemmas(word)
+    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and kind_of_word(word) is None
+
+
+@lru_cache(maxsize=4096)
+def can_be_verb(word: str) -> bool:
+    """A word the lexicon or English uses as a verb ("travel" after "it can")."""
+    from lemminflect import getAllLemmas
+
+    return word in VERBS or "VERB" in getAllLemmas(word)
+
+
+@lru_cache(maxsize=4096)
 def verb_ing(word: str) -> bool:
     """A verb's -ing form ("going", "spinning")."""
     if not word.endswith("ing") or not word.isalpha():
@@ -280,7 +307,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.spelling import correct, correct_noun
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in expand(_raw_tokens(prompt), known)]
-    tokens = [correct_noun(t, known) if k and tokens[k - 1].text in ("the", "its", "this", "that") and t.text.isalpha() else t
+    tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
     tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(same_words(tokens))))))
     out = []
