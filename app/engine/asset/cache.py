@@ -3,8 +3,8 @@
 Entries are keyed by the asset's files (name, size, modification time of every file in a
 folder; the bytes of a zip) or by a content hash the caller already knows (the service's
 stored sha256), plus the chosen URDF, and stored as one ``.npz`` (arrays plus a JSON header, read with
-``allow_pickle=False``). Reading an entry imports neither yourdfpy nor trimesh, which is
-most of a cold process's time.
+``allow_pickle=False``). Reading an entry skips parsing the URDF and the meshes, and the imports
+they need (lxml, PIL; trimesh for meshes outside the built-in OBJ reader's subset).
 """
 
 from __future__ import annotations

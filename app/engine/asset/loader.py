@@ -11,13 +11,13 @@ import zipfile
 from pathlib import Path
 
 import numpy as np
-import yourdfpy
 
 from app.engine.asset.meshes import GeometryBudget, load_mesh_file, primitive_parts, resolve_mesh_path
 from app.engine.asset.model import ArticulatedAsset, LinkSemantics, LinkSpec, MeshPart
 from app.engine.asset.safety import AssetLimits, check_images, check_urdf_xml, extract_zip
 from app.engine.asset.urdf import check_transform, finite_numbers, parse_urdf
 from app.engine.asset.urdf_choice import MACOS_METADATA_DIR, find_urdf
+from app.engine.asset.urdf_reader import UrdfLink, UrdfRobot, UrdfVisual
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray
 
@@ -111,25 +111,25 @@ def _load_directory(root: Path, name: str, limits: AssetLimits, *, shown: str, u
     )
 
 
-def _visual_rgba(visual: yourdfpy.Visual, robot: yourdfpy.Robot) -> tuple[float, float, float, float] | None:
+def _visual_rgba(visual: UrdfVisual, robot: UrdfRobot) -> tuple[float, float, float, float] | None:
     material = visual.material
     if material is None:
         return None
-    color = material.color
-    if color is None and material.name:
+    rgba = material.rgba
+    if rgba is None and material.name:
         named = next((m for m in robot.materials if m.name == material.name), None)
-        color = named.color if named is not None else None
-    if color is None or color.rgba is None:
+        rgba = named.rgba if named is not None else None
+    if rgba is None:
         return None
-    rgba = np.clip(np.asarray(color.rgba, dtype=np.float64).reshape(-1)[:4], 0.0, 1.0)
-    if rgba.size != 4:
+    clipped = np.clip(np.asarray(rgba, dtype=np.float64).reshape(-1)[:4], 0.0, 1.0)
+    if clipped.size != 4:
         return None
-    return (float(rgba[0]), float(rgba[1]), float(rgba[2]), float(rgba[3]))
+    return (float(clipped[0]), float(clipped[1]), float(clipped[2]), float(clipped[3]))
 
 
 def _link_parts(
-    link: yourdfpy.Link,
-    robot: yourdfpy.Robot,
+    link: UrdfLink,
+    robot: UrdfRobot,
     urdf_dir: Path,
     root: Path,
     urdf_name: str,
@@ -143,26 +143,21 @@ def _link_parts(
         rgba = _visual_rgba(visual, robot)
         geometry = visual.geometry
         label = f"{link.name}_{index}"
-        if geometry is None:
-            raise AssetError("visual has no geometry", file=urdf_name, element=element)
-        if geometry.mesh is not None:
-            mesh_path = resolve_mesh_path(geometry.mesh.filename or "", urdf_dir, root, urdf_name=urdf_name, element=element)
-            scale = _mesh_scale(geometry.mesh.scale, urdf_name, element)
+        if geometry.kind == "mesh":
+            mesh_path = resolve_mesh_path(geometry.filename or "", urdf_dir, root, urdf_name=urdf_name, element=element)
+            scale = _mesh_scale(geometry.scale, urdf_name, element)
             transform = origin @ np.diag([*scale, 1.0])
             digest.update(str(mesh_path.relative_to(root)).encode())
             digest.update(mesh_path.read_bytes())
             parts.extend(_named(load_mesh_file(mesh_path, root, transform, rgba, budget, label=label), visual.name or ""))
-        elif geometry.box is not None:
-            size = finite_numbers(geometry.box.size, 3, "box size", file=urdf_name, element=element)
-            parts.extend(_named(primitive_parts("box", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
-        elif geometry.cylinder is not None:
-            size = finite_numbers([geometry.cylinder.radius, geometry.cylinder.length], 2, "cylinder radius/length", file=urdf_name, element=element)
-            parts.extend(_named(primitive_parts("cylinder", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
-        elif geometry.sphere is not None:
-            size = finite_numbers([geometry.sphere.radius], 1, "sphere radius", file=urdf_name, element=element)
-            parts.extend(_named(primitive_parts("sphere", size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
+            continue
+        if geometry.kind == "box":
+            size = finite_numbers(geometry.size, 3, "box size", file=urdf_name, element=element)
+        elif geometry.kind == "cylinder":
+            size = finite_numbers([geometry.radius, geometry.length], 2, "cylinder radius/length", file=urdf_name, element=element)
         else:
-            raise AssetError("visual geometry is empty", file=urdf_name, element=element)
+            size = finite_numbers([geometry.radius], 1, "sphere radius", file=urdf_name, element=element)
+        parts.extend(_named(primitive_parts(geometry.kind, size, origin, rgba, budget, label=label, urdf_name=urdf_name), visual.name or ""))
     return parts
 
 

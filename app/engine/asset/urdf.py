@@ -1,22 +1,19 @@
-"""The one module that talks to yourdfpy: URDF text -> checked joint and link records.
+"""URDF text -> checked joint and link records.
 
-yourdfpy's sharp edges handled here: it accepts floating/planar joints (we reject
-them), it does not normalise axes (we do), it keeps joints without limits (we
-reject revolute/prismatic ones), it does not check the tree (we check for a single
-root, unknown links, duplicate names and cycles).
+:mod:`app.engine.asset.urdf_reader` reads the elements as written; this module judges them: it
+rejects floating/planar joints, normalises axes, rejects revolute/prismatic joints without limits,
+and checks the tree (a single root, unknown links, duplicate names and cycles).
 """
 
 from __future__ import annotations
 
-import io
 from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
-import yourdfpy
-from lxml import etree
 
-from app.engine.asset.model import JointSpec, Mimic
+from app.engine.asset.model import JointSpec, JointType, Mimic
+from app.engine.asset.urdf_reader import UrdfJoint, UrdfRobot, read_urdf
 from app.engine.errors import AssetError
 from app.engine.types import FloatArray
 
@@ -27,6 +24,7 @@ MAX_COORDINATE_M = 1e4
 are typos or attacks, and overflow the geometry computed from them."""
 MAX_MULTIPLIER = 1e3
 """Largest |mimic multiplier|."""
+JOINT_TYPES: dict[str, JointType] = {"revolute": "revolute", "continuous": "continuous", "prismatic": "prismatic", "fixed": "fixed"}
 
 
 def finite_numbers(values: object, count: int, what: str, *, file: str, element: str, bound: float = MAX_COORDINATE_M) -> FloatArray:
@@ -61,7 +59,7 @@ def check_transform(matrix: object, what: str, *, file: str, element: str) -> Fl
 
 @dataclass(frozen=True)
 class ParsedUrdf:
-    robot: yourdfpy.Robot
+    robot: UrdfRobot
     joints: dict[str, JointSpec]
     root_link: str
     joint_order: tuple[str, ...]
@@ -76,23 +74,16 @@ def parse_urdf(data: bytes, file_name: str) -> ParsedUrdf:
     AssetError
         Any structural problem, naming the file and the joint or link.
     """
-    try:
-        with np.errstate(invalid="ignore", over="ignore"):  # NaN/inf in the text: rejected below, without warnings
-            urdf = yourdfpy.URDF.load(
-                io.BytesIO(data), build_scene_graph=False, load_meshes=False, build_collision_scene_graph=False
-            )
-        robot = urdf.robot
-    except (etree.XMLSyntaxError, ValueError, TypeError, AttributeError, KeyError, IndexError) as exc:
-        raise AssetError(f"cannot parse URDF: {type(exc).__name__}: {exc}", file=file_name) from exc
+    robot = read_urdf(data, file_name)
     _check_names(robot, file_name)
     link_names = frozenset(link.name for link in robot.links)  # once, not per joint (linear in the asset's size)
     joints = {j.name: _joint_spec(j, link_names, file_name) for j in robot.joints}
     _check_mimics(joints, file_name)
-    root, joint_order, link_order = _tree_order(robot, file_name)
+    root, joint_order, link_order = _tree_order(robot, joints, file_name)
     return ParsedUrdf(robot=robot, joints=joints, root_link=root, joint_order=joint_order, link_order=link_order)
 
 
-def _check_names(robot: yourdfpy.Robot, file_name: str) -> None:
+def _check_names(robot: UrdfRobot, file_name: str) -> None:
     if not robot.links:
         raise AssetError("URDF has no <link>", file=file_name)
     for kind, items in (("link", robot.links), ("joint", robot.joints)):
@@ -105,18 +96,22 @@ def _check_names(robot: yourdfpy.Robot, file_name: str) -> None:
             seen.add(item.name)
 
 
-def _joint_spec(joint: yourdfpy.Joint, link_names: frozenset[str], file_name: str) -> JointSpec:
+def _joint_spec(joint: UrdfJoint, link_names: frozenset[str], file_name: str) -> JointSpec:
     element = f"joint {joint.name}"
     if joint.type in ("floating", "planar"):
         raise AssetError(f"{joint.type} joints are not supported", file=file_name, element=element)
-    if joint.type not in ("revolute", "continuous", "prismatic", "fixed"):
+    kind = JOINT_TYPES.get(joint.type or "")
+    if kind is None:
         raise AssetError(f"unknown joint type '{joint.type}'", file=file_name, element=element)
+    ends: list[str] = []
     for role, link in (("parent", joint.parent), ("child", joint.child)):
-        if link not in link_names:
+        if link is None or link not in link_names:
             raise AssetError(f"{role} link '{link}' is not defined", file=file_name, element=element)
+        ends.append(link)
+    parent, child = ends
     origin = check_transform(np.eye(4) if joint.origin is None else joint.origin, "origin", file=file_name, element=element)
     axis = np.zeros(3)
-    if joint.type != "fixed":
+    if kind != "fixed":
         raw = finite_numbers(DEFAULT_AXIS if joint.axis is None else joint.axis, 3, "axis", file=file_name, element=element)
         norm = float(np.linalg.norm(raw))
         if norm < AXIS_EPS:
@@ -155,9 +150,9 @@ def _joint_spec(joint: yourdfpy.Joint, link_names: frozenset[str], file_name: st
     axis.setflags(write=False)
     return JointSpec(
         name=joint.name,
-        type=joint.type,
-        parent=joint.parent,
-        child=joint.child,
+        type=kind,
+        parent=parent,
+        child=child,
         origin=origin,
         axis=axis,
         lower=lower,
@@ -189,7 +184,7 @@ def _check_mimics(joints: dict[str, JointSpec], file_name: str) -> None:
             target = nxt
 
 
-def _cycle_from(link: str, parent_of: dict[str, yourdfpy.Joint]) -> list[str]:
+def _cycle_from(link: str, parent_of: dict[str, JointSpec]) -> list[str]:
     """Names of the joints of the cycle reached by walking up from ``link`` (every link on the way has a parent)."""
     seen: list[str] = []
     while link not in seen:
@@ -199,9 +194,10 @@ def _cycle_from(link: str, parent_of: dict[str, yourdfpy.Joint]) -> list[str]:
     return [parent_of[name].name for name in reversed(cycle)]
 
 
-def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
-    parent_of: dict[str, yourdfpy.Joint] = {}
-    for joint in robot.joints:
+def _tree_order(robot: UrdfRobot, joints: dict[str, JointSpec], file_name: str) -> tuple[str, tuple[str, ...], tuple[str, ...]]:
+    """The root link, and joints and links parents-first (breadth first, ties in document order)."""
+    parent_of: dict[str, JointSpec] = {}
+    for joint in joints.values():
         if joint.child in parent_of:
             raise AssetError(
                 f"link '{joint.child}' is the child of two joints ('{parent_of[joint.child].name}' and '{joint.name}')",
@@ -210,8 +206,8 @@ def _tree_order(robot: yourdfpy.Robot, file_name: str) -> tuple[str, tuple[str, 
             )
         parent_of[joint.child] = joint
     roots = [link.name for link in robot.links if link.name not in parent_of]
-    children: dict[str, list[yourdfpy.Joint]] = {}
-    for joint in robot.joints:
+    children: dict[str, list[JointSpec]] = {}
+    for joint in joints.values():
         children.setdefault(joint.parent, []).append(joint)
     reached = set(roots)
     queue = deque(roots)
