@@ -175,6 +175,42 @@ def _frame_count(joint_values: Mapping[str, FloatArray], base: Transforms | None
     return 1
 
 
+def subtree_poses(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: Mapping[str, Transforms]) -> dict[str, Transforms]:
+    """(t, 4, 4) world poses of the links ``joint`` moves, for its values (t,), the rest of the asset at ``rest``
+    (``link_poses(asset, {}, frames=1)``).
+
+    The same arithmetic as :func:`link_poses` on the subtree only: work in the size of the subtree, not of the
+    asset (a per-joint question asked of every joint was work in the square of the asset's size). When the
+    joint drives mimic followers, their links may lie anywhere, so the whole asset is posed.
+    """
+    values = np.asarray(values, dtype=np.float64).reshape(-1)
+    count = values.shape[0]
+    driven = _driven_values(asset, {joint: values}, count)
+    if len(driven) != 1:
+        poses = link_poses(asset, {joint: values}, frames=count)
+        return {name: poses[name] for name in asset.moving_links(joint)}
+    at_rest = _rest_locals(asset)
+    out: dict[str, Transforms] = {}
+    for link in asset.moving_links(joint):  # in link_order: a parent before its children
+        spec = asset.parent_joint(link)
+        assert spec is not None  # every moved link hangs from a joint
+        local = spec.origin[None] @ joint_motion(spec, values) if spec.name == joint else at_rest[spec.name]
+        parent = out.get(spec.parent)
+        out[link] = (np.broadcast_to(rest[spec.parent], (count, 4, 4)) if parent is None else parent) @ local
+    return out
+
+
+def subtree_motion(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: Mapping[str, Transforms]) -> Transforms | None:
+    """(t, 4, 4) world motion that takes the links ``joint`` moves from their rest poses to its values (t,):
+    one rigid transform for the whole subtree, so posing it is one product over its points. None when the
+    joint drives mimic followers (their links move otherwise): use :func:`subtree_poses`."""
+    values = np.asarray(values, dtype=np.float64).reshape(-1)
+    if len(_driven_values(asset, {joint: values}, values.shape[0])) != 1:
+        return None
+    spec = asset.joints[joint]
+    return (rest[spec.parent][0] @ spec.origin)[None] @ joint_motion(spec, values) @ np.linalg.inv(rest[spec.child][0])[None]
+
+
 def rest_poses(asset: ArticulatedAsset) -> dict[str, FloatArray]:
     """(4, 4) world pose of every link at the rest configuration."""
     return {name: pose[0] for name, pose in link_poses(asset, {}, frames=1).items()}

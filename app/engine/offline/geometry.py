@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from app.engine.asset.kinematics import link_poses
+from app.engine.asset.kinematics import link_poses, subtree_motion, subtree_poses
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import CONTROL_KINDS, HINGED_KINDS, PartKind, info, kind_of_label
 from app.engine.offline.naming import link_kind, tokens
@@ -100,14 +100,47 @@ def _posed(points: dict[str, FloatArray], poses: dict[str, FloatArray], links: t
     return np.concatenate(chunks) if chunks else np.zeros((0, 3))
 
 
-def _closedness(moving: FloatArray, static: FloatArray) -> tuple[float, float]:
+def _moved_at(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: dict[str, FloatArray],
+              points: dict[str, FloatArray], moved: FloatArray) -> list[FloatArray]:
+    """The points of the links ``joint`` moves (``moved``: at rest, world frame), at each of its ``values``."""
+    motion = subtree_motion(asset, joint, values, rest)
+    if motion is None:
+        poses = subtree_poses(asset, joint, values, rest)
+        return [_posed(points, poses, asset.moving_links(joint), frame) for frame in range(len(values))]
+    return [moved @ m[:3, :3].T + m[:3, 3] for m in motion]
+
+
+def _closedness(moving: FloatArray, static_low: FloatArray, static_high: FloatArray) -> tuple[float, float]:
     """(protrusion, box volume) of a configuration: lower = more closed."""
-    low, high = static.min(axis=0), static.max(axis=0)
-    outside = np.maximum(low - moving, 0.0) + np.maximum(moving - high, 0.0)
+    outside = np.maximum(static_low - moving, 0.0) + np.maximum(moving - static_high, 0.0)
     protrusion = float(np.linalg.norm(outside, axis=1).mean())
-    union = np.concatenate([moving, static])
-    volume = float(np.prod(np.maximum(union.max(axis=0) - union.min(axis=0), 1e-9)))
+    low, high = np.minimum(moving.min(axis=0), static_low), np.maximum(moving.max(axis=0), static_high)
+    volume = float(np.prod(np.maximum(high - low, 1e-9)))
     return protrusion, volume
+
+
+@dataclass(frozen=True)
+class _RestBoxes:
+    """Each visual link's box at rest (world frame): a joint's static box is the box of the links it does
+    not move, found without posing those links again (work per joint in the asset's link count, not points)."""
+
+    names: tuple[str, ...]
+    low: FloatArray
+    high: FloatArray
+
+    @classmethod
+    def of(cls, world: dict[str, FloatArray]) -> _RestBoxes:
+        names = tuple(n for n, p in world.items() if p.shape[0])
+        low = np.array([world[n].min(axis=0) for n in names]).reshape(-1, 3)
+        high = np.array([world[n].max(axis=0) for n in names]).reshape(-1, 3)
+        return cls(names, low, high)
+
+    def without(self, moving: tuple[str, ...]) -> tuple[FloatArray, FloatArray] | None:
+        """(low, high) of every link not in ``moving``; None when nothing stays still."""
+        keep = np.fromiter((n not in moving for n in self.names), dtype=bool, count=len(self.names))
+        if not keep.any():
+            return None
+        return self.low[keep].min(axis=0), self.high[keep].max(axis=0)
 
 
 def _nearest_face_normal(point: FloatArray, box_low: FloatArray, box_high: FloatArray) -> FloatArray:
@@ -138,12 +171,13 @@ def _tip(moved: FloatArray, pivot: FloatArray, axis: FloatArray, fallback: Float
     return moved[int(np.argmax(np.linalg.norm(radial, axis=1)))]
 
 
-def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> JointGeometry:
+def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, FloatArray], rest: dict[str, FloatArray],
+                    world: dict[str, FloatArray], boxes: _RestBoxes) -> JointGeometry:
     spec = asset.joints[joint]
     moving = asset.moving_links(joint)
-    static_links = [n for n in asset.visual_links if n not in moving]
-    static = _posed(points, rest, static_links)
-    moved = _posed(points, rest, moving)
+    static = boxes.without(moving)
+    moved_chunks = [world[n] for n in moving if n in world]
+    moved = np.concatenate(moved_chunks) if moved_chunks else np.zeros((0, 3))
     frame = rest[spec.parent][0] @ spec.origin
     axis_world = frame[:3, :3] @ spec.axis
     centroid = moved.mean(axis=0) if moved.shape[0] else frame[:3, 3]
@@ -152,23 +186,21 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
     press_outward = False
     face = np.zeros(3)
     size = float(np.linalg.norm(moved.max(axis=0) - moved.min(axis=0))) if moved.shape[0] else 0.0
-    if static.shape[0]:
-        face = _nearest_face_normal(centroid, static.min(axis=0), static.max(axis=0))
+    if static is not None:
+        face = _nearest_face_normal(centroid, *static)
     if spec.bounded and spec.lower is not None and spec.upper is not None and spec.upper > spec.lower:
         values = np.array([spec.lower, spec.upper])
-        poses = link_poses(asset, {joint: values}, frames=2)
         heights, scores, depth = [], [], []
-        for frame_index in range(2):
-            posed = _posed(points, poses, moving, frame_index)
-            if posed.shape[0] == 0 or static.shape[0] == 0:
+        for posed in _moved_at(asset, joint, values, rest, points, moved):
+            if posed.shape[0] == 0 or static is None:
                 break
-            protrusion, volume = _closedness(posed, static)
+            protrusion, volume = _closedness(posed, *static)
             scores.append((protrusion, volume))
             heights.append(float(posed[:, 2].mean()))
             depth.append(float((posed.mean(axis=0) - centroid) @ face))
-        if len(scores) == 2:
-            diag = max(float(np.linalg.norm(static.max(axis=0) - static.min(axis=0))), 1e-9)
-            base_volume = float(np.prod(np.maximum(static.max(axis=0) - static.min(axis=0), 1e-9)))
+        if static is not None and len(scores) == 2:
+            diag = max(float(np.linalg.norm(static[1] - static[0])), 1e-9)
+            base_volume = float(np.prod(np.maximum(static[1] - static[0], 1e-9)))
             score = [p / diag + (v / base_volume - 1.0) for p, v in scores]
             if abs(score[0] - score[1]) > OPEN_CLOSED_MIN_GAP:
                 closed_index = int(np.argmin(score))
@@ -181,10 +213,10 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
                     spec.type == "prismatic"):
                 press, press_outward = float(values[int(np.argmax(depth))]), True  # its only travel leads out of its face
     home_centroid, home_face = centroid, face
-    if closed is not None and static.shape[0]:
-        home = _posed(points, link_poses(asset, {joint: np.array([closed])}, frames=1), moving)
+    if closed is not None and static is not None:
+        home = _moved_at(asset, joint, np.array([closed]), rest, points, moved)[0]
         home_centroid = home.mean(axis=0)
-        home_face = _nearest_face_normal(home_centroid, static.min(axis=0), static.max(axis=0))
+        home_face = _nearest_face_normal(home_centroid, *static)
     return JointGeometry(
         joint=joint,
         type=spec.type,
@@ -218,7 +250,8 @@ def _horizontal(vector: FloatArray) -> FloatArray:
     return flat / norm if norm > 1e-9 else np.zeros(3)
 
 
-def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray]) -> FloatArray:
+def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray],
+                rest: dict[str, FloatArray]) -> FloatArray:
     """One part's vote for the object's front (zero when it says nothing)."""
     if geometry.category in CONTROL_KINDS:
         # a knob on a tilted control panel: its axis, taken pointing up and out of the panel,
@@ -229,9 +262,12 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
         return np.zeros(3)
     if geometry.open_value is not None and geometry.closed_value is not None:
         if geometry.type == "prismatic":
-            posed = link_poses(asset, {geometry.joint: np.array([geometry.closed_value, geometry.open_value])}, frames=2)
-            motion = _posed(points, posed, geometry.moving_links, 1).mean(axis=0) - _posed(points, posed, geometry.moving_links, 0).mean(axis=0)
-            return 2.0 * _horizontal(motion)
+            ends = np.array([geometry.closed_value, geometry.open_value])
+            if subtree_motion(asset, geometry.joint, ends, rest) is None:  # mimic followers move with it: where its parts go on average
+                posed = subtree_poses(asset, geometry.joint, ends, rest)
+                shift = _posed(points, posed, geometry.moving_links, 1).mean(axis=0) - _posed(points, posed, geometry.moving_links, 0).mean(axis=0)
+                return 2.0 * _horizontal(shift)
+            return 2.0 * _horizontal(geometry.axis_world * (geometry.open_value - geometry.closed_value))
         if abs(geometry.axis_world @ UP) < 0.7 and abs(geometry.home_face @ UP) > 0.5:
             # a lid (or laptop screen) on top, hinged at the back: the front is away from the hinge
             offset = geometry.pivot_world - center
@@ -259,13 +295,14 @@ def _named_front(joints: dict[str, JointGeometry]) -> FloatArray:
     return np.zeros(3)
 
 
-def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset) -> FloatArray:
+def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
+                points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
     """Horizontal unit vector the object faces: where doors, drawers and controls point
-    (and where parts named "front" sit, e.g. a car's front wheels)."""
-    points = _local_points(asset)
+    (and where parts named "front" sit, e.g. a car's front wheels); ``points`` and ``rest`` as
+    :func:`_local_points` and ``link_poses(asset, {}, frames=1)``."""
     vote = _named_front(joints)
     for geometry in joints.values():
-        vote += _front_vote(geometry, center, asset, points)
+        vote += _front_vote(geometry, center, asset, points, rest)
     if np.linalg.norm(vote) < 1e-6:
         return DEFAULT_FRONT.copy()
     front = _horizontal(vote)
@@ -299,11 +336,12 @@ def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeomet
 def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     points = _local_points(asset)
     rest = link_poses(asset, {}, frames=1)
-    everything = _posed(points, rest, asset.visual_links)
-    low, high = everything.min(axis=0), everything.max(axis=0)
+    world = {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points}
+    boxes = _RestBoxes.of(world)
+    low, high = boxes.low.min(axis=0), boxes.high.max(axis=0)
     center = (low + high) / 2.0
-    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest) for j in asset.controllable_joints})
-    front = infer_front(joints, center, asset)
+    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, world, boxes) for j in asset.controllable_joints})
+    front = infer_front(joints, center, asset, points, rest)
     right = np.cross(-front, UP)
     return ObjectGeometry(
         center=center,
