@@ -10,6 +10,8 @@ from __future__ import annotations
 from collections.abc import Mapping
 from types import MappingProxyType
 
+from app.engine.lexicon.kinds import PartKind
+
 _CONTAINERS = frozenset({"box", "case", "chest", "crate", "container", "tin", "carton", "package", "coffer", "cashbox", "lockbox",
                          "strongbox", "toolbox", "lunchbox", "breadbox", "trunk", "footlocker", "cooler", "casket", "storage"})
 _FURNITURE = frozenset({"cabinet", "cupboard", "dresser", "wardrobe", "storage", "nightstand", "bedside", "locker", "bookcase", "desk",
@@ -35,7 +37,7 @@ OBJECT_FAMILIES: Mapping[str, frozenset[str]] = MappingProxyType({
     "oven": _COOKERS | {"microwave"},
     "refrigerator": frozenset({"fridge", "refrigerator", "freezer", "cooler", "cabinet"}),
     "dishwasher": frozenset({"dishwasher", "washer", "cabinet"}),
-    "washing": frozenset({"washer", "washing", "dryer", "laundry"}),
+    "washing": frozenset({"washer", "washing", "dryer", "laundry", "top-loader", "front-loader", "washing-machine"}),
     "toaster": frozenset({"toaster"}),
     "coffee": frozenset({"coffee", "espresso", "brewer", "maker", "coffeemaker", "blender", "jug", "mixer", "juicer"}),
     "faucet": _TAPS,
@@ -61,3 +63,16 @@ def names_other_object(noun: str, category: str | None) -> bool:
     """``noun`` names a kind of object this asset (of ``category``) is not."""
     family = OBJECT_FAMILIES.get(category or "")
     return family is not None and noun in NAMED_OBJECTS and noun not in family
+
+
+CARRIED: Mapping[str, tuple[frozenset[str], PartKind]] = MappingProxyType({
+    "toaster": (frozenset({"bread", "toast", "slice", "bagel", "waffle", "crumpet", "muffin", "pop-tart"}), PartKind.LEVER),
+})
+"""Asset category -> what users put in it and the part that carries it ("sink the bread down into the slots": the
+toaster's carriage lever)."""
+
+
+def carrier_of(noun: str, category: str | None) -> PartKind | None:
+    """The kind of part that carries ``noun`` in an object of ``category`` (None when it carries nothing by that name)."""
+    carried = CARRIED.get(category or "")
+    return carried[1] if carried is not None and noun in carried[0] else None

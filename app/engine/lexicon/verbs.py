@@ -74,7 +74,7 @@ S = VerbSense
 _OPENING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, up=S.RAISE, down=S.LOWER, back=S.RETURN, off=S.OPEN)
 _PUSHING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, **{"in": S.PUSH_IN}, down=S.PRESS, back=S.RETURN, up=S.RAISE, out=S.PULL_OUT)
 _PULLING = _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, down=S.LOWER, up=S.RAISE, back=S.RETURN, **{"in": S.PUSH_IN}, off=S.OPEN)
-_FOLDING = _p(open=S.OPEN, out=S.OPEN, up=S.RAISE, back=S.RECLINE, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, over=S.TOGGLE)
+_FOLDING = _p(open=S.OPEN, out=S.OPEN, up=S.RAISE, back=S.RECLINE, down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE, over=S.TOGGLE)
 _TURNING = _p(on=S.SWITCH_ON, off=S.SWITCH_OFF, back=S.RETURN, open=S.OPEN, shut=S.CLOSE, around=S.YAW, round=S.YAW)
 _RAISING = _p(open=S.OPEN, up=S.RAISE, off=S.OPEN, back=S.RETURN, out=S.PULL_OUT)
 _LOWERING = _p(down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE, back=S.RETURN, open=S.OPEN)
@@ -170,6 +170,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("pick", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("lower", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("drop", S.LOWER, _LOWERING, object_sense=S.MOVE),
+    VerbInfo("sink", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("put", S.LOWER, _p(down=S.LOWER, back=S.RETURN, away=S.PUSH_IN, on=S.CLOSE), object_sense=S.MOVE),
     VerbInfo("lay", S.LOWER, _p(down=S.LOWER, shut=S.CLOSE, closed=S.CLOSE, back=S.RECLINE, open=S.OPEN, flat=S.OPEN), object_sense=S.MOVE),
     VerbInfo("place", S.LOWER, _LOWERING, object_sense=S.MOVE),
@@ -228,7 +229,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("get_at", S.GRASP, stative=True),  # "to get at the second rack, ...": reach it (what follows moves it)
     VerbInfo("bring", S.MOVE, _p(up=S.RAISE, down=S.LOWER, back=S.RETURN, out=S.PULL_OUT, **{"in": S.PUSH_IN}, around=S.YAW, round=S.YAW),
              object_sense=S.MOVE),
-    VerbInfo("stand", S.RAISE, _p(up=S.RAISE)),
+    VerbInfo("stand", S.RAISE, _p(up=S.RAISE, on=S.PRESS)),
     VerbInfo("clip", S.LOCK, _p(shut=S.LOCK, closed=S.LOCK, on=S.LOCK, open=S.UNLATCH)),
     VerbInfo("snap_shut", S.CLOSE),
     VerbInfo("fasten", S.LOCK),

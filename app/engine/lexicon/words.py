@@ -184,7 +184,7 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "vanity", "hutch", "cubby", "wardrobe", "closet", "pantry", "oven", "range", "toaster", "tap", "faucet", "mixer", "basin",
     "bank_of_drawers", "set_of_drawers", "pan", "light", "lamp", "espresso", "blender", "jug",
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
-    "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller",
+    "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller", "top-loader", "front-loader",
 )
 PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody"})
 """The user and other people: a clause about them is not about the asset ("so I can reach in")."""
@@ -206,8 +206,9 @@ CORRECTIONS: tuple[tuple[str, ...], ...] = (
     ("no", "wait"), ("actually", "no"), ("no", "actually"), ("no", "sorry"), ("sorry",), ("nvm",), ("never", "mind"), ("i", "mean"),
     ("or", "rather"), ("scratch", "that"), ("correction",), ("actually",), ("no",))
 """Words that take back the amount just said ("open it 60 degrees... no wait, make it 45"): the amount after them replaces it."""
-CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"), ("change", "it", "to"), ("change", "that", "to"), ("go", "for"))
-"""What may come between a correction and its new amount."""
+CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"), ("change", "it", "to"), ("change", "that", "to"), ("go", "for"),
+                                                   ("i", "meant"), ("i", "mean"))
+"""What may come between a correction and its new amount (or its other part: "no wait, I meant the other one")."""
 SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
     "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
@@ -233,7 +234,7 @@ ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwa
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
-ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers"})
+ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})
@@ -271,7 +272,7 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
                    "in_front_of", "on_top_of", "out_of", "against", "beneath", "underneath", "where", "when", "once",
                    "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
-                   "cannot", "can't", "can", "will", "would", "should", "must",
+                   "cannot", "can't", "can", "will", "would", "should", "must", "no",
                    "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "farther", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",

@@ -21,7 +21,7 @@ from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
 from app.engine.offline import mechanisms as mech
-from app.engine.offline.conditions import condition
+from app.engine.offline.conditions import condition, exclude
 from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, travel_left
 from app.engine.offline.grounding import Part, movable_parts, openable
@@ -171,14 +171,16 @@ class Builder:
 
     # --- acts ----------------------------------------------------------------------
     def add(self, act: Act) -> None:
+        if act.note:
+            self.notes.append(act.note)
         for exclusion in act.exclusions:
-            self._exclude(exclusion)
+            exclude(self, exclusion)
         goal = act.goal
         sense = self.frame_sense(goal)
         if goal.guessed_verb:
             self.notes.append(f"read the verb '{goal.guessed_verb}' as '{sense.value}' (not a verb the agent knows)")
         if act.condition:
-            self._condition(act)
+            condition(self, act)
             return
         if goal.verb is None and not goal.wish and (not goal.themes or self._nothing_known(goal)):
             self.notes.append(f"ignored '{goal.text}' (no action found)")
@@ -223,8 +225,9 @@ class Builder:
             controls = self._instrument_controls(goal)
         effects_parts, effect_words = self.ground(goal, sense, goal.themes, prefer=prefer)
         if not effects_parts and not goal.themes and not controls:
-            effects_parts = self.refs.pronoun(release=sense is VerbSense.RELEASE) or (
-                self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else [])  # "flush!"
+            implied = self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else []
+            # "flush!", "put the lid up, then flush": the part the verb works, not "it"
+            effects_parts = implied or self.refs.pronoun(release=sense is VerbSense.RELEASE)
             effect_words = ["it"] * len(effects_parts)
         if not effects_parts and not controls:
             raise self.refs.refuse(f"nothing in '{goal.text}' names a part to move")
@@ -261,6 +264,8 @@ class Builder:
         if first.pronoun:
             if self.refs.last_object:
                 return moves_object(frame, pronoun=True, after_part=False) or frame.returning
+            if self.refs.topic:
+                return False  # "Bucket handle: let it fall toward the front": the part the heading named
             after_part = bool(self.refs.last)
             return moves_object(frame, pronoun=True, after_part=after_part) and (after_part or not self.parts or frame.verb in ("push", "move", "yaw"))
         return False
@@ -341,20 +346,6 @@ class Builder:
             plain = replace(frame, quantities=Quantities(speed_factor=frame.quantities.speed_factor))  # the amount is the goal's
             out.extend(self.moves(plain, VerbSense.OPERATE, list(found.parts), [mention.words] * len(found.parts), "control"))
         return out
-
-    def _exclude(self, frame: Frame) -> None:
-        """"without touching the knob", "don't use the pedal": keep those parts still."""
-        for mention in frame.themes:
-            try:
-                parts, _ = self.ground(frame, self.frame_sense(frame), (mention,))
-            except GroundingError:
-                continue
-            self.excluded.update(p.joint for p in parts)
-            if any(mech.is_control(p) for p in parts):
-                self.manual = True
-
-    def _condition(self, act: Act) -> None:
-        condition(self, act)
 
     def reached(self, move: Move) -> bool:
         now = self.tracker.value(move.part.joint)

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 
 from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
 
 if TYPE_CHECKING:
@@ -32,7 +33,7 @@ def condition(builder: Builder, act: Act) -> None:
         if any(not m.is_object for m in frame.themes):
             frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))
         try:
-            builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [])
+            builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [], topic=True)
         except GroundingError:
             if any(m.kind is not None and m.head not in _GROUPS and not (m.plural or m.collective) for m in frame.themes):
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
@@ -67,3 +68,15 @@ def set_topic(builder: Builder, frame: Frame) -> None:
         return
     if len(found) == 1:
         builder.refs.last, builder.refs.last_kind = list(found), found[0].kind
+
+
+def exclude(builder: Builder, frame: Frame) -> None:
+    """"without touching the knob", "don't use the pedal", "without using the pedal": keep those parts still."""
+    for mention in (*frame.themes, *frame.instruments):
+        try:
+            parts, _ = builder.ground(frame, builder.frame_sense(frame), (mention,))
+        except GroundingError:
+            continue
+        builder.excluded.update(p.joint for p in parts)
+        if any(mech.is_control(p) for p in parts):
+            builder.manual = True

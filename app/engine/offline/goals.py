@@ -112,7 +112,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if rolls and sense in (VerbSense.TURN, VerbSense.OPERATE, VerbSense.MOVE):
         return "forward"  # a wheel turned without a sense turns the way it rolls forward
     if part_class_ is PartClass.OPENABLE and sense in (VerbSense.RAISE, VerbSense.LOWER):
-        lid = part.kind is not None and info(part.kind).lid_like
+        lid = part.kind is not None and info(part.kind).lid_like and abs(float(geometry.home_face[2])) > 0.5  # a lid on a side face (a
+        # standing suitcase's front lid) opens down like an oven door
         if not lid and geometry.up_value is not None and geometry.down_value is not None and geometry.open_value is not None:
             return "up" if sense is VerbSense.RAISE else "down"  # an oven door lowers open, a lid lifts open
     words = set(frame.text.split())

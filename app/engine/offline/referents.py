@@ -13,6 +13,7 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
+from app.engine.lexicon.objects import carrier_of
 from app.engine.lexicon.words import Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
@@ -26,10 +27,10 @@ from app.engine.offline.grounding import (
     narrow,
     position,
     reading_order,
-    similar,
 )
 from app.engine.offline.naming import link_words
 from app.engine.offline.reading.mentions import Mention
+from app.engine.offline.tiebreak import tie_break
 
 EXTREME_GAP_M = 0.01
 """A part at least this much further toward the named side than the next one is "the bottom one"."""
@@ -55,6 +56,8 @@ class Referents:
     """Joints named so far ("the other door" is one not named yet)."""
     last_object: bool = False
     """The previous clause moved the whole object: "it" is the object."""
+    topic: bool = False
+    """``last`` was named by a heading ("Espresso machine lever: shift it 30 degrees left"): "it" is that part."""
     group: list[Part] = field(default_factory=list)
     """The last several parts one plural mention named ("both fridge doors")."""
     earlier: list[list[Part]] = field(default_factory=list)
@@ -86,6 +89,8 @@ class Referents:
         """The parts ``mention`` names (pronouns and objects are the caller's: see :meth:`pronoun`)."""
         kind = mention.kind if not mention.anaphor else (mention.kind or self.last_kind)
         notes: list[str] = []
+        if kind is None and (kind := carrier_of(mention.head, self.obj.category)) is not None:
+            notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
         if not _qualified(mention) and not mention.plural and mention.head in self.assigned:
             return Grounding(parts=(self.assigned[mention.head],), how="kind")
         exact = [p for p in self.parts if mention.head in (p.joint, p.link)]
@@ -153,21 +158,10 @@ class Referents:
         if len(seen) == 1 and not _qualified(mention):
             notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one the prompt already worked ({seen[0].link})")
             return Grounding(parts=(seen[0],), how=how, notes=tuple(notes))
-        front = [p for p in kept if position(p, self.obj)[0] > 0]
-        if all(p.kind is not None and info(p.kind).control for p in kept) and len(front) == 1:
-            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one on the front ({front[0].link})")
-            return Grounding(parts=(front[0],), how=how, notes=tuple(notes))
-        if (kind is not None and info(kind).lid_like) or all(p.kind is not None and info(p.kind).lid_like for p in kept):
-            heights = sorted(((position(p, self.obj)[2], p) for p in kept), key=lambda hp: hp[0], reverse=True)
-            if heights[0][0] - heights[1][0] > 0.25 * self.obj.extents[2]:
-                top = heights[0][1]
-                notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the one on top ({top.link})")
-                return Grounding(parts=(top,), how=how, notes=tuple(notes))
-        if not similar(kept):
-            chosen = max(kept, key=lambda p: p.geometry.size)
-            label = kind.value if kind is not None else mention.head
-            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took the largest {label} ({chosen.link})")
-            return Grounding(parts=(chosen,), how=how, notes=tuple(notes))
+        broken = tie_break(mention, kind, kept, self.obj, self.asset)
+        if broken is not None:
+            notes.append(f"'{mention.words or mention.head}' fits {len(kept)} parts; took {broken[1]} ({broken[0].link})")
+            return Grounding(parts=(broken[0],), how=how, notes=tuple(notes))
         return Grounding(how=how, ambiguous=tuple(kept), notes=tuple(notes))
 
     def plan(self, mentions: list[Mention]) -> None:
@@ -369,9 +363,10 @@ class Referents:
             return next((list(parts) for parts in reversed(self.earlier) if all(_shuts(p) for p in parts)), list(self.last))
         return list(self.last)
 
-    def remember(self, themes: list[Part], controls: list[Part]) -> None:
+    def remember(self, themes: list[Part], controls: list[Part], *, topic: bool = False) -> None:
         if themes or controls:
             self.last_object = False
+            self.topic = topic
         if themes:
             if self.last and self.last != list(themes):
                 self.earlier.append(self.last)

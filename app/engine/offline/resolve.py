@@ -130,9 +130,12 @@ def end_value(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: A
               now: float | None = None) -> float | None:
     """The joint value ``goal.state`` names, before any amount."""
     state = goal.state
+    top_lid = geometry.category is not None and info(geometry.category).lid_like and float(geometry.home_face[2]) > 0.5 and (
+        geometry.open_value is not None and geometry.closed_value is not None)  # a bin's lid that swings over the top is up when open
     table: dict[str, float | None] = {
-        "open": open_of(geometry), "closed": closed_of(geometry), "pressed": pressed_of(geometry), "up": geometry.up_value,
-        "down": geometry.down_value, "rest": geometry.rest, "upper": geometry.upper, "lower": geometry.lower,
+        "open": open_of(geometry), "closed": closed_of(geometry), "pressed": pressed_of(geometry),
+        "up": open_of(geometry) if top_lid else geometry.up_value, "down": closed_of(geometry) if top_lid else geometry.down_value,
+        "rest": geometry.rest, "upper": geometry.upper, "lower": geometry.lower,
         "previous": previous if previous is not None else geometry.rest, "value": goal.value,
     }
     if state in table:

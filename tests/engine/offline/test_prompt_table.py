@@ -573,6 +573,48 @@ ROWS: list[Row] = [
     R("extra/storage_20279", "I'm about to sit down at the desk, so shut the drawer.", joints={"joint_0": E(end="lower")}),
     R("extra/coffee_machine_102145", "Push the lever on top all the way to the left so the machine starts heating.",
       joints={"joint_0": E(end="lower"), "joint_1": E(still=True), "joint_2": E(still=True)}),
+    # --- blind dev probe, round 12 (benchmark/probes/dev_round12_prompts.jsonl): classes fixed, rephrased ---
+    # "no" and chat interjections are no part names
+    R("dishwasher_11700", "Lower the dishwasher door 30 degrees, no more.", joints={"joint_0": E(end=0.5236)}),
+    R("microwave_7304", "hey, could u open the microwave door", joints={"joint_1": E(end="upper")}),
+    R("toilet_102622", "Raise the seat cover 30 degrees - no flushing please.", joints={"joint_0": E(end=0.5236), "joint_1": E(still=True)}),
+    R("safe_102387", "Open the door - there's no need to turn the dial.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    # "the drawer's sticking out" is "is"; "home" is in as far as it goes
+    R("extra/storage_20279", "The drawer's hanging out; push it home.", joints={"joint_0": E(end="lower")}),
+    # a heading that names a part makes it "it", also with a direction ("toward the front", "to the left")
+    R("bucket_100454", "Handle: tip it toward the front until it lies flat.", joints={"joint_0": E(end=-1.5708)}),
+    R("extra/coffee_machine_102145", "Lever: nudge it 20 degrees toward the left.", joints={"joint_0": E(end=-0.3491), "joint_3": E(still=True)}),
+    R("washing_machine_103508", "On the washer, the knob furthest to the left: a quarter twist clockwise.",
+      joints={"joint_3": E(moves=True), "joint_1": E(still=True), "joint_2": E(still=True)}),
+    # a wanted state with "needs to / has to / should be"
+    R("oven_7138", "The oven door has to be fully open.", joints={"joint_0": E(end="upper")}),
+    # a negation told first, and "using the pedal" as what not to touch
+    R("trash_can_102181", "Without using the pedal, lift the lid by hand to 90 degrees.", joints={"joint_0": E(still=True), "joint_1": E(end=1.5708)}),
+    R("trash_can_102181", "Stand on the pedal and keep it down so the lid stays up.", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    # "into its locked position": the latch's shut end
+    R("extra/box_100214", "Flip the left catch into its locked position.", joints={"joint_1": E(end=0.4363), "joint_2": E(still=True)}),
+    # a correction that names the other part
+    R("extra/storage_25308", "Pull the left drawer out 15 cm - no wait, I meant the other one.", joints={"joint_0": E(end=0.15), "joint_1": E(still=True)}),
+    # a side word before a part noun is no verb ("bottom door down")
+    R("extra/oven_7179", "Top door down flat.", joints={"joint_4": E(moves=True), "joint_3": E(still=True)}),
+    # "N full <sense> turns", "..., turning clockwise"
+    R("safe_102387", "Give the dial two full clockwise turns.", joints={"joint_1": E(abs_end=12.5664), "joint_0": E(still=True)}),
+    R("safe_101593", "Big dial: one and a half revolutions, turning clockwise.", joints={"joint_1": E(end=-9.4248)}),
+    # a height "above the pot" is measured from closed; "measured from where it sits shut"
+    R("kitchen_pot_100038", "Lift the lid so it floats 20 cm above the pot.", joints={"joint_0": E(end=0.2)}),
+    R("box_102456", "Open the lid 60 degrees, measured from where it sits closed.", joints={"joint_0": E(end=BOX_102456_CLOSED + 1.0472)}),
+    # what a part carries or holds: the toaster's bread, a thing kept in a door
+    R("toaster_103483", "Sink the slices down.", joints={"joint_0": E(moves=True)}),
+    R("refrigerator_11178", "I need the mustard, which sits in the right-hand door.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("refrigerator_11178", "Get the milk out - it's on the shelf in the left door.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("washing_machine_103508", "Open the top-loader.", joints={"joint_0": E(end="upper")}),
+    # steps split by " / "; a return after a hold
+    R("storage_27044", "drawer out 30cm / wait 1s / back in", joints={"joint_0": E(peak=0.3, end="lower")}),
+    R("laptop_10697", "Shut the laptop, leave it for a second, then back up to the angle it started at.", joints={"joint_1": E(peak="lower", end=0.0)}),
+    # a lid on a side face opens downward; "full right"; a flush after a lid works the flush button
+    R("extra/suitcase_100550", "The case is upright. Fold its front lid down all the way.", joints={"joint_0": E(end="upper")}),
+    R("faucet_148", "Tap lever: full right.", joints={"joint_0": E(end="lower")}),
+    R("toilet_102622", "Lid up, then flush.", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
 ]
 
 

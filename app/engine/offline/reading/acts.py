@@ -9,10 +9,11 @@ from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS
+from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, OPPOSITE_SIDES
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Quantities
+from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
 
 DEFAULT_WAIT_S = 1.0
 
@@ -31,6 +32,8 @@ class Act:
     """What the user says the act causes ("so the door pops open"): refines or adds its effects."""
     exclusions: tuple[Frame, ...] = ()
     """What the user says not to do ("without touching the knob")."""
+    note: str = ""
+    """How the act was read when that is not plain from its words (a stored thing's holder opened)."""
 
     @property
     def frames(self) -> tuple[Frame, ...]:
@@ -78,8 +81,12 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return replace(frame, quantities=quantities)
     if frame.verb is not None and not frame.themes and not frame.instruments and previous is not None and previous.themes and (
             frame.text.split()[0] not in ("it", "they", "the")) and frame.quantities.axis is None and frame.sense not in (None, VerbSense.WAIT) and (
-            not frame.let and frame.marker in ("then", "and_then", "after_that", "next", "afterwards", "finally")):
+            not frame.let and frame.marker in ("then", "and_then", "after_that", "next", "afterwards", "finally")) and not (
+            frame.verb in VERBS and VERBS[frame.verb].implies):  # "put the lid up, then flush": the part flushing works
         return replace(frame, themes=previous.themes)  # "the handle swings up, then drops back down": the same part
+    if frame.verb is None and frame.returning and not frame.themes and frame.quantities.amount is None and previous is not None and (
+            previous.verb is None and previous.themes and not previous.heading):
+        return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes)  # "drawer out 30cm / wait 1s / back in"
     if frame.verb is not None or previous is None or previous.verb is None:
         return frame
     amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None
@@ -90,8 +97,10 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return replace(frame, verb=previous.verb, sense=sense, themes=previous.themes, instruments=previous.instruments)
     if frame.codes and not frame.themes and not frame.returning:
         return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
-    if amount_only and frame.returning and frame.quantities.amount is None and previous.sense in (VerbSense.HOLD, VerbSense.WAIT):
-        # "leave it there 4 s, then back to where it started": the return is the step, not another hold
+    if (amount_only or all(m.pronoun for m in frame.themes)) and frame.returning and frame.quantities.amount is None and (
+            previous.sense in (VerbSense.HOLD, VerbSense.WAIT)):
+        # "leave it there 4 s, then back to where it started", "... then back up to the angle it started at": the return
+        # is the step, not another hold
         return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes, instruments=previous.instruments)
     if frame.themes and frame.quantities.amount is None and previous.quantities.amount is not None and not frame.returning and frame.particle is None and (
             frame.link in (Link.SEQUENCE, Link.PARALLEL) and not frame.stative and not frame.heading):
@@ -169,6 +178,26 @@ def _corrected(act: Act, frame: Frame) -> Act | None:
     return replace(act, goal=replace(act.goal, quantities=replace(act.goal.quantities, amount=amount)))
 
 
+def _recast(act: Act, frame: Frame) -> Act | None:
+    """``act`` on the part a correction names instead ("... the right drawer, no wait, I meant the other one"): "the
+    other one" is the said part's opposite side, "the left one" the said part on that side."""
+    said = act.goal.themes
+    if frame.verb is not None or frame.quantities.amount is not None or len(frame.themes) != 1 or len(said) != 1 or act.condition:
+        return None
+    new, old = frame.themes[0], said[0]
+    if new.is_object or new.pronoun or old.is_object or old.pronoun or (new.kind is not None and new.kind is not old.kind):
+        return None
+    if new.other:
+        if not old.sides:
+            return None
+        sides = tuple((OPPOSITE_SIDES.get(side, side), strict) for side, strict in old.sides)
+        theme = replace(old, sides=sides, words=f"{old.words}, corrected to {new.words}")
+    else:
+        theme = replace(old, sides=new.sides, ordinal=new.ordinal, ordinal_from=new.ordinal_from, size=new.size,
+                        words=f"{old.words}, corrected to {new.words}")
+    return replace(act, goal=replace(act.goal, themes=(theme,)))
+
+
 def build_acts(frames: list[Frame]) -> list[Act]:
     acts: list[Act] = []
     pending_wait = 0.0
@@ -179,11 +208,27 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     said: Frame | None = None  # the frame before, whatever became of it
     manner: Frame | None = None  # "Slowly, over about 3 seconds, ...": how the next action goes
     together = False  # a summary said the steps after it go at the same time
+    leading: list[Frame] = []  # negations told before any step
     for index, frame in enumerate(frames):
         verbless = frame.verb is None
-        revised = _corrected(acts[-1], frame) if acts and frame.correction else None
+        place = place_of(frame) if acts and not acts[-1].condition and unknown_things(acts[-1].goal) else None
+        if place is not None:
+            things = ", ".join(m.words or m.head for m in acts[-1].goal.themes)
+            acts[-1] = replace(acts[-1], goal=open_holder(acts[-1].goal, place),  # "I need the ketchup, which lives in the left door"
+                               note=f"'{things}' is no part: opened {place.words or place.head}, where it is kept")
+            continue
+        revised = (_corrected(acts[-1], frame) or _recast(acts[-1], frame)) if acts and frame.correction else None
         if revised is not None:
             acts[-1] = revised  # "open it 60 degrees... no wait, make it 45"
+            continue
+        if acts and not acts[-1].condition and frame.marker == "," and frame.themes and all(m.pronoun for m in frame.themes) and (
+                frame.sense is VerbSense.OPEN and frame.quantities == Quantities() and acts[-1].goal.quantities.amount is not None
+                and acts[-1].goal.sense in (None, VerbSense.OPEN) and bool(acts[-1].goal.themes)):
+            continue  # "Safe door at ninety degrees please - swing it out": how the step before goes, not another step
+        if acts and not acts[-1].condition and frame.conjoined and frame.text.split()[0].endswith("ing") and not frame.themes and (
+                frame.quantities.amount is None and frame.quantities.sense is not None and acts[-1].goal.quantities.sense is None):
+            goal = acts[-1].goal  # "dial - one and a quarter revolutions, going clockwise": which way the step before goes
+            acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, sense=frame.quantities.sense)))
             continue
         if frame.verb is None and frame.simultaneous and all(m.collective or m.pronoun for m in frame.themes) and len(acts) > 1:
             acts[-1] = replace(acts[-1], parallel=True)  # "..., both at the same time"
@@ -235,7 +280,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             acts.append(Act(goal=replace(frame, sense=None, verb=None, themes=parts_named, quantities=replace(frame.quantities, amount=None)),
                             condition=True))
             together = frame.simultaneous
-            previous_goal = frame  # the clauses after the colon may only name a part and an amount: they take its verb
+            previous_goal = replace(frame, themes=parts_named)  # the clauses after the colon may only name an amount: they take its verb and parts
             continue
         if frame.link is Link.RESULT and frame.themes and all(m.is_object for m in frame.themes) and ASPECT_VERBS & set(frame.text.split()) and (
                 frame.verb is None or frame.verb not in VERBS):
@@ -264,6 +309,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.link is Link.NEGATED:
             if acts:
                 acts[-1] = replace(acts[-1], exclusions=(*acts[-1].exclusions, frame))
+            else:
+                leading.append(frame)  # "Without using the pedal, lift the lid ...": told before the step it limits
             continue
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
         after_act = bool(acts) and not acts[-1].condition and acts[-1].goal.verb is not None and not acts[-1].goal.aside
@@ -316,6 +363,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         previous_goal = frame
     for condition in pending_conditions:  # "B once the door is open": the state comes before B
         acts.insert(max(len(acts) - 1, 0), Act(goal=condition, condition=True))
+    first = next((k for k, a in enumerate(acts) if not a.condition), None)
+    if leading and first is not None:
+        acts[first] = replace(acts[first], exclusions=(*leading, *acts[first].exclusions))
     if pending_wait and acts:
         acts[-1] = replace(acts[-1], hold_s=acts[-1].hold_s + pending_wait)
     return acts

@@ -270,6 +270,12 @@ def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
         return True, tokens[k + 1:]  # "I need ...", "need the whole microwave flipped round"
     if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
         return True, tokens[k + 3:]
+    words = [t.text for t in tokens]
+    for j in range(k + 1, len(tokens) - 1):
+        must = 3 if words[j:j + 3] in (["needs", "to", "be"], ["need", "to", "be"], ["has", "to", "be"], ["have", "to", "be"]) else (
+            2 if words[j:j + 2] in (["should", "be"], ["must", "be"]) else 0)
+        if must and words[k] in DETERMINERS and j + must < len(tokens) and tokens[j + must].text not in ("a", "an", "the"):
+            return True, tokens[k:j] + tokens[j + must:]  # "the oven door needs to be halfway down": the part and its wanted state
     return False, tokens
 
 
@@ -310,7 +316,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         objects = [m for m in objects if not m.start <= particle_at < m.end]
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
-    stative = verb_index is None and (progressive or described or any(t.text in STATIVE_VERBS for t in tokens))
+    stative = verb_index is None and not (tokens and tokens[0].text == "back") and (progressive or described or any(t.text in STATIVE_VERBS for t in tokens))  # not "back up to the angle it started at"
     intransitive = after_subject(tokens, verb_index) or finite is not None
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")

@@ -315,6 +315,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     if related is not None:
         return related
     i = mention.end
+    if i < len(tokens) and tokens[i].text.endswith("most") and tokens[i].text in SPATIAL and not mention.sides:  # "the knob furthest left"
+        return replace(mention, sides=(SPATIAL[tokens[i].text],), end=i + 1, words=_words(tokens, mention.start, i + 1))
     if i + 1 < len(tokens) and tokens[i].text == "on_top_of" and not mention.sides:  # "the lever on top of the machine": its top one
         return replace(mention, sides=(SPATIAL["top"],), end=i + 1, words=_words(tokens, mention.start, i + 1))
     if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of"}:

@@ -139,6 +139,12 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"
     if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] in ("the", "fully", "completely") and len(after) > 2 and after[2] in _CLOSED_WORDS)):
         return "closed"
+    if len(after) >= 2 and after[0] in ("above", "over", "clear_of") and after[1] in ("the", "its") and "current" not in after:
+        return "closed"  # "so it hovers 10 cm above the pot": a height over what it closes on
+    later = [t.text for t in tokens[end:end + 10]]
+    since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
+    if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
+        return "closed"  # "30 degrees, measured from where it sits shut"
     return None
 
 

@@ -18,8 +18,12 @@ from app.engine.lexicon.words import (
     CORRECTION_LEADS,
     CORRECTIONS,
     DETERMINERS,
+    OTHER_WORDS,
     REQUEST_PHRASES,
+    ROTATION_SENSE,
     SHORTHAND,
+    SPATIAL,
+    TURN_UNITS,
     VIEWER_POSSESSIVES,
 )
 from app.engine.offline.reading.token import Token
@@ -151,9 +155,16 @@ def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     return out
 
 
+def _other_part(tokens: list[Token], j: int) -> bool:
+    """"the other one", "the left one", "that other drawer": a part told apart from the one just said."""
+    words = [t.text for t in tokens[j:j + 4]]
+    return len(words) >= 2 and words[0] in DETERMINERS and any(w in OTHER_WORDS or w in SPATIAL for w in words[1:3])
+
+
 def corrections(tokens: list[Token]) -> list[Token]:
-    """"60 degrees... no wait, make it 45": a new clause that starts with ``instead`` and gives the new amount. Only a
-    correction followed (after its lead words) by a number counts ("no, the other door" is not one)."""
+    """"60 degrees... no wait, make it 45", "20 cm on the right drawer, no wait, I meant the other one": a new clause
+    that starts with ``instead`` and gives the new amount or the other part. Only a correction followed (after its
+    lead words) by a number, or by a part told apart ("the other one"), after an amount, counts."""
     out: list[Token] = []
     i = 0
     while i < len(tokens):
@@ -164,7 +175,7 @@ def corrections(tokens: list[Token]) -> list[Token]:
                 j += 1
             lead = next((p for p in CORRECTION_LEADS if tuple(t.text for t in tokens[j:j + len(p)]) == p), ())
             j += len(lead)
-            if j < len(tokens) and tokens[j].number is not None:
+            if j < len(tokens) and (tokens[j].number is not None or (said != ("no",) and _other_part(tokens, j))):
                 start = tokens[i].start
                 out.extend((Token(".", ".", start, start), Token("instead", "instead", start, tokens[j - 1].end)))
                 i = j
@@ -174,9 +185,35 @@ def corrections(tokens: list[Token]) -> list[Token]:
     return out
 
 
+_KEPT = frozenset({"is", "are", "lives", "live", "sits", "sit", "lies", "lie", "stays", "belongs", "goes", "'s", "was"})
+_KEPT_AT = frozenset({"in", "on", "inside", "behind", "at", "under", "within"})
+_NOT_BEFORE_HOME = frozenset({"back", "to", "the", "its", "a", "at", "from", "go", "goes", "come", "comes", "return", "returns"})
+_STATE_AFTER_IS = frozenset({"open", "closed", "shut", "stuck", "ajar", "jammed", "still", "already", "halfway", "partly", "wide", "up", "down"})
 _LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
 _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
+
+
+_POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
+
+
+def _state_position(tokens: list[Token], i: int) -> tuple[str, int] | None:
+    """"into its locked position", "to the unlatched state": (the end state as a particle, how many tokens from ``i``)."""
+    words = [t.text for t in tokens[i + 1:i + 4]]
+    k = 1 if words[:1] and words[0] in ("its", "the", "their") else 0
+    if len(words) > k + 1 and words[k] in _POSITION_STATES and words[k + 1] in ("position", "state", "setting"):
+        return _POSITION_STATES[words[k]], k + 3
+    return None
+
+
+def _extreme_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
+    """"furthest to the left", "farthest right": (the side, how many tokens from ``i``)."""
+    words = [t.text for t in tokens[i + 1:i + 4]]
+    for lead in (["to", "the"], ["on", "the"], []):
+        k = len(lead)
+        if words[:k] == lead and len(words) > k and words[k] in ("left", "right"):
+            return words[k], k + 2
+    return None
 
 
 def same_words(tokens: list[Token]) -> list[Token]:
@@ -184,7 +221,10 @@ def same_words(tokens: list[Token]) -> list[Token]:
     facing the object), "to its top" (to the top), "2 the left" (to), "the third knob counting from the left",
     "throw the lid right back" (all the way), "neither knob" (without both)."""
     out: list[Token] = []
+    skip = -1  # the last token already written with one before it
     for i, t in enumerate(tokens):
+        if i <= skip:
+            continue
         before = tokens[i - 1].text if i else ""
         after = tokens[i + 1].text if i + 1 < len(tokens) else ""
         if t.text == "on" and after in VIEWER_POSSESSIVES and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES:
@@ -198,14 +238,50 @@ def same_words(tokens: list[Token]) -> list[Token]:
         elif t.text == "right" and after in _ALL_THE_WAY and before not in ("the", "to", "on", "at", "turn", "its", "", ",", ".", ";", "and"):
             out.extend((Token("all", "all", t.start, t.end), Token("the", "the", t.start, t.end), Token("way", "way", t.start, t.end)))
             continue
+        elif t.text in ("into", "to") and _state_position(tokens, i) is not None:
+            state, length = _state_position(tokens, i)  # type: ignore[misc]
+            out.append(Token(state, state, t.start, tokens[i + length - 1].end))  # "flip the catch into its locked position": shut
+            skip = i + length - 1
+            continue
+        elif t.text in ("furthest", "farthest", "furthermost") and _extreme_side(tokens, i) is not None:
+            side, length = _extreme_side(tokens, i)  # type: ignore[misc]
+            out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
+            skip = i + length - 1
+            continue
         elif t.text in ("far-left", "far-right") or (t.text == "far" and after in ("left", "right") and before in ("the", "its")):
             side = t.text.split("-")[-1] if "-" in t.text else after
             out.append(Token(f"{side}most", f"{side}most", t.start, t.end))  # "the far-right drawer": the rightmost
             continue
         elif t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most"):
             continue
+        elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4)):
+            t = Token("is", "be", t.start, t.end)  # "the drawer's sticking out", "the lid's open": is, not a possessive
+        elif t.text == "home" and (before in ("it", "them", "fully") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
+                before.isalpha() and before not in _NOT_BEFORE_HOME and (not after or after in (".", ",", ";", "!", "so", "and", "then")))):
+            t = Token("shut", "shut", t.start, t.end)  # "shove it (all the way) home": in as far as it goes
+        elif t.text.startswith("hand-") and t.text[5:] in VERBS:
+            t = Token(t.text[5:], t.text[5:], t.start, t.end, corrected_from=t.text)  # "hand-lift the lid": lift it by hand
+        elif t.text in ("full", "fully") and after in ("left", "right") and before not in ("to", "the"):
+            out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))  # "lever: full left": as far left as it goes
+            continue
+        elif t.text == "full" and after in ("up", "down", "open", "on", "off"):
+            t = Token("fully", "fully", t.start, t.end)  # "full open": as far as it goes
+        elif t.text == "no" and after == "need" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
+            out.append(Token("don't", "don't", t.start, tokens[i + 2].end))  # "no need to touch the dial": do not
+            skip = i + 2
+            continue
+        elif t.text == "," and after in ("which", "that") and i + 3 < len(tokens) and tokens[i + 2].text in _KEPT and tokens[i + 3].text in _KEPT_AT:
+            out.extend(Token(w, w, t.start, tokens[i + 2].end) for w in (".", "it", "is"))  # "the ketchup, which lives in the door"
+            skip = i + 2
+            continue
         elif t.text == "neither":
             out.extend((Token("without", "without", t.start, t.end), Token("both", "both", t.start, t.end)))
+            continue
+        elif t.text in ROTATION_SENSE and i + 1 < len(tokens) and tokens[i + 1].text.removesuffix("s") in TURN_UNITS and (out and (
+                out[-1].number is not None or out[-1].text in ("full", "complete", "whole", "quarter", "half", "a", "one", "single"))):
+            out.append(tokens[i + 1])  # "one full counterclockwise turn": the turn, then which way
+            out.append(t)
+            skip = i + 1
             continue
         out.append(t)
     return out

@@ -36,6 +36,7 @@ _TOKEN = re.compile(
     r"|(?P<pct>%)"
     r"|(?P<punct>[.,;:!?])"
     r"|(?P<dash>[—–]|(?<=\s)--?(?=\s))"
+    r"|(?P<slash>(?<=\s)/(?=\s))"
     r"|(?P<paren>[()])"
 )
 _LETTERS = frozenset("abcdefgh")
@@ -78,6 +79,8 @@ def _raw_tokens(prompt: str) -> list[Token]:
             continue  # "(standard phone layout)": an aside, not part of the request
         if kind == "dash":  # "open both doors — the left to 120 degrees, ...": a pause, like a comma
             tokens.append(Token(",", ",", start, end))
+        elif kind == "slash":  # "drawer out 40cm / hold 3s / back in": one step after another
+            tokens.append(Token(";", ";", start, end))
         elif kind == "ident":
             tokens.append(Token(word, word, start, end, ident=True))
         elif kind == "pi":  # "pi/2", "3*pi/4", "-pi/4": radians

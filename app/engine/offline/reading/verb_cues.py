@@ -34,7 +34,8 @@ def unknown_verb(token: Token, following: str = "") -> bool:
 
     word = token.text
     if not word.isalpha() or word in DETERMINERS or word in ORDINALS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
-            word in OBJECT_NOUNS and following not in _DETERMINING):  # "bin lid: up to vertical": the object, not "to bin"
+            word in OBJECT_NOUNS and following not in _DETERMINING) or (  # "bin lid: up to vertical": the object, not "to bin"
+            word in SPATIAL and kind_of_word(following) is not None):  # "bottom door down flat": the door's side, not "to bottom"
         return False
     lemmas = getAllLemmas(word)
     return word in lemmas.get("VERB", ())

@@ -1,0 +1,30 @@
+"""The last tie-breaks among similar parts one mention fits, each named in a warning: the one control on the
+front, the one lid on top, the one the asset itself calls by the word used, else the largest when they differ."""
+
+from __future__ import annotations
+
+from app.engine.asset.model import ArticulatedAsset
+from app.engine.lexicon.kinds import PartKind, info
+from app.engine.offline.geometry import ObjectGeometry
+from app.engine.offline.grounding import Part, by_name, position, similar
+from app.engine.offline.reading.mentions import Mention
+
+TOP_GAP = 0.25
+"""How much higher (a fraction of the object's height) the top lid sits than the next."""
+
+
+def tie_break(mention: Mention, kind: PartKind | None, kept: list[Part], obj: ObjectGeometry, asset: ArticulatedAsset) -> tuple[Part, str] | None:
+    """(the part taken, how it was chosen) among ``kept``; None when nothing tells them apart."""
+    front = [p for p in kept if position(p, obj)[0] > 0]
+    if all(p.kind is not None and info(p.kind).control for p in kept) and len(front) == 1:
+        return front[0], "the one on the front"
+    if (kind is not None and info(kind).lid_like) or all(p.kind is not None and info(p.kind).lid_like for p in kept):
+        heights = sorted(((position(p, obj)[2], p) for p in kept), key=lambda hp: hp[0], reverse=True)
+        if heights[0][0] - heights[1][0] > TOP_GAP * obj.extents[2]:
+            return heights[0][1], "the one on top"
+    called = by_name(kept, (mention.head,), asset)
+    if len(called) == 1:
+        return called[0], f"the one its asset calls '{mention.head}'"
+    if not similar(kept):
+        return max(kept, key=lambda p: p.geometry.size), f"the largest {kind.value if kind is not None else mention.head}"
+    return None
