@@ -8,7 +8,7 @@ a run, in process (joint and link limits raised past N):
 - ``summary``  the joint summary and scale context (``artimo inspect --json``'s first parts);
 - ``layout``   ``asset_layout``: part positions and joint ends (``artimo inspect``, the asset
   summary route), which reads the offline agent's per-asset geometry
-  (``app/engine/offline/geometry.py``: it poses the whole object once per joint);
+  (``app/engine/offline/geometry.py``: per joint, the links it moves, a slice of a depth-first layout);
 - ``run``      validate + execute + GLB of a 1 s plan turning the first joint;
 
 and ``inspect`` the whole ``artimo --no-cache inspect`` process (N <= 256, its default limit).

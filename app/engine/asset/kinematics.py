@@ -115,6 +115,17 @@ def _rest_locals(asset: ArticulatedAsset) -> dict[str, FloatArray]:
     return known
 
 
+_LEADERS: WeakKeyDictionary[ArticulatedAsset, frozenset[str]] = WeakKeyDictionary()
+
+
+def _leaders(asset: ArticulatedAsset) -> frozenset[str]:
+    """Joints some mimic joint follows (per asset: asking every joint is then no walk over all joints)."""
+    known = _LEADERS.get(asset)
+    if known is None:
+        known = _LEADERS[asset] = frozenset(j.mimic.joint for j in asset.joints.values() if j.mimic is not None)
+    return known
+
+
 def _driven_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:
     """(t,) values of the movable joints given, and of the mimics following them (as :func:`resolve_joint_values`);
     every other joint sits at the value it has when nothing is given."""
@@ -205,7 +216,7 @@ def subtree_motion(asset: ArticulatedAsset, joint: str, values: FloatArray, rest
     one rigid transform for the whole subtree, so posing it is one product over its points. None when the
     joint drives mimic followers (their links move otherwise): use :func:`subtree_poses`."""
     values = np.asarray(values, dtype=np.float64).reshape(-1)
-    if len(_driven_values(asset, {joint: values}, values.shape[0])) != 1:
+    if joint in _leaders(asset):
         return None
     spec = asset.joints[joint]
     return (rest[spec.parent][0] @ spec.origin)[None] @ joint_motion(spec, values) @ np.linalg.inv(rest[spec.child][0])[None]

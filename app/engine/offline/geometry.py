@@ -19,6 +19,7 @@ from app.engine.asset.kinematics import link_poses, subtree_motion, subtree_pose
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import CONTROL_KINDS, HINGED_KINDS, PartKind, info, kind_of_label
 from app.engine.offline.naming import link_kind, tokens
+from app.engine.offline.rest_points import RestPoints
 from app.engine.types import FloatArray
 
 UP = np.array([0.0, 0.0, 1.0])
@@ -119,30 +120,6 @@ def _closedness(moving: FloatArray, static_low: FloatArray, static_high: FloatAr
     return protrusion, volume
 
 
-@dataclass(frozen=True)
-class _RestBoxes:
-    """Each visual link's box at rest (world frame): a joint's static box is the box of the links it does
-    not move, found without posing those links again (work per joint in the asset's link count, not points)."""
-
-    names: tuple[str, ...]
-    low: FloatArray
-    high: FloatArray
-
-    @classmethod
-    def of(cls, world: dict[str, FloatArray]) -> _RestBoxes:
-        names = tuple(n for n, p in world.items() if p.shape[0])
-        low = np.array([world[n].min(axis=0) for n in names]).reshape(-1, 3)
-        high = np.array([world[n].max(axis=0) for n in names]).reshape(-1, 3)
-        return cls(names, low, high)
-
-    def without(self, moving: tuple[str, ...]) -> tuple[FloatArray, FloatArray] | None:
-        """(low, high) of every link not in ``moving``; None when nothing stays still."""
-        keep = np.fromiter((n not in moving for n in self.names), dtype=bool, count=len(self.names))
-        if not keep.any():
-            return None
-        return self.low[keep].min(axis=0), self.high[keep].max(axis=0)
-
-
 def _nearest_face_normal(point: FloatArray, box_low: FloatArray, box_high: FloatArray) -> FloatArray:
     distances = np.concatenate([point - box_low, box_high - point])
     index = int(np.argmin(np.abs(distances)))
@@ -172,12 +149,11 @@ def _tip(moved: FloatArray, pivot: FloatArray, axis: FloatArray, fallback: Float
 
 
 def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, FloatArray], rest: dict[str, FloatArray],
-                    world: dict[str, FloatArray], boxes: _RestBoxes) -> JointGeometry:
+                    laid_out: RestPoints) -> JointGeometry:
     spec = asset.joints[joint]
     moving = asset.moving_links(joint)
-    static = boxes.without(moving)
-    moved_chunks = [world[n] for n in moving if n in world]
-    moved = np.concatenate(moved_chunks) if moved_chunks else np.zeros((0, 3))
+    static = laid_out.box_without(spec.child)
+    moved = laid_out.below(spec.child)
     frame = rest[spec.parent][0] @ spec.origin
     axis_world = frame[:3, :3] @ spec.axis
     centroid = moved.mean(axis=0) if moved.shape[0] else frame[:3, 3]
@@ -336,11 +312,10 @@ def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeomet
 def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     points = _local_points(asset)
     rest = link_poses(asset, {}, frames=1)
-    world = {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points}
-    boxes = _RestBoxes.of(world)
-    low, high = boxes.low.min(axis=0), boxes.high.max(axis=0)
+    laid_out = RestPoints.of(asset, {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points})
+    low, high = laid_out.box()
     center = (low + high) / 2.0
-    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, world, boxes) for j in asset.controllable_joints})
+    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints})
     front = infer_front(joints, center, asset, points, rest)
     right = np.cross(-front, UP)
     return ObjectGeometry(

@@ -112,3 +112,32 @@ def test_tree_lookups_agree_with_a_scan_of_the_joints(tmp_path: Path) -> None:
             assert parent is None if name == asset.root_link else parent is not None and parent.child == name
         for name in asset.joint_order:
             assert asset.moving_links(name) == _descendants_by_scan(asset, asset.joints[name].child)
+
+
+def test_rest_points_slices_are_the_subtrees_and_their_complements(tmp_path: Path) -> None:
+    """The depth-first layout the per-joint geometry reads: a joint's moved points are its subtree's, and its static
+    box is the box of every other link (checked against a direct walk, on a chain with mimics and a side branch, and a
+    cabinet)."""
+    from app.engine.offline.geometry import _local_points, _posed
+    from app.engine.offline.rest_points import RestPoints
+
+    for asset in _assets(tmp_path):
+        points = _local_points(asset)
+        rest = link_poses(asset, {}, frames=1)
+        world = {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points}
+        laid_out = RestPoints.of(asset, world)
+        for name in asset.joint_order:
+            child = asset.joints[name].child
+            below = asset.descendants(child)
+            expected = np.concatenate([world[n] for n in below if n in world] or [np.zeros((0, 3))])
+            got = laid_out.below(child)
+            assert sorted(map(tuple, got)) == sorted(map(tuple, expected))
+            others = [world[n] for n in world if n not in below]
+            box = laid_out.box_without(child)
+            if not others:
+                assert box is None
+                continue
+            assert box is not None
+            stacked = np.concatenate(others)
+            np.testing.assert_array_equal(box[0], stacked.min(axis=0))
+            np.testing.assert_array_equal(box[1], stacked.max(axis=0))
