@@ -59,10 +59,11 @@ NAMED_OBJECTS = frozenset().union(*OBJECT_FAMILIES.values())
 """Nouns that name some particular kind of object (a noun outside every family fits any object)."""
 
 
-def names_other_object(noun: str, category: str | None) -> bool:
-    """``noun`` names a kind of object this asset (of ``category``) is not."""
+def names_other_object(noun: str, category: str | None, words: str = "") -> bool:
+    """``noun`` names a kind of object this asset (of ``category``) is not; ``words``, the whole phrase, may name it
+    still ("the dishwasher unit" is a dishwasher)."""
     family = OBJECT_FAMILIES.get(category or "")
-    return family is not None and noun in NAMED_OBJECTS and noun not in family
+    return family is not None and noun in NAMED_OBJECTS and noun not in family and not family & set(words.split())
 
 
 CARRIED: Mapping[str, tuple[frozenset[str], PartKind]] = MappingProxyType({

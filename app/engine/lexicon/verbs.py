@@ -165,9 +165,10 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("raise", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("hoist", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("levitate", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("hover", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("elevate", S.RAISE, _RAISING, object_sense=S.MOVE),
     VerbInfo("elevate", S.RAISE, _RAISING, object_sense=S.MOVE),
-    VerbInfo("pick", S.RAISE, _RAISING, object_sense=S.MOVE),
+    VerbInfo("pick", S.GRASP, _RAISING, object_sense=S.MOVE),  # "pick the bottom one and turn it": which; "pick it up": raise
     VerbInfo("lower", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("drop", S.LOWER, _LOWERING, object_sense=S.MOVE),
     VerbInfo("sink", S.LOWER, _LOWERING, object_sense=S.MOVE),
@@ -226,6 +227,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("grab", S.GRASP, stative=True),
     VerbInfo("grasp", S.GRASP, stative=True),
     VerbInfo("grip", S.GRASP, stative=True),
+    VerbInfo("choose", S.GRASP, stative=True),
+    VerbInfo("select", S.GRASP, stative=True),
     VerbInfo("get_at", S.GRASP, stative=True),  # "to get at the second rack, ...": reach it (what follows moves it)
     VerbInfo("bring", S.MOVE, _p(up=S.RAISE, down=S.LOWER, back=S.RETURN, out=S.PULL_OUT, **{"in": S.PUSH_IN}, around=S.YAW, round=S.YAW),
              object_sense=S.MOVE),
@@ -267,3 +270,10 @@ PARTICLES = frozenset({"out", "in", "open", "shut", "closed", "up", "down", "bac
 
 def verb(lemma: str) -> VerbInfo | None:
     return VERBS.get(lemma)
+
+
+VERBLESS_SENSES: Mapping[str, VerbSense] = MappingProxyType({
+    "up": VerbSense.RAISE, "down": VerbSense.LOWER, "out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "shut": VerbSense.CLOSE,
+    "closed": VerbSense.CLOSE,
+})
+"""What a clause with no verb asks by its particle ("lid up to 90 deg", "screen down until it's shut")."""

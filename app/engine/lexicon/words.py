@@ -127,7 +127,7 @@ STATES: Mapping[str, str] = MappingProxyType({
     "vertical": "vertical", "vertically": "vertical", "upright": "vertical", "perpendicular": "vertical", "straight up": "vertical",
     "straight": "vertical",
     "flat": "flat", "horizontal": "flat", "horizontally": "flat", "level": "flat",
-    "on": "on", "off": "off", "pressed": "pressed", "down position": "down", "in": "in", "out": "out",
+    "on": "on", "off": "off", "pressed": "pressed", "down position": "down", "in": "in", "out": "out", "flush": "closed",
 })
 
 # clause connectives (single words; multi-word ones are joined by the normaliser first)
@@ -184,7 +184,7 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "vanity", "hutch", "cubby", "wardrobe", "closet", "pantry", "oven", "range", "toaster", "tap", "faucet", "mixer", "basin",
     "bank_of_drawers", "set_of_drawers", "pan", "light", "lamp", "espresso", "blender", "jug",
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
-    "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller", "top-loader", "front-loader",
+    "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller", "top-loader", "front-loader", "loo", "lavatory", "wc",
 )
 PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody"})
 """The user and other people: a clause about them is not about the asset ("so I can reach in")."""
@@ -200,7 +200,7 @@ REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("task", "list", ":"), ("shot", "list", ":"), ("to", "do", ":"), ("todo", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
-    ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"))
+    ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"), ("let", "me"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
 CORRECTIONS: tuple[tuple[str, ...], ...] = (
     ("no", "wait"), ("actually", "no"), ("no", "actually"), ("no", "sorry"), ("sorry",), ("nvm",), ("never", "mind"), ("i", "mean"),
@@ -211,7 +211,7 @@ CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"
 """What may come between a correction and its new amount (or its other part: "no wait, I meant the other one")."""
 SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
-    "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
+    "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
 })
@@ -256,7 +256,7 @@ COUPLING_WORDS = frozenset({"linked", "connected", "coupled", "hooked", "attache
 STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
                            "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks",
-                           "starts", "begins", "started", *COUPLING_WORDS})
+                           "starts", "begins", "started", "has", "features", "contains", *COUPLING_WORDS})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
 PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
                     "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})

@@ -18,7 +18,7 @@ from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.objects import names_other_object
-from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.verbs import VERBLESS_SENSES, VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.conditions import condition, exclude
@@ -167,6 +167,10 @@ class Builder:
                 return VerbSense.OPEN
         if frame.sense is not None:
             return frame.sense
+        if frame.verb is None and not frame.returning:  # "screen down until it's shut", "drawer out 40 cm": the word says which way
+            said = next((VERBLESS_SENSES[w] for w in frame.text.split() if w in VERBLESS_SENSES), None)
+            if said is not None:
+                return said
         return VerbSense.OPERATE
 
     # --- acts ----------------------------------------------------------------------
@@ -256,9 +260,10 @@ class Builder:
             return False  # "start the toaster", "flush the toilet": the part the verb works
         if first.is_object:
             self._same_object(first)
-            if self.tracker.obj.category in OPERATED_OBJECTS and frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF) and (
-                    not WHOLE_WORDS & set(first.words.split())):
-                return False
+            amount = frame.quantities.amount
+            if self.tracker.obj.category in OPERATED_OBJECTS and (frame.sense in (VerbSense.TURN, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF) or (
+                    amount is not None and amount.unit == "fraction")) and not WHOLE_WORDS & set(first.words.split()):
+                return False  # "turn on the tap", "Tap: fully to the left": its lever
             return moves_object(frame, pronoun=False, after_part=False) and not (
                 frame.sense in (VerbSense.OPEN, VerbSense.CLOSE) and openable(self.parts))
         if first.pronoun:
@@ -273,7 +278,7 @@ class Builder:
     def _same_object(self, mention: Mention) -> None:
         """"open the trunk" on a microwave names some other object: refuse rather than guess."""
         category = self.tracker.obj.category
-        if names_other_object(mention.head, category):
+        if names_other_object(mention.head, category, " ".join(mention.modifiers)):
             raise self.refs.refuse(f"'{mention.words or mention.head}' does not name {self.asset.name} (a {category}): "
                                    f"say 'the {category}' or name one of its parts")
 

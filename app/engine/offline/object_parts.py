@@ -26,7 +26,7 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
         if found:
             return found[:1]
     if sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF, VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE) or (
-            builder.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE)):
+            builder.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.MOVE)):
         controls = [p for p in builder.parts if mech.is_control(p)]
         if len(controls) == 1:
             return controls

@@ -18,7 +18,6 @@ from app.engine.lexicon.words import Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import (
-    _AXIS_OF,
     Grounding,
     How,
     Part,
@@ -28,6 +27,7 @@ from app.engine.offline.grounding import (
     position,
     reading_order,
 )
+from app.engine.offline.lone_side import lone_side_refusal
 from app.engine.offline.naming import link_words
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import tie_break
@@ -37,10 +37,6 @@ EXTREME_GAP_M = 0.01
 _FEATURES = frozenset({PartKind.LATCH, PartKind.HANDLE})
 """Kinds a user may name as a feature of a part that is not movable on its own ("the door latch", "the lid handle")."""
 _NUMBER_WORDS = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five", 6: "six", 7: "seven", 8: "eight", 9: "nine"}
-
-
-_COMPARATIVES = frozenset({"lower", "upper", "higher"})
-"""Sides that compare parts of a kind ("the lower door"): the user expects more than one."""
 
 
 @dataclass
@@ -112,16 +108,9 @@ class Referents:
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
         said = mention.words.split()
-        if len(candidates) == 1 and mention.sides and not mention.plural and any(
-                w in _COMPARATIVES and k > 0 and said[k - 1] in ("the", "this", "that", "its", "their", "your") for k, w in enumerate(said)):
-            raise self.refuse(f"'{mention.words}' sets one {kind.value if kind is not None else mention.head} against another, but "
-                              f"{self.asset.name} has only one: say 'the {kind.value if kind is not None else mention.head}'", candidates)
-        if len(candidates) == 1 and mention.sides and not mention.plural and self._other_side(candidates[0], mention):
-            raise self.refuse(f"'{mention.words or mention.head}' names a side where {self.asset.name} has none: its only "
-                              f"{kind.value if kind is not None else mention.head} is elsewhere", candidates)
-        if len(candidates) > 1 and mention.sides and not mention.plural and not mention.collective and self._same_place(mention, candidates):
-            raise self.refuse(f"'{mention.words or mention.head}' does not tell the {len(candidates)} "
-                              f"{kind.value if kind is not None else mention.head}s apart", candidates)
+        refusal = lone_side_refusal(mention, kind, candidates, said, self.obj, self.parts, self.asset.name)
+        if refusal is not None:
+            raise self.refuse(refusal, candidates)
         if not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
             mention = replace(mention, region=self.scene)  # under "top oven:", "the door" is the top oven's
             candidates = narrow(replace(mention, sides=self.scene), candidates, self.asset, self.obj, [], set())[0] or candidates
@@ -280,28 +269,6 @@ class Referents:
             across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else 0.0
             scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
         return [min(scored)[3]] if scored else []
-
-    def _other_side(self, part: Part, mention: Mention) -> bool:
-        """The one candidate sits clearly on the other side from the one named ("the left drawer" when the only
-        drawer is on the right)."""
-        for side, _ in mention.sides:
-            if side not in _AXIS_OF:
-                continue
-            axis, positive = _AXIS_OF[side]
-            value = float(position(part, self.obj)[axis])
-            if (value if positive else -value) < 0.05 * self.obj.diag:
-                return True  # "the lower door" of a one-door oven: not clearly on that side, so the user expects another
-        return False
-
-    def _same_place(self, mention: Mention, candidates: list[Part]) -> bool:
-        """The side named does not tell the candidates apart ("the left-hand lever" of a toaster whose levers sit
-        at its front and back)."""
-        for side, _ in mention.sides:
-            if side in _AXIS_OF:
-                values = [float(position(p, self.obj)[_AXIS_OF[side][0]]) for p in candidates]
-                if max(values) - min(values) < 0.03 * self.obj.diag:
-                    return True
-        return False
 
     def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
         """"the knob furthest from the big one", "the knob farther from the hinge"."""

@@ -44,6 +44,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
     directional = quantities.direction in ("forward", "backward", "left", "right", "sideways") or quantities.axis is not None
     if pronoun and after_part and quantities.amount is not None and quantities.amount.unit == "fraction":
         return False  # "lift it halfway back up": a fraction of a part's range, not of the object's
+    if pronoun and after_part and frame.returning and quantities.axis is None and quantities.direction in (None, "up", "down"):
+        return False  # "then lift it back up to its starting angle": the part goes back, "back" is no direction here
     if pronoun and after_part:
         explicit_back = frame.particle != "back" or any(w in frame.text.split() for w in ("backward", "backwards"))
         if not (quantities.axis is not None or frame.verb in _OBJECT_ONLY or (directional and explicit_back)):

@@ -615,6 +615,40 @@ ROWS: list[Row] = [
     R("extra/suitcase_100550", "The case is upright. Fold its front lid down all the way.", joints={"joint_0": E(end="upper")}),
     R("faucet_148", "Tap lever: full right.", joints={"joint_0": E(end="lower")}),
     R("toilet_102622", "Lid up, then flush.", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
+    # --- blind dev probes, rounds 11 and 13 (benchmark/probes/dev_round1{1,3}_prompts.jsonl): classes fixed, rephrased ---
+    # a result on "it" says where the part ends ("so it lies ... toward the back", "so it sits flush"); the scene names "it"
+    R("bucket_100454", "Let the handle drop so it rests flat against the back.", joints={"joint_0": E(end="upper")}),
+    R("door_8877", "Someone left the door standing open. Push it back so it sits flush.", joints={"joint_1": E(end="lower")}),
+    # hot is the viewer's left on a mixer tap, cold the right
+    R("faucet_148", "Lever to full hot.", joints={"joint_0": E(end="upper")}),
+    R("faucet_148", "Give the tap 20 degrees toward cold.", joints={"joint_0": E(end=-0.3491)}),
+    # "at an angle of", ", where zero means ...": from closed
+    R("laptop_10697", "Put the screen at an angle of 90 degrees, where 0 means fully shut.", joints={"joint_1": E(end=-1.954 + 1.5708)}),
+    # "needs to <verb>", "the midpoint of its travel", "of right side", "the one at the back"
+    R("storage_19179", "The top drawer needs to come out 30 cm.", joints={"joint_1": E(end=0.3), "joint_0": E(still=True)}),
+    R("storage_27044", "Slide the drawer to the midpoint of its travel.", joints={"joint_0": E(end=0.342)}),
+    R("refrigerator_11178", "Open the door of left side to 60 degree.", joints={"joint_0": E(end=1.0472), "joint_1": E(still=True)}),
+    R("extra/toaster_103473", "It has two levers. Press the one at the back all the way down.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    # a latch flipped over stays; "once it's open" with the comma left out; "when it gets there, do ..."
+    R("extra/box_100214", "Flip the left catch over.", joints={"joint_1": E(end=0.4363), "joint_2": E(still=True)}),
+    R("microwave_7119", "Open the door and once it's open spin the plate a quarter turn.", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)},
+      order=(("joint_0", "joint_1"),)),
+    # holds said as "N s hold", "stay N seconds", "give it N seconds"; verbless steps by their particle
+    R("oven_7138", "door fully open, 2 s hold, shut", joints={"joint_0": E(peak="upper", end="lower")}),
+    R("toilet_102622", "lid up, stay 2 seconds, back down", joints={"joint_0": E(peak="upper", end="lower")}),
+    R("switch_100952", "Flip the switch on, give it a couple of seconds, then back off.", joints={"joint_0": E(peak="upper", end="lower")}),
+    R("laptop_10697", "Screen down until it's shut, wait a second, then lift it back up to where it was.", joints={"joint_1": E(peak="lower", end=0.0)}),
+    # a verb we do not know before an end state; "hover" raises the object; a lower door under a drawer
+    R("laptop_10101", "Snap the laptop shut.", joints={"joint_1": E(end="lower")}),
+    R("stapler_103099", "Hover the stapler 5 cm over the desk.", base=(0.0, 0.0, 0.05), joints={"joint_0": E(still=True)}),
+    R("storage_23472", "Open the lower cabinet door all the way.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    # "(big knob, the one on the left)": a heading in parentheses; "(anticlockwise)"; "180 clockwise" is degrees
+    R("safe_101593", "(the knob, the one on the left) -> quarter turn clockwise", joints={"joint_1": E(end=-1.5708), "joint_2": E(still=True)}),
+    R("extra/microwave_7128", "top knob 90 clockwise", joints={"joint_3": E(abs_end=1.5708)}),
+    # "nothing", "forget the pedal", "unit" after the object's name, "the loo"
+    R("extra/suitcase_100550", "Unzip nothing, just lower the front lid all the way.", joints={"joint_0": E(end="upper")}),
+    R("trash_can_102181", "Forget the pedal, lift the lid by hand.", joints={"joint_0": E(still=True), "joint_1": E(moves=True)}),
+    R("dishwasher_11700", "Turn the dishwasher unit around.", yaw_deg=180.0, joints={"joint_0": E(still=True)}),
 ]
 
 

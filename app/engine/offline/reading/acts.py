@@ -13,6 +13,7 @@ from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, OPPOSITE_SIDE
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Quantities
+from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
 
 DEFAULT_WAIT_S = 1.0
@@ -40,8 +41,10 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_USE_VERBS = frozenset({"use", "try", "clean", "fill", "load", "empty", "check"})
+"""What a person wants to do with the whole object ("I need to use the loo"): their aim, not a motion."""
 _IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
-_STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
+_STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs", "stay", "remain", "hang", "sit"})
 _PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
@@ -139,7 +142,8 @@ def _topic(frame: Frame, after: list[Frame]) -> bool:
     """A clause that only names one part, followed by one that works "it"."""
     bare = frame.verb is None and not frame.heading and len(frame.themes) == 1 and not frame.themes[0].is_object and not frame.themes[0].pronoun
     plain = frame.quantities == Quantities() and frame.particle is None and not frame.returning
-    return bare and plain and bool(after) and after[0].verb is not None and any(m.pronoun and not m.plural for m in after[0].themes)
+    return bare and plain and bool(after) and after[0].verb is not None and (any(m.pronoun and not m.plural for m in after[0].themes) or (
+        not after[0].themes and not after[0].instruments and after[0].marker == "," and after[0].quantities != Quantities()))  # "middle knob, rotate 90 degrees"
 
 
 def _is_subjectless_event(frame: Frame) -> bool:
@@ -211,6 +215,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     leading: list[Frame] = []  # negations told before any step
     for index, frame in enumerate(frames):
         verbless = frame.verb is None
+        merged = merged_result(acts[-1], frame) if acts and not acts[-1].condition else None
+        if merged is not None:
+            acts[-1] = merged  # "drop the handle so it lies flat along the back side", "swing it back so it sits flush"
+            continue
         place = place_of(frame) if acts and not acts[-1].condition and unknown_things(acts[-1].goal) else None
         if place is not None:
             things = ", ".join(m.words or m.head for m in acts[-1].goal.themes)
@@ -252,7 +260,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue
         if (frame.verb is None or frame.sense is VerbSense.HOLD) and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
             frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False, stative=False)  # "..., rests there for 2 s"
-        if frame.verb is None and not frame.themes and frame.quantities.duration_s is not None and set(frame.text.split()) & _PAUSE_NOUNS:
+        if (frame.verb is None or (frame.sense in (VerbSense.HOLD, VerbSense.WAIT) and frame.text.split()[-1] == frame.verb)) and not frame.themes and (
+                frame.quantities.duration_s is not None and set(frame.text.split()) & (_PAUSE_NOUNS | {"hold"})):
             pending_wait += frame.quantities.duration_s  # "up to vertical, 2 s pause, then ...": a wait, not a manner
             continue
         if frame.verb is None and not frame.themes and not frame.returning and (
@@ -290,6 +299,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         said_aside = False
         if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and (acts or index + 1 < len(frames)):
             said_aside = True
+            if frame.link is Link.FIRST and frame.stative and len(frame.themes) == 1 and frame.themes[0].kind is not None:
+                acts.append(Act(goal=replace(frame, heading=True, verb=None, sense=None), condition=True))  # "Somebody left this door
+                # sticking straight out. Swing it back ...": the scene names what "it" is
             continue  # "..., so I can put my plate in", "nothing else": why, or a remark, not what
         if frame.link is Link.PARALLEL and acts and not acts[-1].condition and frame.themes and all(m.pronoun for m in frame.themes) and (
                 (frame.sense is acts[-1].goal.sense and frame.sense is not None) or _progressive_of(frame, acts[-1].goal)):
@@ -330,6 +342,11 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 pending_conditions.append(frame)  # "A and, once it is out, B": a state to reach before B
             else:
                 acts.append(Act(goal=frame, condition=True))  # "the drawer is sticking out; push it shut": sets "it"
+            continue
+        if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and not acts[-1].goal.themes and (
+                acts[-1].goal.verb is None) and frame.verb in _USE_VERBS and all(m.is_object for m in frame.themes):
+            acts.pop()  # "I need to use the loo, ...": what the person will do with the object, not a motion of it
+            said_aside = True
             continue
         if frame.link is Link.PURPOSE and acts and acts[-1].means is None and acts[-1].goal.wish and not acts[-1].goal.themes and (
                 acts[-1].goal.verb is None):

@@ -229,7 +229,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = None  # "as wide as the hinge allows": a comparison, not a second event
         elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
             boundary = (Link.PARALLEL, word, False)
-        elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not _bare_verb(current) and not (
+        elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not (_bare_verb(current) and not (
+                link is Link.NEGATED and word == ",")) and not (
                 word == "and" and link is Link.NEGATED and kind_at(tokens, nxt) is not None):  # "without the lid and latches"
             boundary = (Link.SEQUENCE, word, True)
         elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
@@ -247,10 +248,17 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             nxt = i
         elif word == "and" and _measure_at(current, 0) is not None and _measure_at(tokens, nxt) == nxt:
             boundary = (Link.SEQUENCE, word, True)  # "1 metre to the left and half a metre back": two moves
+        elif word == "," and current and nxt < len(tokens) and tokens[nxt].text in _STAYS | _PAUSES | {"stay", "back", "wait"} and not (
+                tokens[nxt].text == "back" and link is Link.NEGATED):
+            boundary = (Link.SEQUENCE, word, True)  # "toilet lid up, stay 2.5 seconds, back down": one step after another
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
             boundary = (Link.SEQUENCE, word, False)
+        elif marker in ("once", "when", "after") and len(current) >= 2 and current[-1].text in _DONE_STATES and (word == "," or (
+                verb_at(tokens, i) and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
+            boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there, do the right door"
+            nxt = nxt if word == "," else i
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
                 any(t.text.endswith("ing") for t in current[1:]) and _starts_clause(tokens, i)):
             boundary, nxt = (Link.SEQUENCE, ",", True), i  # "while it's still opening the plate starts turning": a comma left out
@@ -294,6 +302,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         i = nxt
     close()
     return _order(clauses)
+
+
+_DONE_STATES = frozenset({"open", "opened", "closed", "shut", "up", "down", "out", "in", "done", "there", "finished", "over", "clear"})
 
 
 def _measure_at(tokens: list[Token], start: int) -> int | None:

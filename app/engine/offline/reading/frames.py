@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
 
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
 from app.engine.lexicon.words import (
     ASPECT_VERBS,
@@ -18,11 +19,11 @@ from app.engine.lexicon.words import (
     DETERMINERS,
     INSTRUMENT,
     LIGHT_VERBS,
+    OBJECT_NOUNS,
     PLACES,
     SIMULTANEOUS,
     SPATIAL,
     STATIVE_VERBS,
-    WISHES,
 )
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
@@ -33,6 +34,7 @@ from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
 from app.engine.offline.reading.verb_cues import aside, side_of_part, unknown_verb
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
+from app.engine.offline.reading.wishes import wished_state
 
 _BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
 _BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
@@ -154,6 +156,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         own = VERBS.get(tokens[verb].lemma)
         if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text in _STATE_PARTICLES and (own is None or "back" not in own.particles):
             return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
+        if word == "back" and i > 0 and tokens[i - 1].text in ("the", "its", "toward", "towards"):
+            continue  # "toward the back", "along its back": a place or a way, not the particle
         if word in PARTICLES:
             if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into", "on") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
                 continue
@@ -208,14 +212,17 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
     themes: list[Mention] = list(prior)
     instruments: list[Mention] = []
     for mention in mentions:
-        if mention.end < len(tokens) and tokens[mention.end].text in ("and_all", "included", "attached", "too"):
-            continue  # "lift the pot, lid and all": what comes along, not what moves
+        if mention.end < len(tokens) and tokens[mention.end].text in ("and_all", "included", "attached", "too") and (
+                themes or tokens[mention.end].text != "too"):
+            continue  # "lift the pot, lid and all": what comes along, not what moves ("..., then the back lever too": the next)
         before = mention.start - 1
         while before >= 0 and tokens[before].text in DETERMINERS:
             before -= 1
         preposition = tokens[before].text if before >= 0 else ""
         if mention.is_object and themes and preposition in _INSTRUMENT_PREPS | _REFERENCE_PREPS:
             continue  # "rotate the box on the table": where, not what
+        if mention.kind is PartKind.BODY and preposition in ("in", "into", "against", "onto", "on", "inside", "to") and (themes or preposition != "on"):
+            continue  # "so it sits flush in its frame": where it ends, the body does not move
         if preposition == "of" and themes and before > 0 and tokens[before - 1].text in _REGION_WORDS:
             continue  # "the small dial near the top of the door": where the dial is
         if preposition in ("for", "like", "than") and mention.kind is None and not mention.pronoun and not mention.anaphor:
@@ -229,8 +236,8 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue
         elif preposition in _REFERENCE_PREPS and themes:
             continue  # "lift the lid off the box": a place, not another theme
-        elif preposition in ("onto", "into", "against") and mention.kind is None and not mention.pronoun and not mention.is_object:
-            continue  # "(and) shut onto the keyboard": where it ends, with the part carried from before
+        elif preposition in ("onto", "into", "against") and mention.kind is None and not mention.pronoun:
+            continue  # "(and) shut onto the keyboard", "comes back down onto the pot": where it ends, not what moves
         elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes:
             continue  # "the left door, the one with the handle,": an apposition describing the door
         else:
@@ -254,41 +261,24 @@ _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", 
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
-_WISH_LEADS = frozenset({"but", "so", "and", "ok", "okay", "for", "now", "right", "well", "anyway"})
-_WISH_ADVERBS = frozenset({"just", "really", "only", "also", "still", "actually"})
 _STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": VerbSense.OPEN, "closed": VerbSense.CLOSE, "shut": VerbSense.CLOSE,
                  "up": VerbSense.RAISE, "down": VerbSense.LOWER, "in": VerbSense.PUSH_IN}
 
 
-def _wish(tokens: list[Token]) -> tuple[bool, list[Token]]:
-    """"I need the rack out": drop the wish; what is left names a part and its wanted state."""
-    k = 0
-    while k < len(tokens) - 1 and tokens[k].text in _WISH_LEADS:
-        k += 1  # "but for now I just need its drawer ...", "so I want ..."
-    if k < len(tokens) and (tokens[k].text in WISHES or (tokens[k].text in ("need", "needs", "want") and k + 1 < len(tokens)
-                                                          and tokens[k + 1].text in ("the", "this", "that", "both", "its", "my"))):
-        return True, tokens[k + 1:]  # "I need ...", "need the whole microwave flipped round"
-    if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
-        return True, tokens[k + 3:]
-    words = [t.text for t in tokens]
-    for j in range(k + 1, len(tokens) - 1):
-        must = 3 if words[j:j + 3] in (["needs", "to", "be"], ["need", "to", "be"], ["has", "to", "be"], ["have", "to", "be"]) else (
-            2 if words[j:j + 2] in (["should", "be"], ["must", "be"]) else 0)
-        if must and words[k] in DETERMINERS and j + must < len(tokens) and tokens[j + must].text not in ("a", "an", "the"):
-            return True, tokens[k:j] + tokens[j + must:]  # "the oven door needs to be halfway down": the part and its wanted state
-    return False, tokens
-
-
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
     correction = bool(clause.tokens) and clause.tokens[0].text == "instead"
-    wish, wished = _wish(list(clause.tokens[1:] if correction else clause.tokens))
+    wish, wished = wished_state(list(clause.tokens[1:] if correction else clause.tokens))
     first, tokens = _first_of(_light_verb(wished))
     quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
     named_side = (clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL) or side_of_part(tokens)
-    if verb_index == 0 and (named_side or (clause.heading and kind_of_word(tokens[0].text) is not None and (
+    if verb_index == 0 and (named_side or (clause.heading and len(tokens) == 1 and tokens[0].text in OBJECT_NOUNS) or (
+            clause.heading and kind_of_word(tokens[0].text) is not None and (
             len(tokens) == 1 or tokens[1].text in ("on", "at", "in", "of", "near", "by", "nearest", "closest")))):
         verb_index = None  # "Dial on the front: one full rotation": the part, not the verb  # "Lower knob: give it a 45 degree turn", "lower drawer out 0.5 m": "lower" is the part's side
+    if verb_index is not None and verb_index > 1 and tokens[verb_index].text in ("closed", "shut", "open", "opened") and len(tokens) > 1 and (
+            unknown_verb(tokens[0], tokens[1].text)):
+        verb_index = None  # "clap the laptop closed": a verb we do not know, then the end state
     verb = tokens[verb_index].lemma if verb_index is not None else None
     guessed = None
     if verb_index is None and len(tokens) > 1 and tokens[1].text in ("it", "them") and tokens[0].text.isalpha() and tokens[0].text not in DETERMINERS and (
@@ -364,7 +354,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         particle = tokens[0].text  # "flick it on and then off again": the verb of the clause before, this particle
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
-    back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back"  # "set it back down"
+    back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back" and (
+        particle_at < 2 or tokens[particle_at - 2].text not in ("the", "its", "toward", "towards"))  # "set it back down", not "the one at the back down"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
         words & CENTRE_WORDS) or back_before
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra

@@ -82,9 +82,21 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
             continue
         mention = _trailing(tokens, mention, used, mentions)
         i = max(i, mention.end)
+        if mention.head and mentions and _apposed(tokens, mentions[-1], mention):
+            before = mentions.pop()  # "the big knob, the one on the left": one knob, told twice
+            mention = replace(before, sides=(*before.sides, *mention.sides), ordinal=before.ordinal if before.ordinal is not None else mention.ordinal,
+                              ordinal_from=before.ordinal_from or mention.ordinal_from, size=before.size or mention.size, end=mention.end,
+                              words=_words(tokens, before.start, mention.end))
         if mention.head:
             mentions.append(mention)
     return mentions
+
+
+def _apposed(tokens: list[Token], before: Mention, mention: Mention) -> bool:
+    """``mention`` ("the one on the left") only says which of ``before`` (a part noun, just before it after a comma)."""
+    return (mention.anaphor and not mention.other and before.kind is not None and not (before.pronoun or before.is_object or before.plural)
+            and [t.text for t in tokens[before.end:mention.start]] in ([","], [",", "the"]) and bool(
+                mention.sides or mention.ordinal is not None or mention.size))
 
 
 def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention | None, int]:
@@ -338,7 +350,7 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
         end = j + 1 + (1 if nxt in ("side", "hand", "end") else 0)
         if prep == "from" and mention.ordinal is not None:
             return replace(mention, ordinal_from=SPATIAL[word][0], end=end, words=_words(tokens, mention.start, end))
-        if prep in ("on", "at", "in", "to"):
+        if prep in ("on", "at", "in", "to") or (prep == "of" and nxt in ("side", "hand", "end")):  # "the door of right side"
             placed = replace(mention, sides=(*mention.sides, SPATIAL[word]), end=end, words=_words(tokens, mention.start, end))
             return _trailing(tokens, placed, used, earlier) if end < len(tokens) and tokens[end].text == "of" else placed
         return mention

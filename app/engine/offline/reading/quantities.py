@@ -135,6 +135,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "until only 5 cm of it sticks out": how far out, measured from closed
     if before and before[-1] in ("open", "opened", "ajar") and len(before) > 1 and before[-2] in _STATE_COPULAS:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
+    if before[-2:] in (["angle", "of"], ["opening", "of"], ["angle", "to"]):
+        return "closed"  # "at an angle of 120 degrees": the part's angle, from where it is shut
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):
         return "closed"
     if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] in ("the", "fully", "completely") and len(after) > 2 and after[2] in _CLOSED_WORDS)):

@@ -20,10 +20,8 @@ from app.engine.lexicon.words import (
     DETERMINERS,
     OTHER_WORDS,
     REQUEST_PHRASES,
-    ROTATION_SENSE,
     SHORTHAND,
     SPATIAL,
-    TURN_UNITS,
     VIEWER_POSSESSIVES,
 )
 from app.engine.offline.reading.token import Token
@@ -48,6 +46,7 @@ def _kept_as_is(tokens: list[Token], i: int) -> bool:
     return not any(t.number is not None or t.text in ("for", "while", "until") for t in tokens[j + 1:j + 5])
 
 
+_VIEWING = frozenset({"face", "look", "see", "stand", "view", "watch"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
 
@@ -91,6 +90,18 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             since = next((k for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end or out[k].text == ":"), -1)
             if request[-1] == ":" and 0 < len(out) - since - 1 <= 2:
                 del out[since + 1:]  # "Robot task: ...": the heading's own words go too
+            continue
+        if token.text == "as" and after in ("i", "you", "we") and i + 2 < len(tokens) and tokens[i + 2].text in _VIEWING:
+            end = next((k for k in range(i + 3, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("and", "then")), len(tokens))
+            skip = end - i - 1  # "crank it 90 degrees counter-clockwise as I face the door": how the user looks, not a part
+            if out and out[-1].text in ("left", "right") and (len(out) == 1 or out[-2].is_sentence_end):
+                out.pop()  # "Left as you face the cabinet.": which way "left" was meant, said again
+            continue
+        if token.text == "where" and i + 2 < len(tokens) and tokens[i + 1].number == 0 and tokens[i + 2].text in ("means", "is", "="):
+            end = next((k for k in range(i + 3, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+            skip = end - i - 1  # ", where zero means the lid is fully down": what the angle is measured from (closed, as always)
+            if out and out[-1].text == ",":
+                out.pop()
             continue
         if token.text == "leave" and _as_they_are(tokens, i):
             out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
@@ -185,35 +196,11 @@ def corrections(tokens: list[Token]) -> list[Token]:
     return out
 
 
-_KEPT = frozenset({"is", "are", "lives", "live", "sits", "sit", "lies", "lie", "stays", "belongs", "goes", "'s", "was"})
-_KEPT_AT = frozenset({"in", "on", "inside", "behind", "at", "under", "within"})
-_NOT_BEFORE_HOME = frozenset({"back", "to", "the", "its", "a", "at", "from", "go", "goes", "come", "comes", "return", "returns"})
-_STATE_AFTER_IS = frozenset({"open", "closed", "shut", "stuck", "ajar", "jammed", "still", "already", "halfway", "partly", "wide", "up", "down"})
 _LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
 _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
 
 
-_POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
-
-
-def _state_position(tokens: list[Token], i: int) -> tuple[str, int] | None:
-    """"into its locked position", "to the unlatched state": (the end state as a particle, how many tokens from ``i``)."""
-    words = [t.text for t in tokens[i + 1:i + 4]]
-    k = 1 if words[:1] and words[0] in ("its", "the", "their") else 0
-    if len(words) > k + 1 and words[k] in _POSITION_STATES and words[k + 1] in ("position", "state", "setting"):
-        return _POSITION_STATES[words[k]], k + 3
-    return None
-
-
-def _extreme_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
-    """"furthest to the left", "farthest right": (the side, how many tokens from ``i``)."""
-    words = [t.text for t in tokens[i + 1:i + 4]]
-    for lead in (["to", "the"], ["on", "the"], []):
-        k = len(lead)
-        if words[:k] == lead and len(words) > k and words[k] in ("left", "right"):
-            return words[k], k + 2
-    return None
 
 
 def same_words(tokens: list[Token]) -> list[Token]:
@@ -238,50 +225,14 @@ def same_words(tokens: list[Token]) -> list[Token]:
         elif t.text == "right" and after in _ALL_THE_WAY and before not in ("the", "to", "on", "at", "turn", "its", "", ",", ".", ";", "and"):
             out.extend((Token("all", "all", t.start, t.end), Token("the", "the", t.start, t.end), Token("way", "way", t.start, t.end)))
             continue
-        elif t.text in ("into", "to") and _state_position(tokens, i) is not None:
-            state, length = _state_position(tokens, i)  # type: ignore[misc]
-            out.append(Token(state, state, t.start, tokens[i + length - 1].end))  # "flip the catch into its locked position": shut
-            skip = i + length - 1
-            continue
-        elif t.text in ("furthest", "farthest", "furthermost") and _extreme_side(tokens, i) is not None:
-            side, length = _extreme_side(tokens, i)  # type: ignore[misc]
-            out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
-            skip = i + length - 1
-            continue
         elif t.text in ("far-left", "far-right") or (t.text == "far" and after in ("left", "right") and before in ("the", "its")):
             side = t.text.split("-")[-1] if "-" in t.text else after
             out.append(Token(f"{side}most", f"{side}most", t.start, t.end))  # "the far-right drawer": the rightmost
             continue
         elif t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most"):
             continue
-        elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4)):
-            t = Token("is", "be", t.start, t.end)  # "the drawer's sticking out", "the lid's open": is, not a possessive
-        elif t.text == "home" and (before in ("it", "them", "fully") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
-                before.isalpha() and before not in _NOT_BEFORE_HOME and (not after or after in (".", ",", ";", "!", "so", "and", "then")))):
-            t = Token("shut", "shut", t.start, t.end)  # "shove it (all the way) home": in as far as it goes
-        elif t.text.startswith("hand-") and t.text[5:] in VERBS:
-            t = Token(t.text[5:], t.text[5:], t.start, t.end, corrected_from=t.text)  # "hand-lift the lid": lift it by hand
-        elif t.text in ("full", "fully") and after in ("left", "right") and before not in ("to", "the"):
-            out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))  # "lever: full left": as far left as it goes
-            continue
-        elif t.text == "full" and after in ("up", "down", "open", "on", "off"):
-            t = Token("fully", "fully", t.start, t.end)  # "full open": as far as it goes
-        elif t.text == "no" and after == "need" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
-            out.append(Token("don't", "don't", t.start, tokens[i + 2].end))  # "no need to touch the dial": do not
-            skip = i + 2
-            continue
-        elif t.text == "," and after in ("which", "that") and i + 3 < len(tokens) and tokens[i + 2].text in _KEPT and tokens[i + 3].text in _KEPT_AT:
-            out.extend(Token(w, w, t.start, tokens[i + 2].end) for w in (".", "it", "is"))  # "the ketchup, which lives in the door"
-            skip = i + 2
-            continue
         elif t.text == "neither":
             out.extend((Token("without", "without", t.start, t.end), Token("both", "both", t.start, t.end)))
-            continue
-        elif t.text in ROTATION_SENSE and i + 1 < len(tokens) and tokens[i + 1].text.removesuffix("s") in TURN_UNITS and (out and (
-                out[-1].number is not None or out[-1].text in ("full", "complete", "whole", "quarter", "half", "a", "one", "single"))):
-            out.append(tokens[i + 1])  # "one full counterclockwise turn": the turn, then which way
-            out.append(t)
-            skip = i + 1
             continue
         out.append(t)
     return out

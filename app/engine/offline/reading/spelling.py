@@ -50,6 +50,7 @@ _FUNCTION = (
     "once", "when", "it", "is", "are", "be", "for", "its", "that", "which", "way", "as", "far", "more", "another", "further", "again",
     "around", "round", "about", "over", "through", "using", "down", "up", "out", "off", "back", "open", "shut", "closed", "side",
     "row", "column", "one", "ones", "go", "goes", "toward", "towards", "till", "home", "degree", "degrees", "seconds", "second", "times", "by", "same", "time",
+    "either", "any", "whichever", "direction",
 )
 
 

@@ -17,6 +17,7 @@ from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS
+from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
@@ -39,6 +40,8 @@ _TOKEN = re.compile(
     r"|(?P<slash>(?<=\s)/(?=\s))"
     r"|(?P<paren>[()])"
 )
+_ARROW_STEP_WORDS = frozenset({"up", "down", "open", "shut", "closed", "out", "back"})
+"""Words that make a verbless segment before "->" a step ("lid up to 90 deg -> ..."), not a heading."""
 _LETTERS = frozenset("abcdefgh")
 """Letters that number steps: "a) close the lid b) ..."."""
 _ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
@@ -50,8 +53,19 @@ _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
 
 
+_SAID_IN_PARENS = re.compile(r"^(\s*)\(([^()]*)\)|\((\s*(?:anti-?clockwise|counter-?clockwise|clockwise|ccw|cw|left|right|up|down)\s*)\)")
+"""Parentheses whose words are kept: a heading in parentheses that opens the prompt ("(big knob, the one on the left)
+-> ..."), a bare sense or side ("half a turn (anticlockwise)"). Other parentheses are asides and dropped."""
+
+
+def _unbracket(text: str) -> str:
+    """``text`` with the parentheses of :data:`_SAID_IN_PARENS` turned into commas (same length: offsets stay put)."""
+    return _SAID_IN_PARENS.sub(lambda m: m.group(0).replace("(", " ").replace(")", ","), text)
+
+
 def _raw_tokens(prompt: str) -> list[Token]:
     lowered = _ABBREVIATIONS.sub(lambda m: "," + " " * (len(m.group(0)) - 1), prompt.lower().replace("’", "'").replace("‘", "'"))
+    lowered = _unbracket(lowered)
     lowered = _BULLET.sub(lambda m: m.group(1) + ".", lowered)
     text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
     # the substitution above only inserts spaces: map offsets back to the original prompt
@@ -72,7 +86,8 @@ def _raw_tokens(prompt: str) -> list[Token]:
             continue
         if kind == "arrow":  # "drawer: half open -> pause -> closed": then; "door -> open it": a heading
             segment = list(itertools.takewhile(lambda t: not (t.is_sentence_end or t.text in (":", "then")), reversed(tokens)))
-            verbless = bool(segment) and not any(t.text in VERBS and (t is segment[-1] or kind_of_word(t.text) is None) for t in segment)  # "combination dial ->"
+            verbless = bool(segment) and not any(t.text in VERBS and (t is segment[-1] or kind_of_word(t.text) is None) for t in segment) and not any(
+                t.number is not None or t.text in _ARROW_STEP_WORDS for t in segment)  # "combination dial ->", not "lid up to 90 deg ->"
             tokens.append(Token(":" if verbless else "then", ":" if verbless else "then", start, end))
             continue
         if depth:
@@ -312,7 +327,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in expand(_raw_tokens(prompt), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(same_words(tokens))))))
+    tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

@@ -9,7 +9,7 @@ from app.engine.lexicon.words import DETERMINERS, MODALS, OBJECT_NOUNS, ORDINALS
 from app.engine.offline.reading.token import Token
 
 _SIDE_CUES = frozenset({"out", "in", "back", "open", "shut", "closed", "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise",
-                        "counter-clockwise", "cw", "ccw"})
+                        "counter-clockwise", "cw", "ccw", "of"})  # "of": "lower drawer of the two - pull it out"
 
 
 def side_of_part(tokens: list[Token]) -> bool:

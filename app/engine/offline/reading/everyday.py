@@ -1,0 +1,148 @@
+"""Everyday ways of saying what the lexicon has a word for, rewritten token by token before phrases are joined:
+"the drawer's sticking out" (is), "push it home" (shut), "into its locked position" (shut), "the knob furthest to the
+left" (leftmost), "lever: full left", "max cold" (a mixer tap: hot is the viewer's left), "to the midpoint of its
+travel" (halfway), "give it two seconds" (wait), "no need to touch the dial" (don't), "unlatch nothing", "forget the
+pedal", "one full counterclockwise turn" (the turn, then its sense), "180 clockwise" (degrees), "the ketchup, which
+lives in the door" (a sentence of its own: where it is kept)."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import NUMBER_WORDS, ROTATION_SENSE, TURN_UNITS
+from app.engine.offline.reading.token import Token
+
+_STATE_AFTER_IS = frozenset({"open", "closed", "shut", "stuck", "ajar", "jammed", "still", "already", "halfway", "partly", "wide", "up", "down"})
+
+
+_NOT_BEFORE_HOME = frozenset({"back", "to", "the", "its", "a", "at", "from", "go", "goes", "come", "comes", "return", "returns"})
+
+
+_KEPT = frozenset({"is", "are", "lives", "live", "sits", "sit", "lies", "lie", "stays", "belongs", "goes", "'s", "was"})
+
+
+_KEPT_AT = frozenset({"in", "on", "inside", "behind", "at", "under", "within"})
+
+
+_SPELLS = frozenset({"moment", "second", "sec", "couple", "few", "beat", "minute"})
+"""What follows "give it a ..." when it is a wait ("give it a couple of seconds")."""
+
+
+_TAP_SIDES = {"hot": "left", "cold": "right"}
+
+
+_POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
+
+
+def _state_position(tokens: list[Token], i: int) -> tuple[str, int] | None:
+    """"into its locked position", "to the unlatched state": (the end state as a particle, how many tokens from ``i``)."""
+    words = [t.text for t in tokens[i + 1:i + 4]]
+    k = 1 if words[:1] and words[0] in ("its", "the", "their") else 0
+    if len(words) > k + 1 and words[k] in _POSITION_STATES and words[k + 1] in ("position", "state", "setting"):
+        return _POSITION_STATES[words[k]], k + 3
+    return None
+
+def _extreme_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
+    """"furthest to the left", "farthest right": (the side, how many tokens from ``i``)."""
+    words = [t.text for t in tokens[i + 1:i + 4]]
+    for lead in (["to", "the"], ["on", "the"], []):
+        k = len(lead)
+        if words[:k] == lead and len(words) > k and words[k] in ("left", "right"):
+            return words[k], k + 2
+    return None
+
+
+def everyday_words(tokens: list[Token]) -> list[Token]:
+    """``tokens`` with the everyday phrasings of this module's docstring rewritten (new tokens keep the offsets of the
+    words they replace)."""
+    out: list[Token] = []
+    skip = -1  # the last token already written with one before it
+    for i, t in enumerate(tokens):
+        if i <= skip:
+            continue
+        before = tokens[i - 1].text if i else ""
+        after = tokens[i + 1].text if i + 1 < len(tokens) else ""
+        if t.text in ("into", "to") and _state_position(tokens, i) is not None:
+            state, length = _state_position(tokens, i)  # type: ignore[misc]
+            out.append(Token(state, state, t.start, tokens[i + length - 1].end))  # "flip the catch into its locked position": shut
+            skip = i + length - 1
+            continue
+        elif t.text in ("furthest", "farthest", "furthermost") and _extreme_side(tokens, i) is not None:
+            side, length = _extreme_side(tokens, i)  # type: ignore[misc]
+            out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
+            skip = i + length - 1
+            continue
+        elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4)):
+            t = Token("is", "be", t.start, t.end)  # "the drawer's sticking out", "the lid's open": is, not a possessive
+        elif t.text == "home" and (before in ("it", "them", "fully") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
+                before.isalpha() and before not in _NOT_BEFORE_HOME and (not after or after in (".", ",", ";", "!", "so", "and", "then")))):
+            t = Token("shut", "shut", t.start, t.end)  # "shove it (all the way) home": in as far as it goes
+        elif t.text.startswith("hand-") and t.text[5:] in VERBS:
+            t = Token(t.text[5:], t.text[5:], t.start, t.end, corrected_from=t.text)  # "hand-lift the lid": lift it by hand
+        elif t.text in ("full", "fully") and after in ("left", "right") and before not in ("to", "the"):
+            out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))  # "lever: full left": as far left as it goes
+            continue
+        elif t.text == "full" and after in ("up", "down", "open", "on", "off"):
+            t = Token("fully", "fully", t.start, t.end)  # "full open": as far as it goes
+        elif t.text == "no" and after == "need" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
+            out.append(Token("don't", "don't", t.start, tokens[i + 2].end))  # "no need to touch the dial": do not
+            skip = i + 2
+            continue
+        elif t.text == "," and after in ("which", "that") and i + 3 < len(tokens) and tokens[i + 2].text in _KEPT and tokens[i + 3].text in _KEPT_AT:
+            out.extend(Token(w, w, t.start, tokens[i + 2].end) for w in (".", "it", "is"))  # "the ketchup, which lives in the door"
+            skip = i + 2
+            continue
+        elif t.number is not None and 10 <= abs(t.number) <= 1080 and after in ROTATION_SENSE:
+            out.extend((t, Token("degree", "degree", t.start, t.end)))  # "top knob 180 clockwise": degrees, the only unit that size
+            continue
+        elif t.text == "nothing" and out and out[-1].text in VERBS and before not in ("do", "does"):
+            verb = out.pop()  # "unlatch nothing, just fold the lid down": do not unlatch
+            out.extend((Token("don't", "don't", verb.start, verb.start), verb))
+            continue
+        elif t.text == "forget" and before in ("", ",", ".", ";", ":", "!") and after in ("the", "about", "its", "that"):
+            out.extend((Token("don't", "don't", t.start, t.end), Token("use", "use", t.start, t.end)))  # "Forget the pedal - ..."
+            skip = i + (after == "about")
+            continue
+        elif t.text in ("along", "against", "over") and after in ("the", "its") and i + 2 < len(tokens) and tokens[i + 2].text in ("back", "front"):
+            t = Token("toward", "toward", t.start, t.end)  # "lies flat along the back side": toward the back
+        elif t.text == "left" and before in ("i", "you", "we", "they", "he", "she", "who", "someone", "somebody", "kids", "people"):
+            t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
+        elif t.text in _TAP_SIDES and before in ("toward", "towards", "to", "max", "full", "fully", "the", "all_the_way"):
+            side = _TAP_SIDES[t.text]  # a mixer tap: hot is the viewer's left, cold the right (the convention the notes state)
+            if before in ("max", "full", "fully"):
+                out.pop()
+                if out and out[-1].text in ("to", "toward", "towards"):
+                    out.pop()  # "swing it across to full cold"
+                out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))
+            elif before in ("to", "toward", "towards"):
+                out.append(Token("the", "the", t.start, t.start))
+            out.append(Token(side, side, t.start, t.end, corrected_from=t.text))
+            skip = i + (after in ("side", "end", "water", "position"))
+            continue
+        elif t.text in ("midpoint", "mid-point", "middle", "half-way", "halfway") and before == "the" and [x.text for x in tokens[i + 1:i + 3]] in (
+                ["of", "its"], ["of", "the"]) and i + 3 < len(tokens) and tokens[i + 3].text in ("travel", "range", "stroke", "track", "slide", "swing", "way"):
+            if len(out) >= 2 and out[-2].text in ("to", "at"):
+                del out[-2:]
+            else:
+                out.pop()
+            out.append(Token("halfway", "halfway", t.start, tokens[i + 3].end))  # "to the midpoint of its travel": halfway
+            skip = i + 3
+            continue
+        elif t.text == "straight" and after in ("across", "over", "through"):
+            continue  # "swing it straight across to full cold": all the way over, not upright
+        elif t.text == "in" and before == "back" and after == "the" and i + 2 < len(tokens) and tokens[i + 2].text in ("middle", "centre", "center"):
+            t = Token("to", "to", t.start, t.end)  # "park it back in the middle": back to the middle
+        elif t.text == "give" and after in ("it", "them") and i + 2 < len(tokens) and ((
+                i + 3 < len(tokens) and (tokens[i + 2].number is not None or tokens[i + 2].text in NUMBER_WORDS)
+                and tokens[i + 3].text.rstrip("s") in ("second", "sec", "s", "minute", "moment")) or (
+                i + 3 < len(tokens) and tokens[i + 2].text == "a" and tokens[i + 3].text in _SPELLS)):
+            out.append(Token("wait", "wait", t.start, tokens[i + 1].end))  # "give it two seconds": wait
+            skip = i + 1
+            continue
+        elif t.text in ROTATION_SENSE and i + 1 < len(tokens) and tokens[i + 1].text.removesuffix("s") in TURN_UNITS and (out and (
+                out[-1].number is not None or out[-1].text in ("full", "complete", "whole", "quarter", "half", "a", "one", "single"))):
+            out.append(tokens[i + 1])  # "one full counterclockwise turn": the turn, then which way
+            out.append(t)
+            skip = i + 1
+            continue
+        out.append(t)
+    return out

@@ -1,0 +1,32 @@
+"""A wish instead of a command: "I need the rack out", "the oven door needs to be halfway down", "drawer needs to
+come out 8 inches". The wish words go; what is left names a part and its wanted state."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.words import DETERMINERS, WISHES
+from app.engine.offline.reading.mentions import kind_of_word
+from app.engine.offline.reading.token import Token
+
+_WISH_LEADS = frozenset({"but", "so", "and", "ok", "okay", "for", "now", "right", "well", "anyway"})
+_WISH_ADVERBS = frozenset({"just", "really", "only", "also", "still", "actually"})
+
+
+def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
+    """"I need the rack out": drop the wish; what is left names a part and its wanted state."""
+    k = 0
+    while k < len(tokens) - 1 and tokens[k].text in _WISH_LEADS:
+        k += 1  # "but for now I just need its drawer ...", "so I want ..."
+    if k < len(tokens) and (tokens[k].text in WISHES or (tokens[k].text in ("need", "needs", "want") and k + 1 < len(tokens)
+                                                          and tokens[k + 1].text in ("the", "this", "that", "both", "its", "my"))):
+        return True, tokens[k + 1:]  # "I need ...", "need the whole microwave flipped round"
+    if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
+        return True, tokens[k + 3:]
+    words = [t.text for t in tokens]
+    for j in range(k + 1, len(tokens) - 1):
+        must = 3 if words[j:j + 3] in (["needs", "to", "be"], ["need", "to", "be"], ["has", "to", "be"], ["have", "to", "be"]) else (
+            2 if words[j:j + 2] in (["should", "be"], ["must", "be"]) else 0)
+        if must and words[k] in DETERMINERS and j + must < len(tokens) and tokens[j + must].text not in ("a", "an", "the"):
+            return True, tokens[k:j] + tokens[j + must:]  # "the oven door needs to be halfway down": the part and its wanted state
+    if len(words) >= 2 and words[-1] in ("needs", "has") and (words[k] in DETERMINERS or kind_of_word(words[-2]) is not None):
+        return True, tokens[:-1]  # "drawer needs | to come out 8 inches": the part, then what it should do
+    return False, tokens
