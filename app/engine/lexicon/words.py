@@ -281,7 +281,7 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
                         "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "same", "extension", "pose", "target", "shot", "take", "scene", "clip", "anim", "loop", "keyframe", "frame",
-                        "dev", "developer", "game", "render", "rig", "tutorial", "cutscene", "storyboard", "narrator", "demo", "like_that", "like_this", "animating", "animation", "moving", "movement"})
+                        "enough", "sense", "dev", "developer", "game", "render", "rig", "tutorial", "cutscene", "storyboard", "narrator", "demo", "like_that", "like_this", "animating", "animation", "moving", "movement"})
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})

@@ -649,6 +649,17 @@ ROWS: list[Row] = [
     R("extra/suitcase_100550", "Unzip nothing, just lower the front lid all the way.", joints={"joint_0": E(end="upper")}),
     R("trash_can_102181", "Forget the pedal, lift the lid by hand.", joints={"joint_0": E(still=True), "joint_1": E(moves=True)}),
     R("dishwasher_11700", "Turn the dishwasher unit around.", yaw_deg=180.0, joints={"joint_0": E(still=True)}),
+    # --- blind dev probe, round 14 (benchmark/probes/dev_round14_prompts.jsonl, scored once before these): classes fixed, rephrased ---
+    R("microwave_7304", "open the door ~45 deg, just enough to see inside", joints={"joint_1": E(end=0.7854)}),
+    R("refrigerator_11178", "Left fridge door, open it to 45 degrees.", joints={"joint_0": E(end=0.7854), "joint_1": E(still=True)}),
+    R("extra/oven_7179", "Upper oven door, bring it all the way down.", joints={"joint_4": E(moves=True), "joint_3": E(still=True)}),
+    R("toaster_103477", "Browning dial: 0.8 rad in the clockwise sense.", joints={"joint_0": E(abs_end=0.8)}),
+    R("safe_101593", "big dial: 120 degrees counter clockwise, nothing else", joints={"joint_1": E(abs_end=2.0944), "joint_0": E(still=True),
+                                                                                        "joint_2": E(still=True)}),
+    R("extra/oven_7179", "I need the top-most rack 20 cm out.", joints={"joint_0": E(end=0.2)}),
+    R("storage_19179", "On this chest, the lower one should come out 20 cm.", joints={"joint_0": E(end=0.2), "joint_1": E(still=True)}),
+    R("toilet_102622", "Lift the lid, then hit the flush.", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
+    R("faucet_148", "Mixer lever to the coldest setting.", joints={"joint_0": E(end="lower")}),
 ]
 
 

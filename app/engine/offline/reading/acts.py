@@ -41,6 +41,7 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_LOOKING = frozenset({"see", "look", "peek", "peep", "check", "watch", "view", "inspect", "glance"})
 _USE_VERBS = frozenset({"use", "try", "clean", "fill", "load", "empty", "check"})
 """What a person wants to do with the whole object ("I need to use the loo"): their aim, not a motion."""
 _IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
@@ -215,6 +216,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     leading: list[Frame] = []  # negations told before any step
     for index, frame in enumerate(frames):
         verbless = frame.verb is None
+        if frame.link is Link.PURPOSE and acts and frame.verb in _LOOKING and not any(m.kind is not None for m in frame.themes):
+            continue  # "open the door 45 degrees to see inside": what the person will do then, not a motion
         merged = merged_result(acts[-1], frame) if acts and not acts[-1].condition else None
         if merged is not None:
             acts[-1] = merged  # "drop the handle so it lies flat along the back side", "swing it back so it sits flush"

@@ -27,7 +27,7 @@ _SPELLS = frozenset({"moment", "second", "sec", "couple", "few", "beat", "minute
 """What follows "give it a ..." when it is a wait ("give it a couple of seconds")."""
 
 
-_TAP_SIDES = {"hot": "left", "cold": "right"}
+_TAP_SIDES = {"hot": "left", "cold": "right", "hottest": "left", "coldest": "right"}
 
 
 _POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
@@ -61,7 +61,23 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         before = tokens[i - 1].text if i else ""
         after = tokens[i + 1].text if i + 1 < len(tokens) else ""
-        if t.text in ("into", "to") and _state_position(tokens, i) is not None:
+        if t.text.endswith("-most") and t.text[:-5] in ("top", "bottom", "left", "right", "front", "back", "upper", "lower", "inner", "outer"):
+            word = t.text.replace("-", "")
+            t = Token(word, word, t.start, t.end)  # "the bottom-most rack": the bottommost
+        if t.text == "flush" and before in ("the", "a") and (not after or not after.isalpha() or after in ("then", "and", "once", "twice")):
+            out.extend((t, Token("button", "button", t.start, t.end)))  # "press the flush": its flush button
+            continue
+        if t.text == "just" and after == "enough" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
+            if out and out[-1].text == ",":
+                out.pop()  # "open the door ~45 deg, just enough to see inside": the amount said, then why
+            skip = i + 1
+            continue
+        if t.text == "nothing" and after in ("else", "more") and (i + 2 >= len(tokens) or tokens[i + 2].is_punct):
+            if out and out[-1].text == ",":
+                out.pop()  # "200 degrees counter clockwise, nothing else": a remark, no step
+            skip = i + 1
+            continue
+        elif t.text in ("into", "to") and _state_position(tokens, i) is not None:
             state, length = _state_position(tokens, i)  # type: ignore[misc]
             out.append(Token(state, state, t.start, tokens[i + length - 1].end))  # "flip the catch into its locked position": shut
             skip = i + length - 1
@@ -108,15 +124,14 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
         elif t.text in _TAP_SIDES and before in ("toward", "towards", "to", "max", "full", "fully", "the", "all_the_way"):
             side = _TAP_SIDES[t.text]  # a mixer tap: hot is the viewer's left, cold the right (the convention the notes state)
-            if before in ("max", "full", "fully"):
-                out.pop()
-                if out and out[-1].text in ("to", "toward", "towards"):
-                    out.pop()  # "swing it across to full cold"
+            if before in ("max", "full", "fully") or t.text.endswith("est"):
+                while out and out[-1].text in ("max", "full", "fully", "the", "to", "toward", "towards"):
+                    out.pop()  # "swing it across to full cold", "to the hottest setting"
                 out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))
             elif before in ("to", "toward", "towards"):
                 out.append(Token("the", "the", t.start, t.start))
             out.append(Token(side, side, t.start, t.end, corrected_from=t.text))
-            skip = i + (after in ("side", "end", "water", "position"))
+            skip = i + (after in ("side", "end", "water", "position", "setting"))
             continue
         elif t.text in ("midpoint", "mid-point", "middle", "half-way", "halfway") and before == "the" and [x.text for x in tokens[i + 1:i + 3]] in (
                 ["of", "its"], ["of", "the"]) and i + 3 < len(tokens) and tokens[i + 3].text in ("travel", "range", "stroke", "track", "slide", "swing", "way"):

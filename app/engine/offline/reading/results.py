@@ -15,6 +15,10 @@ if TYPE_CHECKING:
     from app.engine.offline.reading.acts import Act
 
 
+_RELATIVE = frozenset({"perpendicular", "parallel", "square", "level", "flush"})
+"""Words that set the part against another ("perpendicular to the front"): the side named is no way to go."""
+
+
 def _about_it(frame: Frame) -> bool:
     """A result clause on "it" with no verb of its own ("it lies flat", "it sits flush")."""
     return frame.link is Link.RESULT and bool(frame.themes) and all(m.pronoun for m in frame.themes) and (frame.verb is None or frame.sense is None)
@@ -25,7 +29,7 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
     if not _about_it(frame) or not act.goal.themes:
         return None
     goal, q, r = act.goal, act.goal.quantities, frame.quantities
-    if r.direction is not None and q.direction is None:
+    if r.direction is not None and q.direction is None and not _RELATIVE & set(frame.text.split()):
         # "drop the handle so it lies flat along the back side": which way the part itself goes
         return replace(act, goal=replace(goal, quantities=replace(q, direction=r.direction, orientation=r.orientation or q.orientation,
                                                                    amount=q.amount or r.amount)))

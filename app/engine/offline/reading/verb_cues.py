@@ -17,9 +17,12 @@ def side_of_part(tokens: list[Token]) -> bool:
     by what the part does (a particle, a turn sense) — the side of the part, not the verb "lower"."""
     from app.engine.offline.reading.mentions import kind_at
 
-    if len(tokens) < 2 or tokens[0].text not in SPATIAL or kind_at(tokens, 1) is None:
+    if len(tokens) < 2 or tokens[0].text not in SPATIAL:
         return False
-    return len(tokens) == 2 or any(t.text in _SIDE_CUES for t in tokens[2:6])  # "Lower knob - turn it ...": the part alone
+    j = 2 if tokens[1].text in OBJECT_NOUNS and len(tokens) > 2 and kind_at(tokens, 2) is not None else 1  # "lower oven door, ..."
+    if kind_at(tokens, j) is None:
+        return False
+    return len(tokens) == j + 1 or any(t.text in _SIDE_CUES for t in tokens[j + 1:j + 5])  # "Lower knob - turn it ...": the part alone
 
 
 _DETERMINING = frozenset({"the", "its", "this", "that", "your", "both", "each", "my"})
@@ -35,7 +38,8 @@ def unknown_verb(token: Token, following: str = "") -> bool:
     word = token.text
     if not word.isalpha() or word in DETERMINERS or word in ORDINALS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (
             word in OBJECT_NOUNS and following not in _DETERMINING) or (  # "bin lid: up to vertical": the object, not "to bin"
-            word in SPATIAL and kind_of_word(following) is not None):  # "bottom door down flat": the door's side, not "to bottom"
+            word in SPATIAL and (kind_of_word(following) is not None or following in OBJECT_NOUNS)):  # "bottom door down flat", "right
+        # fridge door, swing it ...": the part's side, not "to bottom" / "to right"
         return False
     lemmas = getAllLemmas(word)
     return word in lemmas.get("VERB", ())
