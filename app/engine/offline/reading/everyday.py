@@ -57,10 +57,9 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
     out: list[Token] = []
     skip = -1  # the last token already written with one before it
     for i, t in enumerate(tokens):
+        before, after = (tokens[i - 1].text if i else ""), (tokens[i + 1].text if i + 1 < len(tokens) else "")
         if i <= skip:
             continue
-        before = tokens[i - 1].text if i else ""
-        after = tokens[i + 1].text if i + 1 < len(tokens) else ""
         if t.text.endswith("-most") and t.text[:-5] in ("top", "bottom", "left", "right", "front", "back", "upper", "lower", "inner", "outer"):
             word = t.text.replace("-", "")
             t = Token(word, word, t.start, t.end)  # "the bottom-most rack": the bottommost
