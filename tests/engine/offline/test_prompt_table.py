@@ -660,6 +660,9 @@ ROWS: list[Row] = [
     R("storage_19179", "On this chest, the lower one should come out 20 cm.", joints={"joint_0": E(end=0.2), "joint_1": E(still=True)}),
     R("toilet_102622", "Lift the lid, then hit the flush.", joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
     R("faucet_148", "Mixer lever to the coldest setting.", joints={"joint_0": E(end="lower")}),
+    # "then step off" lets go of the control the step before pressed, not of the part it moved
+    R("trash_can_102181", "Step on the pedal to raise the lid, then step off so it falls shut.", joints={"joint_0": E(peak="upper", end="lower"),
+                                                                                                       "joint_1": E(end="lower")}),
 ]
 
 

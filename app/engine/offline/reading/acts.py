@@ -86,7 +86,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if frame.verb is not None and not frame.themes and not frame.instruments and previous is not None and previous.themes and (
             frame.text.split()[0] not in ("it", "they", "the")) and frame.quantities.axis is None and frame.sense not in (None, VerbSense.WAIT) and (
             not frame.let and frame.marker in ("then", "and_then", "after_that", "next", "afterwards", "finally")) and not (
-            frame.verb in VERBS and VERBS[frame.verb].implies):  # "put the lid up, then flush": the part flushing works
+            frame.verb in VERBS and VERBS[frame.verb].implies) and frame.sense is not VerbSense.RELEASE:  # "put the lid up, then flush":
+        # the part flushing works; "..., then step off": the control let go, not the part it moved
         return replace(frame, themes=previous.themes)  # "the handle swings up, then drops back down": the same part
     if frame.verb is None and frame.returning and not frame.themes and frame.quantities.amount is None and previous is not None and (
             previous.verb is None and previous.themes and not previous.heading):

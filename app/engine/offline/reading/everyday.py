@@ -71,6 +71,10 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
                 out.pop()  # "open the door ~45 deg, just enough to see inside": the amount said, then why
             skip = i + 1
             continue
+        if t.text == "foot" and after in ("down", "off") and before in ("", ",", ".", ";", "then", "and", ":"):
+            out.append(Token("step", "step", t.start, t.end))  # "foot down on the pedal", "then foot off": step on / off it
+            skip = i + (after == "down" and i + 2 < len(tokens) and tokens[i + 2].text == "on")
+            continue
         if t.text == "nothing" and after in ("else", "more") and (i + 2 >= len(tokens) or tokens[i + 2].is_punct):
             if out and out[-1].text == ",":
                 out.pop()  # "200 degrees counter clockwise, nothing else": a remark, no step
