@@ -66,7 +66,7 @@ def _instant_model(state: dict[str, Any]) -> Iterator[str]:
         protocol_version = "HTTP/1.1"
 
         def log_message(self, *args: Any) -> None:
-            pass
+            """No access log: the benchmark prints only its numbers."""
 
         def do_POST(self) -> None:
             began = time.perf_counter()  # the server's reading and decoding is the model side's time too

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import base64
 import binascii
+import contextlib
 import hashlib
 import hmac
 import json
@@ -68,9 +69,8 @@ def _secret_file(path: Path) -> bytes:
             with os.fdopen(descriptor, "wb") as handle:
                 handle.write(secrets.token_bytes(SECRET_BYTES))
             try:
-                os.link(temporary, path)  # first writer wins; another process's secret is kept
-            except FileExistsError:
-                pass
+                with contextlib.suppress(FileExistsError):
+                    os.link(temporary, path)  # first writer wins; another process's secret is kept
             finally:
                 temporary.unlink()
         secret = path.read_bytes()

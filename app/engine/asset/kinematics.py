@@ -118,12 +118,13 @@ def _rest_locals(asset: ArticulatedAsset) -> dict[str, FloatArray]:
 _LEADERS: WeakKeyDictionary[ArticulatedAsset, frozenset[str]] = WeakKeyDictionary()
 
 
-def _leaders(asset: ArticulatedAsset) -> frozenset[str]:
-    """Joints some mimic joint follows (per asset: asking every joint is then no walk over all joints)."""
+def drives_mimics(asset: ArticulatedAsset, joint: str) -> bool:
+    """Some mimic joint follows ``joint`` (the leaders are found once per asset: asking every joint is no walk over
+    all joints; a follower's own followers follow it through that follower)."""
     known = _LEADERS.get(asset)
     if known is None:
         known = _LEADERS[asset] = frozenset(j.mimic.joint for j in asset.joints.values() if j.mimic is not None)
-    return known
+    return joint in known
 
 
 def _driven_values(asset: ArticulatedAsset, joint_values: Mapping[str, FloatArray], count: int) -> dict[str, FloatArray]:
@@ -196,8 +197,7 @@ def subtree_poses(asset: ArticulatedAsset, joint: str, values: FloatArray, rest:
     """
     values = np.asarray(values, dtype=np.float64).reshape(-1)
     count = values.shape[0]
-    driven = _driven_values(asset, {joint: values}, count)
-    if len(driven) != 1:
+    if drives_mimics(asset, joint):
         poses = link_poses(asset, {joint: values}, frames=count)
         return {name: poses[name] for name in asset.moving_links(joint)}
     at_rest = _rest_locals(asset)
@@ -216,7 +216,7 @@ def subtree_motion(asset: ArticulatedAsset, joint: str, values: FloatArray, rest
     one rigid transform for the whole subtree, so posing it is one product over its points. None when the
     joint drives mimic followers (their links move otherwise): use :func:`subtree_poses`."""
     values = np.asarray(values, dtype=np.float64).reshape(-1)
-    if joint in _leaders(asset):
+    if drives_mimics(asset, joint):
         return None
     spec = asset.joints[joint]
     return (rest[spec.parent][0] @ spec.origin)[None] @ joint_motion(spec, values) @ np.linalg.inv(rest[spec.child][0])[None]

@@ -15,7 +15,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from app.engine.asset.kinematics import link_poses, subtree_motion, subtree_poses
+from app.engine.asset.kinematics import drives_mimics, link_poses, subtree_motion, subtree_poses
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import CONTROL_KINDS, HINGED_KINDS, PartKind, info, kind_of_label
 from app.engine.offline.naming import link_kind, tokens
@@ -239,7 +239,7 @@ def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedA
     if geometry.open_value is not None and geometry.closed_value is not None:
         if geometry.type == "prismatic":
             ends = np.array([geometry.closed_value, geometry.open_value])
-            if subtree_motion(asset, geometry.joint, ends, rest) is None:  # mimic followers move with it: where its parts go on average
+            if drives_mimics(asset, geometry.joint):  # mimic followers move with it: where its parts go on average
                 posed = subtree_poses(asset, geometry.joint, ends, rest)
                 shift = _posed(points, posed, geometry.moving_links, 1).mean(axis=0) - _posed(points, posed, geometry.moving_links, 0).mean(axis=0)
                 return 2.0 * _horizontal(shift)

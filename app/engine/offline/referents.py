@@ -87,9 +87,9 @@ class Referents:
         notes: list[str] = []
         if kind is None and (kind := carrier_of(mention.head, self.obj.category)) is not None:
             notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
-        only = {p.kind for p in self.parts}
         if kind is None and mention.anaphor and "one" in mention.words.split() and not mention.other and (
-                mention.sides or mention.ordinal is not None) and len(only) == 1 and (one := next(iter(only))) is not None:
+                mention.sides or mention.ordinal is not None) and len(only := {p.kind for p in self.parts}) == 1 and (
+                one := next(iter(only))) is not None:
             kind = one  # "On the chest of drawers, the upper one ...": its parts are all drawers
             notes.append(f"read '{mention.words or mention.head}' as a {one.value}: every movable part of {self.asset.name} is one")
         if not _qualified(mention) and not mention.plural and mention.head in self.assigned:

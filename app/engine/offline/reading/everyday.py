@@ -80,13 +80,13 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
                 out.pop()  # "200 degrees counter clockwise, nothing else": a remark, no step
             skip = i + 1
             continue
-        elif t.text in ("into", "to") and _state_position(tokens, i) is not None:
-            state, length = _state_position(tokens, i)  # type: ignore[misc]
+        elif t.text in ("into", "to") and (position := _state_position(tokens, i)) is not None:
+            state, length = position
             out.append(Token(state, state, t.start, tokens[i + length - 1].end))  # "flip the catch into its locked position": shut
             skip = i + length - 1
             continue
-        elif t.text in ("furthest", "farthest", "furthermost") and _extreme_side(tokens, i) is not None:
-            side, length = _extreme_side(tokens, i)  # type: ignore[misc]
+        elif t.text in ("furthest", "farthest", "furthermost") and (extreme := _extreme_side(tokens, i)) is not None:
+            side, length = extreme
             out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
             skip = i + length - 1
             continue
