@@ -1,4 +1,4 @@
-"""Scaling with the joint count: ``python -m benchmark.speed_scaling [--joints 64,256,1024] [--repeats N]``.
+"""Scaling with the joint count: ``python -m benchmark.speed_scaling [--joints 64,256,1024,4096] [--repeats N]``.
 
 A generated chain of N revolute joints in a row (one box per link, nothing else), written to a
 temporary folder. Per N, the median seconds of N-independent steps of ``artimo inspect`` and of
@@ -8,7 +8,9 @@ a run, in process (joint and link limits raised past N):
 - ``summary``  the joint summary and scale context (``artimo inspect --json``'s first parts);
 - ``layout``   ``asset_layout``: part positions and joint ends (``artimo inspect``, the asset
   summary route), which reads the offline agent's per-asset geometry
-  (``app/engine/offline/geometry.py``: per joint, the links it moves, a slice of a depth-first layout);
+  (``app/engine/offline/geometry.py``: per joint, the links it moves, a slice of a depth-first layout, read
+  whole up to ``MAX_MOVED_POINTS`` = 8192 points and on an even stride above: a chain's first joints move every
+  link after them, so below that cap the layout grows with the square of the chain, above it linearly);
 - ``run``      validate + execute + GLB of a 1 s plan turning the first joint;
 
 and ``inspect`` the whole ``artimo --no-cache inspect`` process (N <= 256, its default limit).
@@ -90,7 +92,7 @@ def _measure(folder: Path, joints: int, repeats: int) -> dict[str, float | None]
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--joints", default="64,256,1024", help="comma-separated joint counts (default 64,256,1024)")
+    parser.add_argument("--joints", default="64,256,1024,4096", help="comma-separated joint counts (default 64,256,1024,4096)")
     parser.add_argument("--repeats", type=int, default=3)
     args = parser.parse_args(argv)
     counts = sorted({int(n) for n in args.joints.split(",")})

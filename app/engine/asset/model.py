@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from functools import cached_property
+from itertools import pairwise
 from typing import Literal
 
 import numpy as np
@@ -214,7 +215,19 @@ class ArticulatedAsset:
         return self._child_joint_map.get(link, ())
 
     def descendants(self, link: str) -> LinkNames:
-        """``link`` and every link below it, in ``link_order`` (work in the size of the subtree, not of the asset)."""
+        """``link`` and every link below it, in ``link_order``: a slice of the depth-first order (work in the size of
+        the subtree, and no sort when that slice is already in ``link_order``, as in a chain)."""
+        order, span, falls = self.depth_first
+        if link not in span:  # not reachable from the root: walk it
+            return self._walked_descendants(link)
+        first, end = span[link]
+        below = order[first:end]
+        if falls[end - 1] == falls[first]:  # already in link_order
+            return LinkNames(below)
+        index = self._link_index
+        return LinkNames(sorted((n for n in below if n in index), key=index.__getitem__))
+
+    def _walked_descendants(self, link: str) -> LinkNames:
         found = {link}
         below = [link]
         while below:
@@ -223,6 +236,29 @@ class ArticulatedAsset:
                 below.append(joint.child)
         index = self._link_index
         return LinkNames(sorted((n for n in found if n in index), key=index.__getitem__))
+
+    @cached_property
+    def depth_first(self) -> tuple[tuple[str, ...], dict[str, tuple[int, int]], tuple[int, ...]]:
+        """(every link reachable from the root, parents first with each subtree contiguous and children in joint
+        order; link -> (first, end) of its subtree in it; per position k, how many neighbours before k are out of
+        ``link_order``: a slice [a, b) is in ``link_order`` when entries a and b - 1 are equal)."""
+        order: list[str] = []
+        stack = [self.root_link]
+        while stack:
+            link = stack.pop()
+            order.append(link)
+            stack.extend(joint.child for joint in reversed(self.child_joints(link)))
+        size = dict.fromkeys(order, 1)
+        for link in reversed(order):  # children come after their parent: sum bottom-up
+            parent = self.parent_joint(link)
+            if parent is not None and parent.parent in size:
+                size[parent.parent] += size[link]
+        index = {n: k for k, n in enumerate(order)}
+        rank = [self._link_index.get(n, -1) for n in order]
+        falls = [0]
+        for before, after in pairwise(rank):
+            falls.append(falls[-1] + (before > after or min(before, after) < 0))
+        return tuple(order), {n: (index[n], index[n] + size[n]) for n in order}, tuple(falls)
 
     def moving_links(self, joint: str) -> LinkNames:
         """Links moved by ``joint``: its child and all descendants."""

@@ -30,12 +30,9 @@ class RestPoints:
     @classmethod
     def of(cls, asset: ArticulatedAsset, world: dict[str, FloatArray]) -> RestPoints:
         """``world``: link -> (k, 3) rest points in the world frame (links without geometry absent or empty)."""
-        links = _depth_first(asset)
+        links, order, _ = asset.depth_first
         counts = np.array([world[n].shape[0] if n in world else 0 for n in links], dtype=np.int64)
         offsets = np.concatenate([[0], np.cumsum(counts)])
-        size = _subtree_sizes(asset, links)
-        index = {n: k for k, n in enumerate(links)}
-        order = {n: (index[n], index[n] + size[n]) for n in links}
         span = {n: (int(offsets[a]), int(offsets[b])) for n, (a, b) in order.items()}
         chunks = [world[n] for n in links if n in world and world[n].shape[0]]
         points = np.concatenate(chunks) if chunks else np.zeros((0, 3))
@@ -62,23 +59,3 @@ class RestPoints:
     def box(self) -> tuple[FloatArray, FloatArray]:
         """(low, high) of the whole object at rest."""
         return self.low_after[0], self.high_after[0]
-
-
-def _depth_first(asset: ArticulatedAsset) -> list[str]:
-    """Every link, parents before children, each subtree contiguous (children in joint order)."""
-    out: list[str] = []
-    stack = [asset.root_link]
-    while stack:
-        link = stack.pop()
-        out.append(link)
-        stack.extend(joint.child for joint in reversed(asset.child_joints(link)))
-    return out
-
-
-def _subtree_sizes(asset: ArticulatedAsset, links: list[str]) -> dict[str, int]:
-    size = dict.fromkeys(links, 1)
-    for link in reversed(links):  # children come after their parent: sum bottom-up
-        parent = asset.parent_joint(link)
-        if parent is not None:
-            size[parent.parent] += size[link]
-    return size

@@ -41,8 +41,16 @@ def motions(monkeypatch: pytest.MonkeyPatch) -> list[str]:
     return called
 
 
+def branches(tmp_path: Path) -> ArticulatedAsset:
+    """Two branches whose joints are declared interleaved: ``link_order`` is not the depth-first order."""
+    links = [link(n, box((0.05, 0.05, 0.05))) for n in ("base", "a", "b", "a2", "b2")]
+    joints = [joint(f"j_{child}", "revolute", parent, child, xyz=(0.1, 0.0, 0.0), axis=(0.0, 0.0, 1.0), limit=(0.0, 1.0))
+              for parent, child in (("base", "a"), ("base", "b"), ("a", "a2"), ("b", "b2"))]
+    return load_asset(write_asset(tmp_path / "branches", robot(*links, *joints, name="branches")))
+
+
 def _assets(tmp_path: Path) -> list[ArticulatedAsset]:
-    return [chain(tmp_path, 9), load_asset(write_asset(tmp_path / "cabinet", cabinet_urdf(flap_offset=0.2)))]
+    return [chain(tmp_path, 9), load_asset(write_asset(tmp_path / "cabinet", cabinet_urdf(flap_offset=0.2))), branches(tmp_path)]
 
 
 def test_poses_with_some_joints_given_equal_poses_with_every_joint_given(tmp_path: Path) -> None:
@@ -102,7 +110,12 @@ def _descendants_by_scan(asset: ArticulatedAsset, start: str) -> tuple[str, ...]
 
 
 def test_tree_lookups_agree_with_a_scan_of_the_joints(tmp_path: Path) -> None:
-    for asset in _assets(tmp_path):
+    """Both ways ``descendants`` answers: a bare slice of the depth-first order where that slice is in ``link_order``,
+    a sorted slice where it is not (the interleaved branches' root)."""
+    assets = _assets(tmp_path)
+    bare = {asset.depth_first[2][span[1] - 1] == asset.depth_first[2][span[0]] for asset in assets for span in asset.depth_first[1].values()}
+    assert bare == {True, False}
+    for asset in assets:
         for name in asset.link_order:
             below = asset.descendants(name)
             assert below == _descendants_by_scan(asset, name)
@@ -141,3 +154,26 @@ def test_rest_points_slices_are_the_subtrees_and_their_complements(tmp_path: Pat
             stacked = np.concatenate(others)
             np.testing.assert_array_equal(box[0], stacked.min(axis=0))
             np.testing.assert_array_equal(box[1], stacked.max(axis=0))
+
+
+def test_a_joint_moving_more_points_than_the_cap_is_judged_on_a_stride_of_them(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each joint's geometry reads at most ``MAX_MOVED_POINTS`` points (a chain's first joints move all the others, which
+    made the layout grow with the square of the chain); below the cap every point is read."""
+    from app.engine.offline import geometry
+
+    seen: list[int] = []
+    original = geometry._closedness
+
+    def counted(moving, low, high):  # type: ignore[no-untyped-def]
+        seen.append(moving.shape[0])
+        return original(moving, low, high)
+
+    monkeypatch.setattr(geometry, "_closedness", counted)
+    asset = chain(tmp_path, 12)
+    geometry.analyse(asset)
+    assert max(seen) > 20
+    monkeypatch.setattr(geometry, "MAX_MOVED_POINTS", 20)
+    seen.clear()
+    capped = geometry.analyse(chain(tmp_path / "again", 12))
+    assert seen and max(seen) <= 20
+    assert set(capped.joints) == set(geometry.analyse(asset).joints)
