@@ -121,6 +121,11 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
     "deg/s": ("omega", 0.017453292519943295), "degrees per second": ("omega", 0.017453292519943295),
     "m/s": ("speed", 1.0), "meters per second": ("speed", 1.0), "metres per second": ("speed", 1.0), "cm/s": ("speed", 0.01),
 })
+PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
+"""Nouns of a wait ("2 s pause", "a 4-second beat")."""
+FACE_RELATIONS = frozenset({"perpendicular", "parallel", "square", "level", "flush", "proud", "normal", "relative", "line"})
+"""Words that set a part against a face of the object ("proud of the front", "perpendicular to the front", "in line with
+the top"): the side named after them is that face, neither a part nor a way to go."""
 STATES: Mapping[str, str] = MappingProxyType({
     # adjectives / particles naming an end state
     "open": "open", "opened": "open", "shut": "closed", "closed": "closed", "up": "up", "down": "down",

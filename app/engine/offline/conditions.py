@@ -39,6 +39,8 @@ def condition(builder: Builder, act: Act) -> None:
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
             set_topic(builder, frame)  # "Quick anim: ...": a summary that names no part; "the chicken is on the lowest shelf - ..."
         return
+    if any(m.is_object for m in frame.themes) and not all(m.is_object for m in frame.themes):
+        frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))  # "the safe has two dials": the dials
     parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
     words_in = set(frame.text.split())
     if words_in & {"starts", "begins", "started", "already"}:

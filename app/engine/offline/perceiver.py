@@ -84,6 +84,9 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     for act in acts:
+        if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
+            builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
+            act = replace(act, goal=act.means, means=None)
         try:
             builder.add(act)
         except GroundingError as exc:

@@ -61,6 +61,8 @@ class Referents:
     scene: tuple[tuple[Side, bool], ...] = ()
     """Sides of the object a heading named ("SHOT 4, top oven: door drops ..."): where a bare mention's parts are."""
     assigned: dict[str, Part] = field(default_factory=dict)
+    said: list[Mention] = field(default_factory=list)
+    """Every mention of the prompt in order: "pull that rack out" after "the middle rack" means the middle one."""
     """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
 
     def refuse(self, why: str, candidates: list[Part] | None = None) -> GroundingError:
@@ -162,6 +164,7 @@ class Referents:
         """Different nouns in one prompt name different parts: "spin the dial, then turn the spoked handle" on
         a safe whose two knobs are the dial and the (large, spoked) handle. Qualified mentions take their part
         first; a noun left with one part takes it."""
+        self.said = list(mentions)
         pools: dict[tuple[str, ...], list[Mention]] = {}
         candidates_of: dict[tuple[str, ...], list[Part]] = {}
         for mention in mentions:
@@ -203,6 +206,8 @@ class Referents:
             count = found.ordinal_overflow
             raise self.refuse(f"'{mention.words}' asks for more than there are: {self.asset.name} has "
                               f"{_NUMBER_WORDS.get(count, str(count))} {label}{'s' if count != 1 else ''}", list(found.ambiguous) or None)
+        if found.ambiguous and (named := self._named_before(mention)) is not None:
+            return named
         if found.ambiguous:
             raise self.refuse(f"'{mention.words or mention.head}' could mean {len(found.ambiguous)} parts", list(found.ambiguous))
         if not found.parts:
@@ -211,6 +216,23 @@ class Referents:
             hint = self._did_you_mean(mention.head)
             raise self.refuse(f"the prompt mentions '{mention.words or mention.head}', but {self.asset.name} has no such movable part{hint}")
         return list(found.parts), list(found.notes)
+
+    def _named_before(self, mention: Mention) -> tuple[list[Part], list[str]] | None:
+        """"that rack" / "this door" / "the same drawer" with no qualifier of its own: the one part an earlier mention of
+        that kind named with qualifiers ("baste the chicken on the middle rack, pull that rack out")."""
+        words = mention.words.split()
+        pointing = words[:1] in (["that"], ["this"], ["same"]) or words[:2] == ["the", "same"]
+        if not pointing or _qualified(mention):
+            return None
+        before = self.said[:self.said.index(mention)] if mention in self.said else []
+        owners = [m.owner for m in before if m.owner is not None]  # "the chicken on the middle rack": the rack
+        for earlier in reversed([*owners, *before]):
+            if earlier.kind is mention.kind and _qualified(earlier) and not earlier.plural:
+                found = self.ground(earlier)
+                if len(found.parts) == 1 and not found.ambiguous:
+                    return list(found.parts), [f"'{mention.words}' is '{earlier.words}', said before"]
+                return None
+        return None
 
     def _host(self, mention: Mention, prefer: list[Part] | None) -> tuple[list[Part], list[str]] | None:
         """"the door latch", "the lid catch" on an asset whose latch is not a movable part: the part it
@@ -276,7 +298,9 @@ class Referents:
         return [min(scored)[3]] if scored else []
 
     def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
-        """"the knob furthest from the big one", "the knob farther from the hinge"."""
+        """"the knob furthest from the big one", "the knob farther from the hinge", "the lever furthest from me" (the back)."""
+        if reference_mention.head == "viewer":
+            return [min(candidates, key=lambda p: (round(float(position(p, self.obj)[0]), 4), p.joint))]
         return self._by_distance(reference_mention, candidates, max)
 
     def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:

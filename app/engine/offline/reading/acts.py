@@ -9,10 +9,12 @@ from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, OPPOSITE_SIDES
+from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, OPPOSITE_SIDES, PAUSE_NOUNS
 from app.engine.offline.reading.clauses import Link
+from app.engine.offline.reading.ellipsis import carry
 from app.engine.offline.reading.frames import Frame
-from app.engine.offline.reading.quantities import Quantities
+from app.engine.offline.reading.measured_from import measured_from
+from app.engine.offline.reading.quantities import Quantities, Reference
 from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
 
@@ -46,78 +48,10 @@ _USE_VERBS = frozenset({"use", "try", "clean", "fill", "load", "empty", "check"}
 """What a person wants to do with the whole object ("I need to use the loo"): their aim, not a motion."""
 _IDLE_VERBS = frozenset({"run", "brew", "cook", "boil", "drain", "drip", "cool", "dry", "sit", "steep", "soak", "heat", "warm", "rest", "spin"})
 _STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs", "stay", "remain", "hang", "sit"})
-_PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest"})
-_TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
-def _carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
-    if frame.link is Link.NEGATED:
-        return frame  # "keep your hands off the drawer": what not to touch takes no verb
-    if frame.verb is None and not frame.themes and previous is not None and previous.verb is None and previous.themes and (
-            frame.quantities.amount is not None or frame.quantities.orientation is not None):
-        # "blender dial: 1/8 turn clockwise": the part before the colon, moved by the amount after it
-        verb = "turn" if frame.quantities.amount is not None and frame.quantities.amount.unit == "rad" else "move"
-        return replace(frame, verb=verb, sense=VerbSense.TURN if verb == "turn" else VerbSense.MOVE, themes=previous.themes)
-    amount = frame.quantities.amount
-    if frame.verb is None and frame.themes and amount is not None and amount.unit == "rad" and set(amount.words.split()) & _TURN_WORDS:
-        return replace(frame, verb="turn", sense=VerbSense.TURN)  # "then the turntable makes a half revolution"
-    if frame.same_direction and previous is not None:
-        q, before = frame.quantities, previous.quantities
-        frame = replace(frame, quantities=replace(q, direction=q.direction or before.direction, sense=q.sense or before.sense,
-                                                  axis=q.axis or before.axis))
-    return _carried(frame, previous, measured)
-
-
-def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
-    """A verbless clause takes the verb of the one before ("open the left door, then the right one");
-    an amount-only clause takes its parts too ("push it 0.3 m forward and then 0.3 m back"); "do the same
-    with the other one" and "the same amount" take its verb and amount."""
-    if frame.same and previous is not None and previous.verb is None and frame.quantities.amount is None and previous.quantities.amount is not None:
-        # "1) upper drawer out 0.3 m 2) lower drawer out the same distance": the amount, even when neither clause has a verb
-        return replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
-    if frame.same and previous is not None and previous.verb is not None:
-        source = previous if previous.quantities.amount is not None or measured is None else measured  # "the same amount": the last one said
-        quantities = replace(frame.quantities, amount=frame.quantities.amount or source.quantities.amount)
-        if frame.verb is None or frame.verb == "do" or frame.guessed_verb is not None:  # "give the other one the same"
-            themes = frame.themes or frame.instruments  # "do the same with the other one": the other one is the theme
-            return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
-                           themes=themes or previous.themes, instruments=() if not frame.themes else frame.instruments)
-        return replace(frame, quantities=quantities)
-    if frame.verb is not None and not frame.themes and not frame.instruments and previous is not None and previous.themes and (
-            frame.text.split()[0] not in ("it", "they", "the")) and frame.quantities.axis is None and frame.sense not in (None, VerbSense.WAIT) and (
-            not frame.let and frame.marker in ("then", "and_then", "after_that", "next", "afterwards", "finally")) and not (
-            frame.verb in VERBS and VERBS[frame.verb].implies) and frame.sense is not VerbSense.RELEASE:  # "put the lid up, then flush":
-        # the part flushing works; "..., then step off": the control let go, not the part it moved
-        return replace(frame, themes=previous.themes)  # "the handle swings up, then drops back down": the same part
-    if frame.verb is None and frame.returning and not frame.themes and frame.quantities.amount is None and previous is not None and (
-            previous.verb is None and previous.themes and not previous.heading):
-        return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes)  # "drawer out 30cm / wait 1s / back in"
-    if frame.verb is not None or previous is None or previous.verb is None:
-        return frame
-    amount_only = not frame.themes and (frame.quantities.amount is not None or frame.quantities.direction is not None or frame.quantities.axis is not None
-                                        or frame.returning)  # "..., then back to the middle"
-    if not frame.themes and frame.particle in ("on", "off") and previous.verb in VERBS:
-        # "flick the switch on and then off again": the same verb with this particle, on the same part
-        sense = VERBS[previous.verb].particles.get(frame.particle, previous.sense)
-        return replace(frame, verb=previous.verb, sense=sense, themes=previous.themes, instruments=previous.instruments)
-    if frame.codes and not frame.themes and not frame.returning:
-        return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle)
-    if (amount_only or all(m.pronoun for m in frame.themes)) and frame.returning and frame.quantities.amount is None and (
-            previous.sense in (VerbSense.HOLD, VerbSense.WAIT)):
-        # "leave it there 4 s, then back to where it started", "... then back up to the angle it started at": the return
-        # is the step, not another hold
-        return replace(frame, verb="return", sense=VerbSense.RETURN, themes=previous.themes, instruments=previous.instruments)
-    if frame.themes and frame.quantities.amount is None and previous.quantities.amount is not None and not frame.returning and frame.particle is None and (
-            frame.link in (Link.SEQUENCE, Link.PARALLEL) and not frame.stative and not frame.heading):
-        # "open the left drawer 25 cm, then the right one": the ellipsis repeats the whole request, amount included
-        frame = replace(frame, quantities=replace(frame.quantities, amount=previous.quantities.amount))
-    if frame.themes or amount_only:
-        own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
-        return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
-                       themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)
-    return frame
-
-
+_SELECTING = frozenset({"take", "grab", "get"})
+"""Verbs that pick a part out for the next clause's "it" when nothing else follows them."""
 _GOAL_SENSES = frozenset({VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPERATE, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF})
 """What a task states as its goal on the whole object ("secure the safe", "start the microwave")."""
 
@@ -215,7 +149,13 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     manner: Frame | None = None  # "Slowly, over about 3 seconds, ...": how the next action goes
     together = False  # a summary said the steps after it go at the same time
     leading: list[Frame] = []  # negations told before any step
+    zero: Reference | None = None  # "measured from fully shut, ...": what the next amount counts from
     for index, frame in enumerate(frames):
+        if (counted := measured_from(frame)) is not None:
+            zero = counted
+            continue
+        if zero is not None and frame.quantities.amount is not None and frame.quantities.amount.reference is None:
+            frame, zero = replace(frame, quantities=replace(frame.quantities, amount=replace(frame.quantities.amount, reference=zero))), None
         verbless = frame.verb is None
         if frame.link is Link.PURPOSE and acts and frame.verb in _LOOKING and not any(m.kind is not None for m in frame.themes):
             continue  # "open the door 45 degrees to see inside": what the person will do then, not a motion
@@ -265,7 +205,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if (frame.verb is None or frame.sense is VerbSense.HOLD) and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
             frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False, stative=False)  # "..., rests there for 2 s"
         if (frame.verb is None or (frame.sense in (VerbSense.HOLD, VerbSense.WAIT) and frame.text.split()[-1] == frame.verb)) and not frame.themes and (
-                frame.quantities.duration_s is not None and set(frame.text.split()) & (_PAUSE_NOUNS | {"hold"})):
+                frame.quantities.duration_s is not None and set(frame.text.split()) & (PAUSE_NOUNS | {"hold"})):
             pending_wait += frame.quantities.duration_s  # "up to vertical, 2 s pause, then ...": a wait, not a manner
             continue
         if frame.verb is None and not frame.themes and not frame.returning and (
@@ -316,7 +256,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "..., while the narrator talks": what else happens meanwhile, not a part's motion
         if frame.stative and COUPLING_WORDS & set(frame.text.split()):
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
-        frame = _carry(frame, previous_goal, measured)
+        frame = carry(frame, previous_goal, measured)
         if frame.quantities.amount is not None:
             measured = frame
         if frame.sense is VerbSense.WAIT and all(m.pronoun for m in frame.themes):  # "wait 2 s", "pause it"
@@ -375,6 +315,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         pending_conditions = []
         parallel = frame.link is Link.PARALLEL or restated or ((together or (frame.simultaneous and verbless)) and any(not a.condition for a in acts))
         restated = False
+        if frame.verb in _SELECTING and frame.particle is None and frame.quantities == Quantities() and index + 1 < len(frames) and (
+                frames[index + 1].conjoined and frames[index + 1].themes and all(m.pronoun for m in frames[index + 1].themes)):
+            frame = replace(frame, sense=VerbSense.GRASP)  # "take the smaller one and rotate it": which one, not a motion
         act = Act(goal=frame, parallel=parallel, conjoined=frame.conjoined, wait_before_s=pending_wait)
         pending_wait = 0.0
         if frame.goes_first and acts:

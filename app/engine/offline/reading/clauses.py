@@ -29,6 +29,7 @@ from app.engine.lexicon.words import (
     NEGATIONS,
     ORDINALS,
     PARALLEL,
+    PAUSE_NOUNS,
     PERSONS,
     PURPOSE,
     SEQUENCE,
@@ -184,6 +185,13 @@ def _ing(token: Token) -> bool:
     return token.text.endswith("ing") and token.lemma in VERBS
 
 
+def _pause_at(tokens: list[Token], i: int) -> bool:
+    """"(a) 4 second beat", "2 s pause" starts at ``i``."""
+    i += i < len(tokens) and tokens[i].text in ("a", "an")
+    return i + 2 < len(tokens) and tokens[i].number is not None and tokens[i + 1].lemma in ("second", "s", "sec", "minute") and (
+        tokens[i + 2].text in PAUSE_NOUNS)
+
+
 def split_clauses(tokens: list[Token]) -> list[Clause]:
     """The prompt's clauses in prompt order (``goes_first`` marks the ones to reorder)."""
     clauses: list[Clause] = []
@@ -225,6 +233,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = None  # "open both doors at the same time": how, not a second action
         elif word == "and" and current and nxt < len(tokens) and tokens[nxt].text in CENTRE_WORDS:
             boundary = (Link.SEQUENCE, word, True)  # "all the way to the left and back to centre"
+        elif word == "," and current and _pause_at(tokens, nxt):
+            boundary = (Link.SEQUENCE, word, True)  # "full open on the door, a 4-second beat, then back shut": a wait of its own
+        elif word == "and" and any(t.text == "between" for t in current[-4:]):
+            boundary = None  # "until the angle between it and the keyboard is 45 degrees": one thing measured
         elif word == "as" and len(current) >= 2 and current[-2].text == "as":
             boundary = None  # "as wide as the hinge allows": a comparison, not a second event
         elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:

@@ -306,7 +306,9 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         objects = [m for m in objects if not m.start <= particle_at < m.end]
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))
     words = {t.text for t in tokens}
-    stative = verb_index is None and not (tokens and tokens[0].text == "back") and (progressive or described or any(t.text in STATIVE_VERBS for t in tokens))  # not "back up to the angle it started at"
+    existential = [t.text for t in tokens[:2]] in (["there", "is"], ["there", "are"]) or (tokens and tokens[0].text in ("there's", "there're"))
+    stative = verb_index is None and not (tokens and tokens[0].text == "back") and (progressive or described or existential or any(
+        t.text in STATIVE_VERBS for t in tokens))  # not "back up to the angle it started at"; "there's a lever at each end" says what is there
     intransitive = after_subject(tokens, verb_index) or finite is not None
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")

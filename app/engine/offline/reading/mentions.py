@@ -19,6 +19,7 @@ from app.engine.lexicon.words import (
     COLLECTIVE,
     DEFINITES,
     DETERMINERS,
+    FACE_RELATIONS,
     MODALS,
     NOT_PART_NOUNS,
     OBJECT_NOUNS,
@@ -198,7 +199,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
     if not nouns and not unknown:
         at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well", "to", "by") or (
             tokens[end].number is not None)
-        if other or (determiner and (sides or ordinal or size) and at_end):
+        facing = begin > 1 and tokens[begin - 1].text in ("of", "to", "with", "from") and tokens[begin - 2].text in FACE_RELATIONS
+        if not facing and (other or (determiner and (sides or ordinal or size) and at_end)):
             # "the other", "then the second": an anaphoric head with qualifiers
             return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,
                            start=begin, end=end, words=_words(tokens, begin, end)), end
@@ -292,8 +294,8 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
     if relation in ("near", "far") and k < len(tokens) and tokens[k].text in PLACE_SIDES:  # "the dial closest to the counter": the bottom one
         side = PLACE_SIDES[tokens[k].text] if relation == "near" else OPPOSITE_SIDES[PLACE_SIDES[tokens[k].text]]
         return replace(mention, sides=(*mention.sides, (side, True)), end=k + 1, words=_words(tokens, mention.start, k + 1))
-    if relation == "near" and j < len(tokens) and tokens[j].text in _VIEWER:
-        viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front
+    if relation in ("near", "far") and j < len(tokens) and tokens[j].text in _VIEWER:
+        viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front; "furthest from me": the back
         return replace(mention, relation=(relation, viewer), end=j + 1, words=_words(tokens, mention.start, j + 1))
     bare_hinge = [t.text for t in tokens[j:j + 2]] in (["the", "hinge"], ["its", "hinge"]) or (tokens[j:j + 1] and tokens[j].text == "hinge")
     if bare_hinge:  # "the knob farther from the hinge": the hinge of the (one) door

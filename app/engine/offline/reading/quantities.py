@@ -125,6 +125,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     """What an amount at tokens[start:end] is measured from, from the words around it."""
     before = [t.text for t in tokens[max(0, start - 4):start] if t.text not in _ABOUT and t.text not in ("only", "just")]
     after = [t.text for t in tokens[end:end + 4] if t.text != "measured"][:3]  # "90 degrees (measured) from closed"
+    if after[:2] in (["up", "from"], ["down", "from"], ["out", "from"], ["open", "from"]):
+        after = [t.text for t in tokens[end + 1:end + 5] if t.text != "measured"][:3]  # "90 degrees up from closed": the way, then the zero
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
@@ -135,6 +137,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "until only 5 cm of it sticks out": how far out, measured from closed
     if before and before[-1] in ("open", "opened", "ajar") and len(before) > 1 and before[-2] in _STATE_COPULAS:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
+    if {"angle", "between"} <= {t.text for t in tokens[max(0, start - 10):start]}:
+        return "closed"  # "the angle between it and the keyboard is 45 degrees": the angle the part makes, from shut
     if before[-2:] in (["angle", "of"], ["opening", "of"], ["angle", "to"]):
         return "closed"  # "at an angle of 120 degrees": the part's angle, from where it is shut
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):

@@ -3,36 +3,65 @@ that says where that part ends: it completes the step instead of adding an effec
 
 from __future__ import annotations
 
+import math
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
-from app.engine.lexicon.words import STATES
+from app.engine.lexicon.words import FACE_RELATIONS, STATES
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.quantities import Amount
 
 if TYPE_CHECKING:
     from app.engine.offline.reading.acts import Act
 
 
-_RELATIVE = frozenset({"perpendicular", "parallel", "square", "level", "flush"})
-"""Words that set the part against another ("perpendicular to the front"): the side named is no way to go."""
+_CONTRACTED = frozenset({"it's", "they're"})
+"""A pronoun and its verb in one word: "until it's properly shut" is about "it" though it reads no theme."""
 
 
 def _about_it(frame: Frame) -> bool:
-    """A result clause on "it" with no verb of its own ("it lies flat", "it sits flush")."""
-    return frame.link is Link.RESULT and bool(frame.themes) and all(m.pronoun for m in frame.themes) and (frame.verb is None or frame.sense is None)
+    """A result clause on "it" with no verb of its own ("it lies flat", "it sits flush", "it's properly shut")."""
+    first = frame.text.split()[0] if frame.text.split() else ""
+    themes = [m for m in frame.themes if m.head not in FACE_RELATIONS]  # "it sits 200 mm proud of the front": not a part
+    # "it" and at most the body it is measured against ("the angle between it and the keyboard")
+    said = any(m.pronoun for m in themes) and all(m.pronoun or m.kind is PartKind.BODY for m in themes) if themes else first in _CONTRACTED
+    return frame.link is Link.RESULT and said and (frame.verb is None or frame.sense is None)
+
+
+def _restates(act: Act, frame: Frame) -> bool:
+    """A result that names the part the step moves, by the same word, and says nothing the reader can measure (no
+    amount, way or state): a picture of where the step ends, which the step already says."""
+    heads = {m.head for m in act.goal.themes if m.kind is not None}
+    r, words = frame.quantities, frame.text.split()
+    return frame.link is Link.RESULT and bool(heads) and (frame.verb is None or frame.sense is None) and bool(frame.themes) and (
+        all(m.head in heads or m.kind is None for m in frame.themes) and any(m.head in heads for m in frame.themes)) and (
+        r.amount is None and r.target is None and r.direction is None and r.orientation is None) and not any(
+        w in STATES and not (w == "up" and k and words[k - 1] in ("ends", "end", "ended")) for k, w in enumerate(words))
 
 
 def merged_result(act: Act, frame: Frame) -> Act | None:
     """``act`` completed by the result ``frame``; None when the result is an effect of its own."""
-    if not _about_it(frame) or not act.goal.themes:
+    if not act.goal.themes:
+        return None
+    if _restates(act, frame):
+        return act  # "drive the handle to its far limit so the handle ends up lying across the back rim": where it goes, said twice
+    if not _about_it(frame):
         return None
     goal, q, r = act.goal, act.goal.quantities, frame.quantities
-    if r.direction is not None and q.direction is None and not _RELATIVE & set(frame.text.split()):
+    if "perpendicular" in frame.text.split() and q.amount is None and r.amount is None and goal.sense in (VerbSense.OPEN, VerbSense.MOVE, None):
+        # "swing the door open until it's perpendicular to the front": a right angle from shut, not an upright part
+        square = Amount(math.pi / 2, "rad", reference="closed", words="perpendicular")
+        return replace(act, goal=replace(goal, quantities=replace(q, amount=square, orientation=None)))
+    if r.direction is not None and q.direction is None and not FACE_RELATIONS & set(frame.text.split()):
         # "drop the handle so it lies flat along the back side": which way the part itself goes
         return replace(act, goal=replace(goal, quantities=replace(q, direction=r.direction, orientation=r.orientation or q.orientation,
                                                                    amount=q.amount or r.amount)))
+    if r.amount is not None and q.amount is None and r.amount.unit != "fraction":
+        # "ease it back up until it's sitting at 45 degrees": the angle says where it stops, not the way back
+        return replace(act, goal=replace(goal, returning=False, quantities=replace(q, amount=r.amount, target=r.target)))
     ends = {STATES[w] for w in frame.text.split() if STATES.get(w) in ("open", "closed")}
     if len(ends) == 1 and goal.sense in (VerbSense.RETURN, VerbSense.MOVE):
         # "swing it back so it sits flush": back to where it shuts

@@ -26,6 +26,9 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.token import Token
 
+_JOINT_WORDS = frozenset({"hinge", "hinges", "joint", "pivot", "axle", "slide", "slides", "runners"})
+_NEAR_WORDS = frozenset({"nearest", "closest", "near", "nearer", "closer", "next_to", "beside", "by", "from", "furthest", "farthest", "farther", "further"})
+"""Before "the lid's hinge" they place another part by that hinge ("the knob nearest the lid's hinge")."""
 _AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so", "until", "as"})
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
@@ -79,6 +82,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text in ("left_hand", "right_hand") and after.isalpha() and after not in _AFTER_HAND:
             side = token.text.split("_")[0]
             token = replace(token, text=f"{side}-hand", lemma=f"{side}-hand")  # "the right hand fridge door"
+        if token.text == "'s" and after in _JOINT_WORDS and out and out[-1].text.isalpha() and not any(t.text in _NEAR_WORDS for t in out[-4:]):
+            skip = 1  # "drive the pail handle's hinge to its far limit": the part on that hinge
+            continue
         if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
             continue  # "lift the jug itself": emphasis, the jug
         if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS and (

@@ -147,6 +147,8 @@ def correct(token: Token, known: frozenset[str]) -> Token:
 
 RARE_WORD_COUNT = 1000
 MUCH_COMMONER = 10
+RARE_LONGER_COUNT = 100
+"""A real word one letter longer than a domain word is taken for a typo of it only when rarer than this."""
 
 
 def _rare_beside(word: str, candidate: str) -> bool:
@@ -156,6 +158,8 @@ def _rare_beside(word: str, candidate: str) -> bool:
 
     frequency = _english()
     own, other = int(frequency[word]), int(frequency[candidate])  # type: ignore[index]
+    if len(word) > len(candidate) and own >= RARE_LONGER_COUNT:
+        return False  # "baste" is a word of its own, not "base" with a letter too many
     return OSA.distance(word, candidate) == 1 and own < RARE_WORD_COUNT and other >= MUCH_COMMONER * max(own, 1) and candidate in content_words()
 
 

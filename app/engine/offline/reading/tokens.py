@@ -16,7 +16,7 @@ from dataclasses import replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS
+from app.engine.lexicon.words import DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
@@ -180,7 +180,7 @@ _COUNTED = frozenset({"and", "hundred", "full", "complete", "whole", "more", "qu
 
 
 _QUALIFIERS = frozenset({"the", "this", "that", "other", "another", "left", "right", "top", "bottom", "front", "back", "upper", "lower",
-                         "middle", "first", "second", "third", "last", "big", "small", "large", "little", "same", "rear", "inner", "outer"})
+                         "middle", "first", "second", "third", "last", "same", "rear", "inner", "outer", *SIZES})
 
 
 def _counts(tokens: list[Token], i: int) -> bool:
@@ -319,12 +319,27 @@ def verb_ing(word: str) -> bool:
 
 
 
+def _halved(tokens: list[Token], known: frozenset[str]) -> list[Token]:
+    """"half-open the drawer", "half-oepn it": the verb, then "halfway" (the verb spelt as the other words are)."""
+    from app.engine.offline.reading.spelling import correct
+
+    out: list[Token] = []
+    for token in tokens:
+        head, dash, verb = token.text.partition("-")
+        spelt = correct(replace(token, text=verb, lemma=verb), known) if head == "half" and dash and verb.isalpha() else None
+        if spelt is None or spelt.text not in VERBS:
+            out.append(token)
+            continue
+        out += [replace(spelt, corrected_from=token.text if spelt.corrected_from else None), Token("halfway", "halfway", token.start, token.end)]
+    return out
+
+
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
     from app.engine.offline.reading.spelling import correct, correct_noun
 
-    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in expand(_raw_tokens(prompt), known)]
+    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
     tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))
