@@ -47,6 +47,26 @@ class _LinkShape:
     points: FloatArray
     size: float
 
+    @property
+    def hull_box(self) -> FloatArray:
+        """(2, 3) low and high corner of every hull's box, link frame (no point outside it counts as inside)."""
+        return np.array([np.min([h[1] for h in self.hulls], axis=0), np.max([h[2] for h in self.hulls], axis=0)])
+
+    @property
+    def point_box(self) -> FloatArray:
+        return np.array([self.points.min(axis=0), self.points.max(axis=0)])
+
+
+_CORNERS = np.array([[i, j, k] for i in (0, 1) for j in (0, 1) for k in (0, 1)], dtype=np.float64)
+
+
+def _swept_box(box: FloatArray, poses: FloatArray) -> FloatArray:
+    """(2, 3) world box holding the link-frame ``box`` at every pose of ``poses`` (f, 4, 4): the corners moved, so a
+    box that holds the moved box. Two parts whose swept boxes are apart never overlap at any of those frames."""
+    corners = box[0] + _CORNERS * (box[1] - box[0])
+    world = np.einsum("fij,cj->fci", poses[:, :3, :3], corners) + poses[:, None, :3, 3]
+    return np.array([world.min(axis=(0, 1)), world.max(axis=(0, 1))])
+
 
 def _hull(vertices: FloatArray, link_size: float) -> tuple[FloatArray, FloatArray, FloatArray, float] | None:
     if vertices.shape[0] < 4 or np.linalg.matrix_rank(vertices - vertices.mean(axis=0), tol=1e-9) < 3:
@@ -123,9 +143,15 @@ def find_collisions(asset: ArticulatedAsset, trajectory: Trajectory, moving: set
     else:
         checked = np.unique(np.clip(np.array([0, *frames], dtype=np.int64), 0, trajectory.frame_count - 1))
     poses = link_poses(asset, {n: trajectory.joint(n)[checked] for n in trajectory.joint_names}, base_transforms(trajectory.base_translation[checked]))
+    solid = [n for n in asset.visual_links if n in shapes and shapes[n].hulls]
+    if not solid:
+        return []
+    hull_boxes = np.array([_swept_box(shapes[n].hull_box, poses[n]) for n in solid])  # (n, 2, 3)
     found: dict[tuple[str, str], Collision] = {}
-    for mover in sorted(moving & set(shapes)):
-        for other in asset.visual_links:
+    for mover in sorted(n for n in moving & set(shapes) if shapes[n].points.shape[0]):
+        low, high = _swept_box(shapes[mover].point_box, poses[mover])
+        near = np.all(hull_boxes[:, 0] <= high, axis=1) & np.all(hull_boxes[:, 1] >= low, axis=1)
+        for other in (solid[k] for k in np.flatnonzero(near)):  # a part whose swept box misses this one's can hold none of its points
             if other == mover or _neighbours(asset, mover, other):
                 continue
             relative = np.linalg.inv(poses[other]) @ poses[mover]
