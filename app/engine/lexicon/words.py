@@ -123,6 +123,11 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
 })
 PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
+AGENT_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "gripper", "robot", "arm", "hand", "hands", "thumb", "finger",
+                         "fingers", "foot", "feet", "chef", "cook", "kid", "kids", "child", "man", "woman", "camera", "viewer", "audience",
+                         "narrator"})
+"""Who (or what) acts on the object in a scene: a clause whose subject this is and that names no part ("then the arm lets
+go") says nothing to animate."""
 FACE_RELATIONS = frozenset({"perpendicular", "parallel", "square", "level", "flush", "proud", "normal", "relative", "line"})
 """Words that set a part against a face of the object ("proud of the front", "perpendicular to the front", "in line with
 the top"): the side named after them is that face, neither a part nor a way to go."""
@@ -286,7 +291,11 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
                         "setting", "mark", "notch", "stop", "rest", "original", "start", "level", "pin", "travel", "hinge", "range",
                         "motion", "air", "path", "track", "slot", "opening", "stroke", "sound", "click", "gap", "same", "extension", "pose", "target", "shot", "take", "scene", "clip", "anim", "loop", "keyframe", "frame",
-                        "enough", "sense", "dev", "developer", "game", "render", "rig", "tutorial", "cutscene", "storyboard", "narrator", "demo", "like_that", "like_this", "animating", "animation", "moving", "movement"})
+                        "enough", "sense", "dev", "developer", "game", "render", "rig", "tutorial", "cutscene", "storyboard", "narrator", "demo", "like_that", "like_this", "animating", "animation", "moving", "movement",
+                        # the scene and the people (or robot) in it: they act on the object, they are no part of it
+                        "montage", "sequence", "episode", "gag", "peek", "routine", "spec", "prop", "camera", "viewer", "audience",
+                        "character", "actor", "person", "user", "operator", "gripper", "thumb", "finger", "fingers",
+                        "hands", "seal", "rotation", "clean"})
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})

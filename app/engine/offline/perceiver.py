@@ -17,6 +17,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import AGENT_NOUNS, PERSONS
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.conditions import set_topic
@@ -63,7 +64,16 @@ def _incidental(frame: Frame) -> bool:
     return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
             or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press ...": why, told first
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
-            or (frame.guessed_verb is not None and frame.link in (Link.PARALLEL, Link.CONDITION)))  # "while the narrator talks"
+            or (frame.guessed_verb is not None and frame.link in (Link.PARALLEL, Link.CONDITION))  # "while the narrator talks"
+            or (not frame.themes and not frame.instruments and _said_of_someone(frame)))  # "... when the arm lets go": about who acts
+
+
+def _said_of_someone(frame: Frame) -> bool:
+    """A clause whose subject is a person, a robot or the scene ("the arm lets go", "the character looks inside")."""
+    words = frame.text.split()
+    if words[:1] in (["the"], ["a"], ["an"], ["their"], ["his"], ["her"]):
+        return len(words) > 1 and words[1] in AGENT_NOUNS
+    return bool(words) and words[0] in PERSONS and words[0] not in ("my", "me")
 
 
 def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
@@ -84,6 +94,9 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     for act in acts:
+        if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and _said_of_someone(act.goal):
+            builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
+            continue
         if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
             builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
             act = replace(act, goal=act.means, means=None)

@@ -688,6 +688,13 @@ ROWS: list[Row] = [
     R("box_100671", "lid 60 degrees up from closed", joints={"joint_0": E(end=BOX_100671_CLOSED + 1.0472)}),
     # "that rack" after "the bottom rack": the one said before; "baste" is a word of its own
     R("extra/oven_7179", "I want to baste the turkey on the bottom rack, pull that rack out", joints={"joint_2": E(end="upper")}),
+    # --- round 16 (benchmark/probes/dev_round16_prompts.jsonl, scored at the start and after round 15 before these) ---
+    # the scene and who acts in it ("montage", "episode", "the character", "the arm") are no parts: no refusal over them
+    R("extra/storage_24644", "Quick drawer peek: pull it 20 cm out, then push it home.", joints={"joint_0": E(peak=0.2)}),
+    R("washing_machine_103508", "Laundry montage: turn the far-left dial a quarter turn clockwise.", joints={"joint_3": E(end=1.5708)}),
+    R("microwave_7119", "Task for the operator: pull the door open to its stop, then end the episode.", joints={"joint_0": E(end="upper")}),
+    R("laptop_10101", "Open the screen 90 degrees from closed, then the gripper lets go.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED + 1.5708)}),
+    R("extra/suitcase_100550", "For the packing montage, fold the suitcase lid fully open.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
 ]
 
 
