@@ -16,7 +16,7 @@ from typing import Any
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
-from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, PERSONS
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
@@ -94,7 +94,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     for act in acts:
-        if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and _said_of_someone(act.goal):
+        if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and not act.results and (
+                act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
             builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
             continue
         if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
