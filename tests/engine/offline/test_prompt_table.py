@@ -695,6 +695,9 @@ ROWS: list[Row] = [
     R("microwave_7119", "Task for the operator: pull the door open to its stop, then end the episode.", joints={"joint_0": E(end="upper")}),
     R("laptop_10101", "Open the screen 90 degrees from closed, then the gripper lets go.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED + 1.5708)}),
     R("extra/suitcase_100550", "For the packing montage, fold the suitcase lid fully open.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    # ... but "the foot comes off" lets go of the pedal it pressed: the pedal and the lid come back
+    R("examples/pedal_bin", "Tap the pedal: the lid pops open, then the foot comes off, the pedal springs back and the lid falls shut.",
+      joints={"pedal_pivot": E(peak="upper"), "lid_hinge": E(peak="lower")}),
 ]
 
 
