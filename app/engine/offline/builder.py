@@ -34,7 +34,7 @@ from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
-from app.engine.offline.revisions import coast, elaborates, hold
+from app.engine.offline.revisions import coast, elaborates, hold, restated_means
 from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
@@ -227,7 +227,7 @@ class Builder:
             controls = self.moves(act.means, means_sense, parts, words, "control")
         elif goal.instruments:
             controls = self._instrument_controls(goal)
-        effects_parts, effect_words = self.ground(goal, sense, goal.themes, prefer=prefer)
+        effects_parts, effect_words = restated_means(self, act, controls, self.ground(goal, sense, goal.themes, prefer=prefer))
         if not effects_parts and not goal.themes and not controls:
             implied = self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else []
             # "flush!", "put the lid up, then flush": the part the verb works, not "it"

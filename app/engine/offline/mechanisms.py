@@ -151,7 +151,7 @@ def couple(controls: list[Move], effects: list[Move], tracker: Tracker) -> tuple
     control = holding[0]
     geometry = control.part.geometry
     rest = geometry.rest
-    full = _value(replace(control, goal=Goal(state=control.goal.state)), tracker)
+    full = _value(replace(control, goal=Goal(state=control.goal.state, direction_world=control.goal.direction_world)), tracker)
     if full is None or abs(full - rest) < REACHED:
         return controls, effects, None
     effect_amount = held[0].goal.amount is not None and not held[0].loose

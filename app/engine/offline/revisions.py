@@ -12,6 +12,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.goals import goal_for
 from app.engine.offline.grounding import Part
+from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.resolve import resolve
@@ -26,6 +27,16 @@ def replay(builder: Builder) -> None:
     builder.tracker = Tracker.of(builder.asset)
     for step in builder.steps:
         builder.tracker.apply(step)
+
+
+def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: tuple[list[Part], list[str]]) -> tuple[list[Part], list[str]]:
+    """"Spin the dial a full turn to unlock it": a purpose whose parts are all parts its means already moves says
+    why the means is done, not a second motion of them; it moves nothing more."""
+    parts = grounded[0]
+    if not controls or not parts or not {p.joint for p in parts} <= {m.part.joint for m in controls}:
+        return grounded
+    builder.notes.append(f"read '{act.goal.text}' as what the motion before it does: nothing more moves")
+    return [], []
 
 
 def elaborates(builder: Builder, act: Act, sense: VerbSense, parts: list[Part]) -> bool:

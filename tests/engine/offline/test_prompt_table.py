@@ -698,6 +698,9 @@ ROWS: list[Row] = [
     # ... but "the foot comes off" lets go of the pedal it pressed: the pedal and the lid come back
     R("examples/pedal_bin", "Tap the pedal: the lid pops open, then the foot comes off, the pedal springs back and the lid falls shut.",
       joints={"pedal_pivot": E(peak="upper"), "lid_hinge": E(peak="lower")}),
+    # a purpose on the part its means already moves says why: "unlock it" is no second turn of the dial
+    R("safe_102387", "spin the dial a full turn to unlock it", joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(still=True)}),
+    R("extra/safe_102380", "turn the knob a quarter turn to unlock it", joints={"joint_0": E(abs_end=PI / 2)}),
 ]
 
 
