@@ -176,7 +176,7 @@ MULTIWORD: tuple[str, ...] = (
     "like that", "like this", "as wide as", "as high as", "back to the middle", "back to the centre", "back to the center",
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
     "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as flat as possible", "as far as possible",
-    "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "how it was before", "how it was", "how they were", "as it was before", "as it was", "as before",
+    "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "how it was before", "how it was", "how they were", "like it was before", "like it was", "like they were", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in that order", "in this order", "to the stop", "to the max", "to the maximum", "in the same direction", "right angle", "rest of the way",
 )
 
@@ -257,6 +257,8 @@ OPERATED_OBJECTS = frozenset({"tap", "faucet", "valve", "mixer", "switch", "spig
 """Objects that are themselves controls: "turn the tap" works its handle, it does not yaw the object."""
 CAUSATIVES = frozenset({"let", "make", "have", "get", "allow", "watch", "see"})
 """Verbs whose object does the inner verb on its own ("let the lid drop", "make the tray rotate")."""
+TOLD_CAUSATIVES = frozenset({"let", "make", "allow"})
+"""Causatives by lemma, in the third person too ("..., which lets the door swing open", "... makes the lid pop up")."""
 LIGHT_VERBS = frozenset({"give"})
 """Verbs whose deverbal object is the real action ("give the car a push")."""
 WISH_WORDS = frozenset({"need", "want", "like", "needs", "wants", "would_like", "i'd_like"})

@@ -35,7 +35,8 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     parts = grounded[0]
     if not controls or not parts or not {p.joint for p in parts} <= {m.part.joint for m in controls}:
         return grounded
-    builder.notes.append(f"read '{act.goal.text}' as what the motion before it does: nothing more moves")
+    moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
+    builder.notes.append(f"read '{act.goal.text}' as what working {moved} does: nothing more moves")
     return [], []
 
 

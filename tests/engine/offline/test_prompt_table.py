@@ -701,6 +701,18 @@ ROWS: list[Row] = [
     # a purpose on the part its means already moves says why: "unlock it" is no second turn of the dial
     R("safe_102387", "spin the dial a full turn to unlock it", joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(still=True)}),
     R("extra/safe_102380", "turn the knob a quarter turn to unlock it", joints={"joint_0": E(abs_end=PI / 2)}),
+    # --- round 17 (benchmark/probes/dev_round17_prompts.jsonl, scored first at 1a25844.. before these) ---
+    R("safe_101593", "Eighth of a turn anticlockwise on the large dial.", joints={"joint_1": E(end=PI / 4), "joint_0": E(still=True)}),
+    R("storage_27044", "Draw the drawer out to 2/3 of the full extension.", joints={"joint_0": E(end=0.456)}),
+    R("suitcase_103762", "Close the suitcase, then open it again so it ends up exactly like it was.", joints={"joint_0": E(peak=-1.0472)}),
+    R("storage_27044", "slide the cabinet 0.4 m to the viewer's left", joints={"joint_0": E(still=True)}, base=(0.0, 0.4, 0.0)),
+    # a gerund as the subject is the means; "which lets / makes X ..." is what it causes
+    R("trash_can_102181", "Pressing the pedal opens the lid.", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("extra/coffee_machine_102145", "Swinging the lever over to the left makes the top lid pop up.",
+      joints={"joint_0": E(end=-0.609469), "joint_1": E(end=0.036), "joint_2": E(still=True)}),
+    R("safe_102387", "Spin the dial one complete revolution to unlock it, which lets the door swing all the way open.",
+      joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("toilet_102622", "give the loo a flush using the button on the cistern", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
 ]
 
 

@@ -38,6 +38,7 @@ from app.engine.lexicon.words import (
     SPATIAL,
     SPEEDS,
     STATIVE_VERBS,
+    TOLD_CAUSATIVES,
     WISHES,
 )
 from app.engine.offline.reading.mentions import kind_at
@@ -185,6 +186,13 @@ def _ing(token: Token) -> bool:
     return token.text.endswith("ing") and token.lemma in VERBS
 
 
+def _told_after_gerund(current: list[Token], token: Token) -> bool:
+    """A finite verb ("opens", "makes") after a clause that is a gerund and what it works: the gerund is the subject."""
+    body = [t for t in current if t.text not in FILLERS]
+    return (len(body) >= 3 and body[0] is current[0] and _ing(body[0]) and any(t.text in DETERMINERS for t in body[1:])
+            and token.text.endswith("s") and token.text != token.lemma and (token.lemma in VERBS or token.lemma in TOLD_CAUSATIVES))
+
+
 def _pause_at(tokens: list[Token], i: int) -> bool:
     """"(a) 4 second beat", "2 s pause" starts at ``i``."""
     i += i < len(tokens) and tokens[i].text in ("a", "an")
@@ -254,6 +262,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             link, marker, conjoined = Link.RESULT, word, False  # "swing it almost shut, leaving it 10 degrees ajar": the end state
             i += 1
             continue
+        elif _told_after_gerund(current, token):
+            boundary = (Link.RESULT, "", False)  # "pressing the pedal | opens the lid", "swinging the lever | makes the lid pop up"
+            nxt = i
         elif word == "it's" and len(current) > 1 and verb_at(current, 0) and nxt < len(tokens) and tokens[nxt].text.endswith("ing") and (
                 current[-1].text not in ("where", "what", "how", "when", "as", "that", "because", "since", "while", "from", "if")):
             boundary = (Link.SEQUENCE, word, True)  # "close the window it's raining": a run-on second sentence
@@ -285,7 +296,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)
         elif word in ("so", "so_that", "which", "causing", "making", "as_a_result") and current and (
-                _starts_clause(tokens, nxt) or (nxt < len(tokens) and tokens[nxt].lemma in VERBS) or word in ("causing", "making", "as_a_result")):
+                _starts_clause(tokens, nxt) or (nxt < len(tokens) and (tokens[nxt].lemma in VERBS or tokens[nxt].lemma in TOLD_CAUSATIVES))
+                or word in ("causing", "making", "as_a_result")):
             boundary = (Link.RESULT, word, False)
         elif word in NEGATIONS and current and _subject_only(current) and word not in ("without", "except", "but"):
             negated_here = True  # "the wheels cannot roll", "they do not turn": this clause says what does not happen

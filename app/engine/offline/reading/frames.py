@@ -24,6 +24,7 @@ from app.engine.lexicon.words import (
     SIMULTANEOUS,
     SPATIAL,
     STATIVE_VERBS,
+    TOLD_CAUSATIVES,
 )
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
@@ -42,7 +43,7 @@ _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
                            "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before", "how_it_was", "how_it_was_before",
-                           "how_they_were",
+                           "how_they_were", "like_it_was_before", "like_it_was", "like_they_were",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
 _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
@@ -120,7 +121,8 @@ def _light_verb(tokens: list[Token]) -> list[Token]:
         return tokens
     for i in range(2, len(tokens)):
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
-            return [tokens[i], *tokens[1:]]
+            bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
+            return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
     return tokens
 
 
@@ -295,7 +297,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
     if progressive:
         verb_index, verb = None, None  # "the screen is leaning back too far": how things are, not a step
-    causative = verb_index is not None and tokens[verb_index].text in CAUSATIVES
+    causative = verb_index is not None and (tokens[verb_index].text in CAUSATIVES or tokens[verb_index].lemma in TOLD_CAUSATIVES)
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
     else:

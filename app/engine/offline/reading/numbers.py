@@ -42,6 +42,8 @@ def fraction_of_turn(tokens: list[Token], i: int) -> tuple[float, int] | None:
         fraction, j = number / DENOMINATORS[tokens[j + 1].text], j + 2  # "3 eighths"
     elif tokens[j].text in _ONE and j + 1 < len(tokens) and tokens[j + 1].text in DENOMINATORS and tokens[j + 1].text not in ("half", "quarter", "third"):
         fraction, j = 1.0 / DENOMINATORS[tokens[j + 1].text], j + 2  # "an eighth" ("a quarter" / "a third" are read elsewhere)
+    elif tokens[j].text in DENOMINATORS and j + 1 < len(tokens) and tokens[j + 1].text == "of":
+        fraction, j = 1.0 / DENOMINATORS[tokens[j].text], j + 1  # "eighth of a turn", "quarter of a turn" with no article
     elif number is not None and 0 < number < 1:
         fraction, j = number, j + 1  # "5/8", "0.375"
     if fraction is None or j >= len(tokens) or tokens[j].text != "of":

@@ -164,6 +164,11 @@ def _markers(tokens: list[Token], start: int, end: int) -> set[int]:
 _TURN_FRACTIONS = frozenset({"three quarters", "three-quarters", "a third", "one third", "two thirds", "two-thirds", "a quarter",
                              "one quarter", "half", "full"})
 """Amount words that may count turns ("a third of a turn"); "as far as it will turn" is all the way, not one turn."""
+_OF_RANGE = frozenset({"the", "its", "their", "full", "whole", "entire", "total", "available", "way", "travel", "range", "extension",
+                       "stroke", "opening", "swing", "motion", "run"})
+"""Words of "(2/3) of the full extension": the range an amount is a fraction of."""
+
+
 def _region_noun(tokens: list[Token], i: int) -> bool:
     """"the front half of the case", "the top half": a part of the object, not an amount."""
     previous = tokens[i - 1].text if i > 0 else ""
@@ -211,6 +216,14 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.add(i)
             used.update(j for j in (i - 1, i + 1) if 0 <= j < len(tokens) and tokens[j].text in _RELATIVE_AFTER | _RELATIVE_BEFORE)
             i += 1
+            continue
+        if token.number is not None and 0 < token.number < 1 and nxt is not None and nxt.text == "of" and amount is None:
+            j = i + 2  # "2/3 of the full extension", "0.4 of its travel": a fraction of the range
+            while j < min(len(tokens), i + 6) and tokens[j].text in _OF_RANGE:
+                j += 1
+            amount = Amount(token.number, "fraction", words=" ".join(t.text for t in tokens[i:j]))
+            used.update(range(i, j))
+            i = j
             continue
         if token.number is not None and nxt is not None:
             unit = nxt.lemma

@@ -205,6 +205,7 @@ def corrections(tokens: list[Token]) -> list[Token]:
 _LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
 _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
+_VIEWERS = frozenset({"viewer", "camera", "audience", "observer", "onlooker", "spectator"})
 
 
 
@@ -224,6 +225,9 @@ def same_words(tokens: list[Token]) -> list[Token]:
             t = replace(t, text="to", lemma="to")  # "25 cm on my right side": to my right
         elif (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
             t = replace(t, text="the", lemma="the")
+        elif t.text in _VIEWERS and before == "the" and after == "'s" and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES:
+            skip = i + 1  # "toward the viewer's left": the left as seen facing the object
+            continue
         elif t.number == 2 and t.text == "2" and after in _TO and before not in ("", ",", ".", "and"):
             t = Token("to", "to", t.start, t.end, corrected_from="2")
         elif t.text == "counting" and after == "from":
