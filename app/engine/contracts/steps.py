@@ -122,6 +122,7 @@ class Step(_Strict):
     """Index of the prompt clause it realises (``None`` for steps the mechanism adds)."""
     start: Literal["after_previous", "with_previous"] = "after_previous"
     wait_before_s: NonNegative = 0.0
+    """Seconds before the step starts: after the previous step ends, or, ``with_previous``, after it starts."""
     controls: list[JointMove] = Field(default_factory=list)
     effects: list[JointMove] = Field(default_factory=list)
     base: BaseMotion | None = None

@@ -34,7 +34,7 @@ from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
-from app.engine.offline.revisions import coast, elaborates, hold, restated_means
+from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means
 from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
@@ -179,6 +179,7 @@ class Builder:
             self.notes.append(act.note)
         for exclusion in act.exclusions:
             exclude(self, exclusion)
+        act = means_on_goal(self, act)
         goal = act.goal
         sense = self.frame_sense(goal)
         if goal.guessed_verb:

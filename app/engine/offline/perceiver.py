@@ -87,33 +87,40 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     """
     words = tokenize(prompt, asset_words(asset))
     clauses = split_clauses(words)
-    acts = build_acts(read_frames(clauses))
+    frames = read_frames(clauses)
+    acts = build_acts(frames)
     builder = Builder(asset)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
+    builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
+    pending = 0.0  # the wait before a clause that moved nothing goes before the next ("2 s pause while it's open, then shut")
     for act in acts:
-        if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and not act.results and (
-                act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
-            builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
-            continue
-        if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
-            builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
-            act = replace(act, goal=act.means, means=None)
+        act, pending, steps = replace(act, wait_before_s=act.wait_before_s + pending), 0.0, len(builder.steps)
         try:
-            builder.add(act)
-        except GroundingError as exc:
-            if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:
-                # "get the door down, which makes room to slide the baking tray in": the purpose names nothing here
-                builder.notes.append(f"ignored the purpose '{act.goal.text}': {str(exc).split('. Movable parts')[0]}")
-                builder.add(replace(act, goal=act.means, means=None))
+            if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and not act.results and (
+                    act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
+                builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
                 continue
-            if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
-                raise  # a clause that names parts but not which one is never skipped
-            skipped.append(exc)
-            set_topic(builder, act.goal)
-            builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
+            if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
+                builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
+                act = replace(act, goal=act.means, means=None)
+            try:
+                builder.add(act)
+            except GroundingError as exc:
+                if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:
+                    # "get the door down, which makes room to slide the baking tray in": the purpose names nothing here
+                    builder.notes.append(f"ignored the purpose '{act.goal.text}': {str(exc).split('. Movable parts')[0]}")
+                    builder.add(replace(act, goal=act.means, means=None))
+                    continue
+                if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
+                    raise  # a clause that names parts but not which one is never skipped
+                skipped.append(exc)
+                set_topic(builder, act.goal)
+                builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
+        finally:
+            pending = act.wait_before_s if len(builder.steps) == steps else 0.0
     if not builder.steps:
         if skipped:
             raise skipped[0]

@@ -212,7 +212,7 @@ def plan_intent(intent: Intent, asset: ArticulatedAsset) -> Plan:
     end = 0.0
     for index, step in enumerate(intent.steps):
         start = timeline.last_start if step.parallel and index > 0 else (end + STEP_GAP_S if index > 0 else 0.0)
-        start += step.pause_before_s if not step.parallel else 0.0
+        start += step.pause_before_s  # with a parallel step: how long after the step it runs with ("while it's still rising")
         timeline.last_start = start
         step_end = _base_step(timeline, step, step.base, start) if step.base is not None else _joint_step(timeline, step, start)
         end = max(end, step_end)

@@ -250,7 +250,10 @@ class Referents:
         return None
 
     def _compartment(self, mention: Mention, candidates: list[Part]) -> list[Part]:
-        """"the rack of the top oven": the candidates the door on that side of the object closes in."""
+        """"the rack of the top oven": the candidates the door on that side of the object closes in; "the door of the top
+        oven": the door on that side."""
+        if all(p.kind is not None and info(p.kind).hinged for p in candidates):
+            return narrow(replace(mention, sides=mention.region, region=()), candidates, self.asset, self.obj, [], set())[0]
         doors = [p for p in self.parts if p.kind is not None and info(p.kind).hinged and p not in candidates]
         if len(doors) < 2:
             return []
@@ -284,6 +287,8 @@ class Referents:
         reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
         if len(reference) != 1:
             return candidates
+        if side == "behind":  # "the rack (right) behind the upper door": the one that door closes in
+            return self._behind(reference[0], candidates) if reference[0].kind is not None and info(reference[0].kind).hinged else candidates
         anchor = position(reference[0], self.obj)
         axis, sign = {"below": (2, -1.0), "above": (2, 1.0), "left": (1, -1.0), "right": (1, 1.0)}.get(side, (None, 0.0))
         scored = []

@@ -5,6 +5,7 @@ previous motion goes), "hold it there for 2 s", "keep it down so the lid swings 
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.contracts.steps import Step as ContractStep
@@ -38,6 +39,18 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
     builder.notes.append(f"read '{act.goal.text}' as what working {moved} does: nothing more moves")
     return [], []
+
+
+def means_on_goal(builder: Builder, act: Act) -> Act:
+    """"Loosen the cap by turning it 90 degrees": a means on "it" before anything was named works the goal's own part,
+    so its amount and way are how far and which way the goal's motion goes."""
+    means, goal = act.means, act.goal
+    if means is None or builder.refs.last or not goal.themes or not means.themes or not all(m.pronoun for m in means.themes):
+        return act
+    q, how = goal.quantities, means.quantities
+    quantities = replace(q, amount=q.amount or how.amount, sense=q.sense or how.sense, direction=q.direction or how.direction)
+    builder.notes.append(f"read '{means.text}' as how '{goal.text}' goes")
+    return replace(act, goal=replace(goal, quantities=quantities), means=None)
 
 
 def elaborates(builder: Builder, act: Act, sense: VerbSense, parts: list[Part]) -> bool:

@@ -713,6 +713,36 @@ ROWS: list[Row] = [
     R("safe_102387", "Spin the dial one complete revolution to unlock it, which lets the door swing all the way open.",
       joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
     R("toilet_102622", "give the loo a flush using the button on the cistern", joints={"joint_1": E(peak="lower"), "joint_0": E(still=True)}),
+    # --- silent wrongs left in the earlier dev rounds, and round 16's leftovers ---
+    # an amount alone after a comma says how far the step before goes: one revolution, not a quarter turn and then one more
+    R("trash_can_102155", "Roll the left-hand wheel around once, a full revolution. Bin stays put.", joints={"joint_1": E(abs_end=2 * PI), "joint_2": E(still=True)}),
+    # "flat on the box / keyboard" is shut on the body, not the other flat pose; "flat on the table" is still laid open
+    R("box_102456", "Bring the toy box's cover down flat on the box.", joints={"joint_0": E(end="lower")}),
+    R("laptop_10101", "fold the screen flat on the keyboard", joints={"joint_1": E(end=LAPTOP_10101_CLOSED)}),
+    # "one above the other" arranges the knobs named before; "a quarter-turn" is an amount
+    R("extra/microwave_7128", "This microwave has two knobs stacked one above the other; turn the top one a quarter-turn to the left.",
+      joints={"joint_3": E(abs_end=PI / 2), "joint_2": E(still=True)}),
+    # "the lower oven's door": the door on that side of the object
+    R("extra/oven_7179", "open the lower oven's door", joints={"joint_3": E(end="upper"), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "bring the top compartment's door down to fully open", joints={"joint_4": E(end="upper"), "joint_3": E(still=True)}),
+    # "while it's opening (,) tip the handle back": the motion before, told as it goes; the next step runs with it
+    R("extra/suitcase_100550", "Lower the front half of the suitcase flat onto the floor, and while it's opening tip the carry handle back.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(end=1.221730476)}),
+    # --- round 18 (benchmark/probes/dev_round18_prompts.jsonl, scored first before these) ---
+    R("storage_27044", "slide the drawer out all the way and back in", joints={"joint_0": E(peak="upper")}),
+    R("storage_27044", "Drawer comes out about 20 cm and stays put for 1.5 s.", joints={"joint_0": E(end=0.2)}),
+    R("storage_27044", "drawer glides out to three-quarters extension and stops.", joints={"joint_0": E(end=0.513)}),
+    R("coffee_machine_103030", "the lid rises a quarter of its travel and stops there", joints={"joint_2": E(end=0.125), "joint_1": E(still=True)}),
+    R("trash_can_102181", "a foot presses the pedal and, because of that, the lid rises", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("refrigerator_11178", "open the left door to 90 deg. Left and right as seen from the front.",
+      joints={"joint_0": E(end=PI / 2), "joint_1": E(still=True)}),
+    R("extra/oven_7179", "open the upper door, then slide out the rack behind it",
+      joints={"joint_4": E(end="upper"), "joint_0": E(end="upper"), "joint_1": E(still=True), "joint_2": E(still=True)}),
+    R("extra/oven_7179", "Pull the lower door down so you can get at the bottom-most rack, and slide that rack out.",
+      joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_1": E(still=True)}),
+    R("safe_101564", "give a quick tap to the key that sits at the upper right", joints={"joint_2": E(moves=True), "joint_0": E(still=True)}),
+    R("bottle_cap_3558", "loosen the cap by turning it 90 degrees", joints={"joint_0": E(end=PI / 2)}),
+    R("extra/safe_101623", "Swing the door out as far as the hinge lets it, then put it back.", joints={"joint_1": E(peak="upper")}),
 ]
 
 

@@ -19,6 +19,8 @@ from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
 
 DEFAULT_WAIT_S = 1.0
+UNDERWAY_S = 0.2
+"""How long after the step before starts a step told "while it's still (moving)" starts."""
 
 
 @dataclass(frozen=True)
@@ -95,10 +97,14 @@ def _is_event(frame: Frame) -> bool:
 
 
 def _progressive_of(frame: Frame, before: Frame) -> bool:
-    """"(the door opens, and while) it is opening": the -ing form of the verb before, said again."""
+    """"(the door opens, and while) it is opening": the -ing form of the verb before, said again, or of another motion
+    verb on "it" ("lower it flat, and while it's opening, ..."): the motion before, told as it goes."""
     from lemminflect import getAllLemmas
 
-    return before.verb is not None and any(w.endswith("ing") and before.verb in getAllLemmas(w).get("VERB", ()) for w in frame.text.split())
+    def moving(lemma: str) -> bool:
+        return lemma == before.verb or (lemma in VERBS and VERBS[lemma].sense is not VerbSense.WAIT)
+
+    return before.verb is not None and any(w.endswith("ing") and any(moving(v) for v in getAllLemmas(w).get("VERB", ())) for w in frame.text.split())
 
 
 def _narrated(before: Frame, frame: Frame) -> bool:
@@ -136,6 +142,14 @@ def _recast(act: Act, frame: Frame) -> Act | None:
         theme = replace(old, sides=new.sides, ordinal=new.ordinal, ordinal_from=new.ordinal_from, size=new.size,
                         words=f"{old.words}, corrected to {new.words}")
     return replace(act, goal=replace(act.goal, themes=(theme,)))
+
+
+def _appositive_amount(before: Act, frame: Frame) -> bool:
+    """An amount alone after a comma, with the step before saying none: the same step, said again with its amount."""
+    q = frame.quantities
+    return (frame.verb is None and not frame.themes and not frame.instruments and frame.marker == "," and q.amount is not None
+            and q.duration_s is None and not frame.returning and not before.condition and before.goal.verb is not None
+            and bool(before.goal.themes) and before.goal.quantities.amount is None)
 
 
 def build_acts(frames: list[Frame]) -> list[Act]:
@@ -181,6 +195,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 frame.quantities.amount is None and frame.quantities.sense is not None and acts[-1].goal.quantities.sense is None):
             goal = acts[-1].goal  # "dial - one and a quarter revolutions, going clockwise": which way the step before goes
             acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, sense=frame.quantities.sense)))
+            continue
+        if acts and _appositive_amount(acts[-1], frame):
+            goal = acts[-1].goal  # "roll the wheel around once, a full revolution": how far the step before goes
+            acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, amount=frame.quantities.amount)))
             continue
         if frame.verb is None and frame.simultaneous and all(m.collective or m.pronoun for m in frame.themes) and len(acts) > 1:
             acts[-1] = replace(acts[-1], parallel=True)  # "..., both at the same time"
@@ -247,9 +265,11 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 acts.append(Act(goal=replace(frame, heading=True, verb=None, sense=None), condition=True))  # "Somebody left this door
                 # sticking straight out. Swing it back ...": the scene names what "it" is
             continue  # "..., so I can put my plate in", "nothing else": why, or a remark, not what
-        if frame.link is Link.PARALLEL and acts and not acts[-1].condition and frame.themes and all(m.pronoun for m in frame.themes) and (
+        if frame.link is Link.PARALLEL and acts and not acts[-1].condition and (
+                (frame.themes and all(m.pronoun for m in frame.themes)) or frame.text.split()[0] in ("it's", "they're")) and (
                 (frame.sense is acts[-1].goal.sense and frame.sense is not None) or _progressive_of(frame, acts[-1].goal)):
             restated = True  # "the door opens, and while it is opening the plate starts turning": the next step runs with it
+            pending_wait += UNDERWAY_S if "still" in frame.text.split() else 0.0  # "while it's still rising": once it is under way
             continue
         if frame.link is Link.PARALLEL and frame.verb is None and frame.themes and all(
                 m.kind is None and not m.is_object and not m.pronoun for m in frame.themes):

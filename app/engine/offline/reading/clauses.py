@@ -128,6 +128,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         j += 1
     if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
+    if j + 1 < len(tokens) and tokens[j].text == "back" and tokens[j + 1].text in ("in", "shut", "closed", "down", "up", "again", "home", "to", "into"):
+        return True  # "slide the drawer out and back in": the way back is a step of its own
     if j < len(tokens) and (tokens[j].text in ("it's", "they're", "that's", "it'll") or tokens[j].text in WISHES):
         return True  # "so it's not in the way", "Game dev here - I need ..."
     if j + 2 < len(tokens) and tokens[j].number is not None and tokens[j + 2].text in _PAUSES:
@@ -186,10 +188,14 @@ def _ing(token: Token) -> bool:
     return token.text.endswith("ing") and token.lemma in VERBS
 
 
+_THEREFORE = ("causing", "making", "as_a_result", "because_of_that", "because_of_this", "as_a_consequence", "consequently")
+"""Words after which what follows is what the clause before caused."""
+
+
 def _told_after_gerund(current: list[Token], token: Token) -> bool:
     """A finite verb ("opens", "makes") after a clause that is a gerund and what it works: the gerund is the subject."""
     body = [t for t in current if t.text not in FILLERS]
-    return (len(body) >= 3 and body[0] is current[0] and _ing(body[0]) and any(t.text in DETERMINERS for t in body[1:])
+    return (len(body) >= 3 and body[0] is current[0] and _ing(body[0]) and body[0].text != body[0].lemma and any(t.text in DETERMINERS for t in body[1:])
             and token.text.endswith("s") and token.text != token.lemma and (token.lemma in VERBS or token.lemma in TOLD_CAUSATIVES))
 
 
@@ -262,6 +268,10 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             link, marker, conjoined = Link.RESULT, word, False  # "swing it almost shut, leaving it 10 degrees ajar": the end state
             i += 1
             continue
+        elif link in (Link.PARALLEL, Link.CONDITION) and len(current) > 1 and _ing(current[-1]) and token.text == token.lemma and (
+                token.lemma in VERBS and current[-1].text != current[-1].lemma):
+            boundary = (Link.SEQUENCE, ",", True)  # "while it's opening | tip the handle back": the step that runs meanwhile
+            nxt = i
         elif _told_after_gerund(current, token):
             boundary = (Link.RESULT, "", False)  # "pressing the pedal | opens the lid", "swinging the lever | makes the lid pop up"
             nxt = i
@@ -295,9 +305,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)
-        elif word in ("so", "so_that", "which", "causing", "making", "as_a_result") and current and (
+        elif word in ("so", "so_that", "which", *_THEREFORE) and current and (
                 _starts_clause(tokens, nxt) or (nxt < len(tokens) and (tokens[nxt].lemma in VERBS or tokens[nxt].lemma in TOLD_CAUSATIVES))
-                or word in ("causing", "making", "as_a_result")):
+                or word in _THEREFORE):
             boundary = (Link.RESULT, word, False)
         elif word in NEGATIONS and current and _subject_only(current) and word not in ("without", "except", "but"):
             negated_here = True  # "the wheels cannot roll", "they do not turn": this clause says what does not happen

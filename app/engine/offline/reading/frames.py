@@ -45,6 +45,7 @@ _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "forme
                            "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before", "how_it_was", "how_it_was_before",
                            "how_they_were", "like_it_was_before", "like_it_was", "like_they_were",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
+_HAVING = frozenset({"has", "have", "had", "there's", "there_is", "there_are"})
 _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
 _CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
@@ -120,6 +121,8 @@ def _light_verb(tokens: list[Token]) -> list[Token]:
     if not tokens or tokens[0].lemma not in LIGHT_VERBS:
         return tokens
     for i in range(2, len(tokens)):
+        if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS and i + 1 < len(tokens) and tokens[i + 1].text == "to":
+            return [tokens[i], *tokens[i + 2:]]  # "give a quick tap to the top key": tap the top key
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
             bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
             return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
@@ -290,14 +293,16 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None
-    described = finite is not None and tokens[finite - 1].text in ("is", "are", "was", "were")  # "the door is hinged on the left"
+    described = finite is not None and (tokens[finite - 1].text in ("is", "are", "was", "were") or (  # "the door is hinged on the left"
+        tokens[finite].text.endswith("ed") and any(t.text in _HAVING for t in tokens[:finite])))  # "it has two knobs stacked ..."
     if finite is not None and not described:
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
     progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
         tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
     if progressive:
         verb_index, verb = None, None  # "the screen is leaning back too far": how things are, not a step
-    causative = verb_index is not None and (tokens[verb_index].text in CAUSATIVES or tokens[verb_index].lemma in TOLD_CAUSATIVES)
+    causative = verb_index is not None and (tokens[verb_index].text in CAUSATIVES or (tokens[verb_index].lemma in TOLD_CAUSATIVES and any(
+        t.lemma in VERBS and t.lemma not in TOLD_CAUSATIVES for t in tokens[verb_index + 1:])))  # not "as far as the hinge lets it"
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
     else:

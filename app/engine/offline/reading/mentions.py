@@ -111,13 +111,15 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
     determiner = possessive = chosen_freely = False
     whose: str | None = None
     owner: Mention | None = None
+    region: tuple[tuple[Side, bool], ...] = ()
     while i < len(tokens) and i not in used and (_nominal(tokens[i]) or _inner(tokens, i, begin) or tokens[i].text == "'s"):
         token = tokens[i]
         word = token.text
         if word == "'s":
             # "the stapler's (staple) magazine", "the door's handle": what came before owns what follows
-            if nouns and nouns[-1][3]:
-                whose = tokens[nouns[-1][0]].lemma
+            if (nouns and nouns[-1][3]) or (not nouns and unknown):
+                whose = tokens[nouns[-1][0]].lemma if nouns else tokens[unknown[-1]].lemma
+                region = tuple(sides)  # "the top oven's door", "the lower compartment's rack": on that side of the object
             elif nouns:
                 start_, length, kind, _ = nouns[-1]
                 owner = Mention(head=" ".join(t.lemma for t in tokens[start_:start_ + length]), kind=kind, sides=tuple(sides), start=begin, end=i)
@@ -226,7 +228,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         return Mention(head="it", pronoun=True, sides=tuple(sides), start=begin, end=end, words=_words(tokens, begin, end)), end
     return Mention(head=head_word, kind=kind, is_object=is_object, other=other, sides=tuple(sides), ordinal=ordinal, size=size, plural=plural,
                    collective=collective, possessive=possessive, one_of=chosen_freely, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
-                   words=_words(tokens, begin, end)), end
+                   region=region, words=_words(tokens, begin, end)), end
 
 
 _PLACE_PREPS = frozenset({"on", "off", "onto", "from", "along", "across", "against", "over", "under", "at", "to", "toward", "towards", "into",
@@ -271,7 +273,7 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
 _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
               "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
               "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far",
-              "farther": "far", "further": "far"}
+              "farther": "far", "further": "far", "behind": "behind"}
 _VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
 _RELATIVE = frozenset({"that's", "that", "which", "which's", "is", "sits", "sitting"})

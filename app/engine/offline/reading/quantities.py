@@ -19,6 +19,7 @@ from app.engine.lexicon.words import (
     LENGTH_UNITS,
     LOOSE_AMOUNTS,
     MULTIPLIERS,
+    OBJECT_NOUNS,
     RATE_UNITS,
     ROTATION_SENSE,
     SPATIAL,
@@ -41,7 +42,8 @@ _CLOSED_WORDS = frozenset({"closed", "shut", "close"})
 _NEAR_STATES = _CLOSED_WORDS | {"open", "opened", "flat", "upright", "vertical", "horizontal", "level", "straight", "down", "up"}
 
 
-_DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second_and_a_half": 1.5, "half_a_second": 0.5}
+_DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second_and_a_half": 1.5, "half_a_second": 0.5,
+                     "a_full_second": 1.0, "a_whole_second": 1.0, "a_full_minute": 60.0, "a_whole_minute": 60.0}
 _POSITION_DIRECTIONS = {"to_the_top": "up", "to_the_very_top": "up", "to_the_bottom": "down", "to_the_very_bottom": "down",
                         "as_high_as_it_goes": "up", "as_high_as_possible": "up", "as_low_as_it_goes": "down", "as_low_as_possible": "down"}
 _SIDE_PREPS = frozenset({"toward", "towards", "against", "onto", "over"})
@@ -167,6 +169,17 @@ _TURN_FRACTIONS = frozenset({"three quarters", "three-quarters", "a third", "one
 _OF_RANGE = frozenset({"the", "its", "their", "full", "whole", "entire", "total", "available", "way", "travel", "range", "extension",
                        "stroke", "opening", "swing", "motion", "run"})
 """Words of "(2/3) of the full extension": the range an amount is a fraction of."""
+
+
+_BODY_NOUNS = frozenset({*OBJECT_NOUNS, "body", "base", "frame", "case", "shell", "housing", "carcass", "keyboard"}) - {
+    "table", "desk", "floor", "ground", "counter", "worktop", "bench", "workbench", "shelf"}
+"""What a part shuts flat on; a surface the object stands on is not one ("flat on the table": laid open)."""
+
+
+def _on_the_body(tokens: list[Token], i: int) -> bool:
+    """"(flat) on the box", "onto its body", "against the case": what the part closes on."""
+    words = [t.text for t in tokens[i:i + 4]]
+    return bool(words) and words[0] in ("on", "onto", "against", "down_on") and any(w in _BODY_NOUNS for w in words[1:])
 
 
 def _region_noun(tokens: list[Token], i: int) -> bool:
@@ -350,6 +363,8 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text in ("to_the_left", "to_the_right"):
             values["direction"] = token.text.rsplit("_", 1)[1]
             used.add(i)
+        elif token.text == "flat" and _on_the_body(tokens, i + 1):
+            used.add(i)  # "down flat on the box": shut on the body, not the other flat pose
         elif (token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up":
             values["orientation"] = STATES.get(token.text, "vertical")
             used.add(i)

@@ -66,6 +66,24 @@ def _as_they_are(tokens: list[Token], i: int) -> bool:
     return False
 
 
+def _motion_verb(word: str) -> bool:
+    from lemminflect import getAllLemmas
+
+    return word in VERBS or any(lemma in VERBS for lemma in getAllLemmas(word).get("VERB", ()))
+
+
+_CONVENTION = frozenset({"left", "right", "and", "/", "or", "as", "seen", "viewed", "looking", "from", "the", "front", "viewer", "outside",
+                         "is", "are", "means", "mean", "sides", "side", ",", "facing", "it", "camera", "'s", "view", "point", "of"})
+
+
+def _side_convention(tokens: list[Token], i: int) -> int:
+    """The length of a sentence at ``i`` that only says how left and right are meant ("Left/right from the front."), else 0."""
+    end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+    words = {t.text for t in tokens[i:end]}
+    viewpoint = words & {"front", "viewer", "outside", "camera"}
+    return end - i + (end < len(tokens)) if viewpoint and words & {"left", "right"} and words <= _CONVENTION else 0
+
+
 def drop_asides(tokens: list[Token]) -> list[Token]:
     """Politeness and the beneficiary say nothing about the motion: "please", "for me"."""
     out: list[Token] = []
@@ -75,6 +93,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             skip -= 1
             continue
         if token.text in ASIDE_WORDS:
+            continue
+        if (not out or out[-1].is_sentence_end) and (convention := _side_convention(tokens, i)):
+            skip = convention - 1  # "Left and right as seen from the front.": how sides are meant (always so), no step
             continue
         after = tokens[i + 1].text if i + 1 < len(tokens) else ""
         if token.text == "al" and after == "the":
@@ -127,6 +148,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             skip = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in _CLAUSE_BREAKS), len(tokens)) - i - 1
         if token.text in ("untouched", "unmoved", "unchanged") and (i + 1 == len(tokens) or tokens[i + 1].is_punct):
             token = replace(token, text="stays_put", lemma="stays_put")  # "lid and clasps untouched"
+        if token.text in _STAYS and out and out[-1].text in ("and", "then", ",") and any(_motion_verb(t.text) for t in out[-8:]):
+            out += [replace(token, text="stays", lemma="stay"), replace(token, text="there", lemma="there")]
+            continue  # "the drawer comes out 20 cm and stays put for 1.5 s": no subject of its own, so it holds what just moved
         if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
             start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
             wider = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS and t.text != "and"), default=0)
@@ -205,9 +229,25 @@ def corrections(tokens: list[Token]) -> list[Token]:
 _LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
 _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
+_ARRANGED = frozenset({"above", "below", "over", "under", "beneath", "behind", "beside", "atop", "next_to", "on_top_of", "alongside"})
+"""Relations of "one ... the other" that say how parts are arranged ("one after the other" is an order, not one of them)."""
 _VIEWERS = frozenset({"viewer", "camera", "audience", "observer", "onlooker", "spectator"})
 
 
+
+
+_SITTING = frozenset({"sits", "sitting", "lies", "located", "placed", "positioned"})
+
+
+def _placed_relative(tokens: list[Token], i: int) -> int:
+    """How many words at ``i`` say "(that / which) sits / is" between a noun and where it is ("at the upper right"), or 0."""
+    words = [t.text for t in tokens[i:i + 3]]
+    start = max((k + 1 for k in range(i) if tokens[k].is_punct), default=0)
+    noun_before = i > 0 and tokens[i - 1].text.isalpha() and tokens[i - 1].text not in ("it", "they", "and", "then") and any(
+        _motion_verb(t.text) for t in tokens[start:i - 1])  # "tap the key that sits ...", not "the drawer sits on the left; ..."
+    if words[:1] in (["that"], ["which"]) and len(words) == 3 and words[1] in {*_SITTING, "is"} and words[2] in ("at", "on", "in", "near"):
+        return 2 if noun_before else 0
+    return 1 if len(words) > 1 and words[0] in _SITTING and words[1] in ("at", "on", "in", "near") and noun_before else 0
 
 
 def same_words(tokens: list[Token]) -> list[Token]:
@@ -225,6 +265,14 @@ def same_words(tokens: list[Token]) -> list[Token]:
             t = replace(t, text="to", lemma="to")  # "25 cm on my right side": to my right
         elif (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
             t = replace(t, text="the", lemma="the")
+        elif t.text in ("whichever", "whatever") and after.isalpha():
+            t = replace(t, text="the", lemma="the")  # "tap whichever key sits at the upper right"
+        elif placed := _placed_relative(tokens, i):
+            skip = i + placed - 1
+            continue  # "the key (that) sits at the upper right": the key at the upper right
+        elif t.text == "one" and after in _ARRANGED and [w.text for w in tokens[i + 2:i + 4]] == ["the", "other"]:
+            skip = i + 3  # "two knobs, one above the other": how they are arranged, no part of its own
+            continue
         elif t.text in _VIEWERS and before == "the" and after == "'s" and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES:
             skip = i + 1  # "toward the viewer's left": the left as seen facing the object
             continue

@@ -16,7 +16,7 @@ from dataclasses import replace
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
+from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
@@ -193,7 +193,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        value = _number_word(tokens[i].text) if tokens[i].number is None else None
+        value = _number_word(tokens[i].text) if tokens[i].number is None and tokens[i].text not in AMOUNTS else None  # "three-quarters": an amount
         after_qualifier = i > 0 and tokens[i - 1].text in _QUALIFIERS
         if tokens[i].text == "one" and (not _counts(tokens, i + 1) or after_qualifier):
             value = None  # "the left one", "one of the doors", "the bottom one half a turn": a pronoun, not a number
@@ -320,12 +320,16 @@ def verb_ing(word: str) -> bool:
 
 
 def _halved(tokens: list[Token], known: frozenset[str]) -> list[Token]:
-    """"half-open the drawer", "half-oepn it": the verb, then "halfway" (the verb spelt as the other words are)."""
+    """"half-open the drawer", "half-oepn it": the verb, then "halfway" (the verb spelt as the other words are); "a
+    quarter-turn": two words."""
     from app.engine.offline.reading.spelling import correct
 
     out: list[Token] = []
     for token in tokens:
         head, dash, verb = token.text.partition("-")
+        if dash and head in ("quarter", "half", "full", "third", "eighth") and verb in ("turn", "turns", "revolution", "rotation"):
+            out += [Token(head, head, token.start, token.end), Token(verb, verb, token.start, token.end)]  # "a quarter-turn"
+            continue
         spelt = correct(replace(token, text=verb, lemma=verb), known) if head == "half" and dash and verb.isalpha() else None
         if spelt is None or spelt.text not in VERBS:
             out.append(token)
