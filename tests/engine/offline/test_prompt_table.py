@@ -743,6 +743,8 @@ ROWS: list[Row] = [
     R("safe_101564", "give a quick tap to the key that sits at the upper right", joints={"joint_2": E(moves=True), "joint_0": E(still=True)}),
     R("bottle_cap_3558", "loosen the cap by turning it 90 degrees", joints={"joint_0": E(end=PI / 2)}),
     R("extra/safe_101623", "Swing the door out as far as the hinge lets it, then put it back.", joints={"joint_1": E(peak="upper")}),
+    # "of the three" counts a group, it is no key label: no code '3' typed before the button asked for (was: key 3, then key 1)
+    R("safe_101564", "press the top button of the three on the left", refuse=True),
 ]
 
 

@@ -54,6 +54,7 @@ def code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[t
             continue
         counts = i + 1 < len(tokens) and tokens[i + 1].lemma in ("key", "button") and (
             tokens[i + 1].plural or not (i and tokens[i - 1].text in DEFINITES))  # "the three keys of the top row": a count; "the 5 key": its label
+        counts = counts or (i > 1 and tokens[i - 1].text in DEFINITES and tokens[i - 2].text in ("of", "among"))  # "the top button of the three"
         if token.number is not None and token.number == int(token.number) and token.number >= 0 and not counts:
             items.extend(("digit", d) for d in token.text.split(".")[0])
             continue
