@@ -284,7 +284,10 @@ class Referents:
             if side == "near" or len(nearest) != 1:
                 return nearest
             return self._farthest(reference_mention, candidates)
-        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts)
+        from app.engine.offline.keypad import code_keys
+
+        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts) if (
+            reference_mention.kind is not PartKind.CODE) else code_keys((("digit", reference_mention.head),), self)
         if len(reference) != 1:
             return candidates
         if side == "behind":  # "the rack (right) behind the upper door": the one that door closes in
@@ -300,7 +303,10 @@ class Referents:
                 continue
             across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else 0.0
             scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
-        return [min(scored)[3]] if scored else []
+        scored.sort(key=lambda entry: entry[:3])
+        if len(scored) > 1 and scored[0][:2] == scored[1][:2]:
+            return [entry[3] for entry in scored if entry[:2] == scored[0][:2]]  # "next to the 5": the 4 and the 6 are as near
+        return [scored[0][3]] if scored else []
 
     def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
         """"the knob furthest from the big one", "the knob farther from the hinge", "the lever furthest from me" (the back)."""

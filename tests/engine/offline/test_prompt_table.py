@@ -745,6 +745,10 @@ ROWS: list[Row] = [
     R("extra/safe_101623", "Swing the door out as far as the hinge lets it, then put it back.", joints={"joint_1": E(peak="upper")}),
     # "of the three" counts a group, it is no key label: no code '3' typed before the button asked for (was: key 3, then key 1)
     R("safe_101564", "press the top button of the three on the left", refuse=True),
+    # "the key above the 5": placed from the key labelled 5 (was: the 5 itself pressed: silent); "next to the 5" has two nearest
+    R("safe_101564", "press the key above the 5", joints={"joint_1": E(moves=True), "joint_4": E(still=True)}),
+    R("safe_101564", "press the key to the left of the 9", joints={"joint_7": E(moves=True), "joint_8": E(still=True)}),
+    R("safe_101564", "Press the key next to the 5 (phone-style keypad).", refuse=True),
 ]
 
 

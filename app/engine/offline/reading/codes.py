@@ -13,6 +13,10 @@ _KEY_WORDS = frozenset({"key", "button", "one", "on", "keypad", "of", "in", "at"
                         "number", "passcode", "keycode", "pad"})
 
 
+_PLACING = frozenset({"next_to", "beside", "above", "below", "under", "over", "beneath", "left_of", "right_of", "near", "nearest",
+                      "closest", "to_the_left", "to_the_right"})
+
+
 def place_words(text: str) -> bool:
     """Only words that place a key ("second-row middle", "bottom-left")."""
     return all(w in SPATIAL or w in ORDINALS or w in ("row", "column") or (
@@ -55,6 +59,7 @@ def code_items(tokens: list[Token], start: int, used: frozenset[int]) -> tuple[t
         counts = i + 1 < len(tokens) and tokens[i + 1].lemma in ("key", "button") and (
             tokens[i + 1].plural or not (i and tokens[i - 1].text in DEFINITES))  # "the three keys of the top row": a count; "the 5 key": its label
         counts = counts or (i > 1 and tokens[i - 1].text in DEFINITES and tokens[i - 2].text in ("of", "among"))  # "the top button of the three"
+        counts = counts or any(t.text in _PLACING for t in tokens[max(0, i - 2):i])  # "the key next to the 5": where, not a key to press
         if token.number is not None and token.number == int(token.number) and token.number >= 0 and not counts:
             items.extend(("digit", d) for d in token.text.split(".")[0])
             continue
