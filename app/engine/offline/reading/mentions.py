@@ -304,7 +304,8 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
         end = j + (1 if tokens[j].text == "hinge" else 2)
         door = Mention(head="door", kind=PartKind.DOOR, modifiers=("hinge",), start=j, end=end, words="the door")
         return replace(mention, relation=(relation, door), end=end, words=_words(tokens, mention.start, end))
-    label = k if k < len(tokens) and tokens[k].number is not None and tokens[k].text.isdigit() and len(tokens[k].text) == 1 else None
+    label = k if k < len(tokens) and tokens[k].number is not None and tokens[k].text.isdigit() and len(tokens[k].text) == 1 and (
+        k + 1 == len(tokens) or not _nominal(tokens[k + 1])) else None  # "the 5", not "the 2 knobs"
     if label is not None and mention.kind is PartKind.BUTTON:  # "the key next to the 5": the key labelled 5 on a phone-style keypad
         key = Mention(head=tokens[label].text, kind=PartKind.CODE, start=label, end=label + 1, words=f"the {tokens[label].text}")
         return replace(mention, relation=(relation, key), end=label + 1, words=_words(tokens, mention.start, label + 1))
