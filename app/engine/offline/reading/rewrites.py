@@ -9,6 +9,7 @@ the raw text is split (:mod:`.tokens`), so every rewritten token keeps the span 
 from __future__ import annotations
 
 from dataclasses import replace
+from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
@@ -66,6 +67,7 @@ def _as_they_are(tokens: list[Token], i: int) -> bool:
     return False
 
 
+@lru_cache(maxsize=4096)
 def _motion_verb(word: str) -> bool:
     from lemminflect import getAllLemmas
 
@@ -232,22 +234,24 @@ _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right"
 _ARRANGED = frozenset({"above", "below", "over", "under", "beneath", "behind", "beside", "atop", "next_to", "on_top_of", "alongside"})
 """Relations of "one ... the other" that say how parts are arranged ("one after the other" is an order, not one of them)."""
 _VIEWERS = frozenset({"viewer", "camera", "audience", "observer", "onlooker", "spectator"})
-
-
-
-
 _SITTING = frozenset({"sits", "sitting", "lies", "located", "placed", "positioned"})
+_WHERE = ("at", "on", "in", "near")
 
 
 def _placed_relative(tokens: list[Token], i: int) -> int:
     """How many words at ``i`` say "(that / which) sits / is" between a noun and where it is ("at the upper right"), or 0."""
     words = [t.text for t in tokens[i:i + 3]]
+    if words[:1] in (["that"], ["which"]) and len(words) == 3 and words[1] in {*_SITTING, "is"} and words[2] in _WHERE:
+        count = 2
+    elif len(words) > 1 and words[0] in _SITTING and words[1] in _WHERE:
+        count = 1
+    else:
+        return 0
+    if i == 0 or not tokens[i - 1].text.isalpha() or tokens[i - 1].text in ("it", "they", "and", "then"):
+        return 0
     start = max((k + 1 for k in range(i) if tokens[k].is_punct), default=0)
-    noun_before = i > 0 and tokens[i - 1].text.isalpha() and tokens[i - 1].text not in ("it", "they", "and", "then") and any(
-        _motion_verb(t.text) for t in tokens[start:i - 1])  # "tap the key that sits ...", not "the drawer sits on the left; ..."
-    if words[:1] in (["that"], ["which"]) and len(words) == 3 and words[1] in {*_SITTING, "is"} and words[2] in ("at", "on", "in", "near"):
-        return 2 if noun_before else 0
-    return 1 if len(words) > 1 and words[0] in _SITTING and words[1] in ("at", "on", "in", "near") and noun_before else 0
+    # "tap the key that sits ...", not "the drawer sits on the left; ...": a verb before makes the noun its object
+    return count if any(_motion_verb(t.text) for t in tokens[start:i - 1]) else 0
 
 
 def same_words(tokens: list[Token]) -> list[Token]:
