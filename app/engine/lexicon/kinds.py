@@ -84,6 +84,8 @@ class KindInfo:
     """Swings up about a horizontal hinge (a lid, a seat): a side-hinged door is not one."""
     turns_only: bool = False
     """Only ever turns: a sliding part is never this kind."""
+    reclines: bool = False
+    """Pushed back, it tips further open (a laptop's screen), not shut like a door or a drawer."""
     affordances: tuple[str, ...] = ()
     """What Causal.json's ``semantics.links[].affordance`` lists for it."""
 
@@ -112,7 +114,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
         KindInfo(PartKind.CONTAINER, ("container", "jug", "carafe", "water tank", "tank", "reservoir", "water reservoir", "jar", "canister"), labels=("container",),
                  related=(PartKind.DRAWER, PartKind.TRAY), openable=True, affordances=("pull_out", "push_in", "lift")),
         KindInfo(PartKind.SCREEN, ("screen", "display", "monitor", "lcd"), labels=("screen",), related=(PartKind.LID, PartKind.DOOR),
-                 hinged=True, openable=True, affordances=("open", "close")),
+                 hinged=True, openable=True, reclines=True, affordances=("open", "close")),
         KindInfo(PartKind.WINDOW, ("window", "sash", "pane", "rotation window", "casement"), labels=("window", "rotation_window", "translation_window"),
                  related=(PartKind.DOOR, PartKind.LID), hinged=True, openable=True, affordances=("open", "close")),
         KindInfo(PartKind.CAP, ("cap", "bottle cap", "screw cap"), labels=("cap",), related=(PartKind.LID,),

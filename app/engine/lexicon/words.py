@@ -123,9 +123,15 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
 })
 PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
-AGENT_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "gripper", "robot", "arm", "hand", "hands", "thumb", "finger",
-                         "fingers", "foot", "feet", "chef", "cook", "kid", "kids", "child", "man", "woman", "camera", "viewer", "audience",
-                         "narrator"})
+GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit"})
+"""Nouns that name no kind of part: with a place or a size ("the topmost piece", "the left-hand section") any movable part there."""
+PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator",
+                          "thief", "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse",
+                          "waiter", "janitor", "guy", "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "effector", "end-effector",
+                          "manipulator", "gripper"})
+"""People (and robot hands) in a scene: never a part ("the thief yanks the lower drawer open": the drawer)."""
+AGENT_NOUNS = PERSON_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",
+                                        "audience"})
 """Who (or what) acts on the object in a scene: a clause whose subject this is and that names no part ("then the arm lets
 go") says nothing to animate."""
 FACE_RELATIONS = frozenset({"perpendicular", "parallel", "square", "level", "flush", "proud", "normal", "relative", "line"})

@@ -190,6 +190,10 @@ class Builder:
         if goal.verb is None and not goal.wish and (not goal.themes or self._nothing_known(goal)):
             self.notes.append(f"ignored '{goal.text}' (no action found)")
             return
+        if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
+            self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
+            self.add(replace(act, goal=act.means, means=None))
+            return
         if sense is VerbSense.GRASP:
             try:
                 parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])

@@ -229,6 +229,9 @@ def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:
             builder.notes.append(f"opened {blocker.link} first: it blocks {move.part.link}")
 
 
+_KEPT_END = frozenset({"lies", "lie", "sits", "sit", "rests", "rest", "stays", "stay", "remains", "flat", "flush", "locked", "latched", "in_place"})
+
+
 def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move], effects: list[Move]) -> list[Move]:
     """What each control does after its actuation."""
     held = (act.goal.hold or sense is VerbSense.HOLD) and not act.goal.quantities.duration_s  # a timed hold ends with a release
@@ -247,7 +250,8 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
         elif (move.goal.state == "closed" and sense in (VerbSense.LOCK, VerbSense.CLOSE)) or (
                 sense is VerbSense.TOGGLE and move.part.kind is not None and info(move.part.kind).latches_host):
             out.append(replace(move, release="stays"))  # "lock the latch": it stays locked; "flip the catch over": it stays over
-        elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat"):
+        elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat") and not (
+                any(set(r.text.split()) & _KEPT_END for r in act.results)):  # "swing the catch up so it lies flat against the box": it stays
             out.append(replace(move, release="self_return"))
         else:
             out.append(replace(move, release="stays"))

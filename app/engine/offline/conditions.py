@@ -14,9 +14,12 @@ from app.engine.offline.reading.acts import Act
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
+    from app.engine.offline.grounding import Part
     from app.engine.offline.reading.frames import Frame
 
 
+_HAVING = frozenset({"has", "have", "carries", "carry", "features", "holds", "bears", "sports", "includes", "houses"})
+"""Verbs of a description that names parts on another ("the door carries a wheel and a dial"): the parts after it."""
 _GROUPS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console", "keyboard"})
 """Heads that name a group of parts ("Keypad: press 7 and 3"), not one part."""
 
@@ -35,13 +38,24 @@ def condition(builder: Builder, act: Act) -> None:
         try:
             builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [], topic=True)
         except GroundingError:
+            if (each := _each_alone(builder, frame)) is not None:
+                builder.refs.remember(each, [], topic=True)  # "There's a big wheel on the door and a smaller dial higher up."
+                return
             if any(m.kind is not None and m.head not in _GROUPS and not (m.plural or m.collective) for m in frame.themes):
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
             set_topic(builder, frame)  # "Quick anim: ...": a summary that names no part; "the chicken is on the lowest shelf - ..."
         return
     if any(m.is_object for m in frame.themes) and not all(m.is_object for m in frame.themes):
         frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))  # "the safe has two dials": the dials
-    parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
+    having = next((k for k, word in enumerate(frame.text.split()) if word in _HAVING), None)
+    if having is not None and frame.verb is None and any(m.start > having for m in frame.themes):
+        frame = replace(frame, themes=tuple(m for m in frame.themes if m.start > having))  # "the door has two knobs on it": the knobs
+    try:
+        parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
+    except GroundingError:
+        if (each := _each_alone(builder, frame)) is None:
+            raise
+        parts, words = each, []  # "There's a big wheel on the door and a smaller dial higher up": both, each named alone
     words_in = set(frame.text.split())
     if words_in & {"starts", "begins", "started", "already"}:
         builder.refs.remember(parts, [])  # "the door starts partly open": how the scene begins, not a step
@@ -55,6 +69,20 @@ def condition(builder: Builder, act: Act) -> None:
     if moves:
         builder.complete(replace(act, goal=replace(frame, sense=wanted)), wanted, [], moves, why="prerequisite")
     builder.refs.remember(parts, [])
+
+
+def _each_alone(builder: Builder, frame: Frame) -> list[Part] | None:
+    """The parts of a heading that names several parts each on its own ("a big wheel ... and a smaller dial"), or None."""
+    if len(frame.themes) < 2:
+        return None
+    parts: list[Part] = []
+    for mention in frame.themes:
+        try:
+            found, _ = builder.refs.resolve(mention)
+        except GroundingError:
+            return None
+        parts += [p for p in found if p not in parts]
+    return parts if len({p.kind for p in parts}) == 1 else None
 
 
 def set_topic(builder: Builder, frame: Frame) -> None:

@@ -97,7 +97,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     part_class_ = _class(part)
     if quantities.axis is None and quantities.direction == "backward" and part_class_ is PartClass.OPENABLE and sense in (
             VerbSense.PRESS, VerbSense.MOVE, VerbSense.PUSH_IN, VerbSense.RETURN):
-        return "closed"  # "push it back 10 cm": toward closed, from where it is
+        # "push it back 10 cm": toward closed, from where it is; a laptop's screen pushed back reclines (the way it moves back)
+        return "backward" if rotates and part.kind is not None and info(part.kind).reclines else "closed"
     if quantities.axis is not None and sense is not VerbSense.SPIN and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None):
         return "toward"  # "swing the handle down onto the rim on the -X side"
     if (frame.particle == "back" and quantities.direction is None and rotates and part_class_ is not PartClass.OPENABLE and not frame.returning

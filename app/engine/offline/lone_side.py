@@ -4,7 +4,12 @@ sit front and back. Each is a refusal naming the parts, not a guess."""
 
 from __future__ import annotations
 
+from functools import lru_cache
+
+from app.engine.asset.layout import AssetLayout, asset_layout
+from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, Side
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import _AXIS_OF, Part, position
 from app.engine.offline.reading.mentions import Mention
@@ -19,16 +24,20 @@ SAME_PLACE = 0.03
 
 
 def lone_side_refusal(mention: Mention, kind: PartKind | None, candidates: list[Part], said: list[str], obj: ObjectGeometry,
-                      parts: list[Part], asset_name: str) -> str | None:
+                      parts: list[Part], asset: ArticulatedAsset) -> str | None:
     """Why the side words of ``mention`` cannot pick among ``candidates`` (None when they can)."""
-    noun = kind.value if kind is not None else mention.head
+    noun, asset_name = kind.value if kind is not None else mention.head, asset.name
     if not mention.sides or mention.plural:
         return None
     if len(candidates) == 1:
-        compared = any(w in _COMPARATIVES and k > 0 and said[k - 1] in _DEFINITE for k, w in enumerate(said))
-        if compared and not (mention.modifiers and _beyond_others(candidates[0], mention, obj, parts)):  # "the lower cabinet door"
+        compared = any(w in _COMPARATIVES and k > 0 and said[k - 1] in _DEFINITE for k, w in enumerate(said)) and (
+            mention.head not in GENERIC_PART_NOUNS)  # "the upper part" of a laptop: its lid, against its fixed base
+        if compared and _beyond_others(candidates[0], mention, obj, parts):
+            return None  # "the lower door" of a cabinet whose one door lies below its drawer: that door
+        if compared:  # "the lower door" of a one-door oven: the user expects another door
             return f"'{mention.words}' sets one {noun} against another, but {asset_name} has only one: say 'the {noun}'"
-        if _other_side(candidates[0], mention, obj) and not (mention.modifiers and _beyond_others(candidates[0], mention, obj, parts)):
+        if _other_side(candidates[0], mention, obj) and not (mention.modifiers and _beyond_others(candidates[0], mention, obj, parts)) and (
+                not _shown_there(candidates[0], mention, asset)):
             return f"'{mention.words or mention.head}' names a side where {asset_name} has none: its only {noun} is elsewhere"
         return None
     if not mention.collective and _same_place(mention, candidates, obj):
@@ -47,6 +56,32 @@ def _other_side(part: Part, mention: Mention, obj: ObjectGeometry) -> bool:
         if (value if positive else -value) < CLEARLY * obj.diag:
             return True
     return False
+
+
+_ORDER = {"bottom": 0, "middle": 1, "top": 2, "left": 0, "center": 1, "right": 2, "back": 0, "front": 2}
+_RANKS = {Side.TOP: lambda p: _ORDER[p.vertical], Side.BOTTOM: lambda p: -_ORDER[p.vertical], Side.RIGHT: lambda p: _ORDER[p.side],
+          Side.LEFT: lambda p: -_ORDER[p.side], Side.FRONT: lambda p: _ORDER[p.depth], Side.BACK: lambda p: -_ORDER[p.depth]}
+"""How far each side word's way a part sits, from ``artimo inspect``'s words (a larger value is further)."""
+
+
+@lru_cache(maxsize=16)
+def _layout(asset: ArticulatedAsset) -> AssetLayout:
+    return asset_layout(asset)
+
+
+def _shown_there(part: Part, mention: Mention, asset: ArticulatedAsset) -> bool:
+    """``artimo inspect`` places the part on every side named (its box centre: "door (middle, left, front)")."""
+    place = next((p for p in _layout(asset).parts if p.link == part.link), None)
+    if place is None:
+        return False
+    shown = {Side.LEFT: place.side == "left", Side.RIGHT: place.side == "right", Side.TOP: place.vertical == "top",
+             Side.BOTTOM: place.vertical == "bottom", Side.FRONT: place.depth == "front", Side.BACK: place.depth == "back"}
+    if all(shown.get(side, False) for side, _ in mention.sides):
+        return True
+    if mention.head not in GENERIC_PART_NOUNS:
+        return False
+    others = [p for p in _layout(asset).parts if p.link != part.link]  # "the upper half of the laptop": above its (fixed) base
+    return bool(others) and all(side in _RANKS and all(_RANKS[side](place) > _RANKS[side](o) for o in others) for side, _ in mention.sides)
 
 
 def _beyond_others(part: Part, mention: Mention, obj: ObjectGeometry, parts: list[Part]) -> bool:

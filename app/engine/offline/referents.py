@@ -14,7 +14,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.objects import carrier_of
-from app.engine.lexicon.words import Side
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import (
@@ -102,6 +102,8 @@ class Referents:
         if kind is None:
             candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
             how: How = "name" if candidates else "none"
+            if not candidates and mention.head in GENERIC_PART_NOUNS and (mention.sides or mention.size or mention.relation is not None):
+                candidates, how = list(self.parts), "kind"  # "the topmost piece", "the left-hand section": any movable part, placed
         else:
             candidates, how = by_kind(self.parts, kind, self.obj.up)
             if not candidates:
@@ -115,7 +117,7 @@ class Referents:
         owners = list(self.ground(mention.owner).parts) if mention.owner is not None and not mention.owner.pronoun else (
             list(self.last) if mention.owner is not None else [])
         said = mention.words.split()
-        refusal = lone_side_refusal(mention, kind, candidates, said, self.obj, self.parts, self.asset.name)
+        refusal = lone_side_refusal(mention, kind, candidates, said, self.obj, self.parts, self.asset)
         if refusal is not None:
             raise self.refuse(refusal, candidates)
         if not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
@@ -218,10 +220,10 @@ class Referents:
         return list(found.parts), list(found.notes)
 
     def _named_before(self, mention: Mention) -> tuple[list[Part], list[str]] | None:
-        """"that rack" / "this door" / "the same drawer" with no qualifier of its own: the one part an earlier mention of
-        that kind named with qualifiers ("baste the chicken on the middle rack, pull that rack out")."""
+        """"that rack", "the same drawer", "the rack" with no qualifier of its own: the one part an earlier mention of that kind named
+        with qualifiers ("baste the chicken on the middle rack, pull that rack out")."""
         words = mention.words.split()
-        pointing = words[:1] in (["that"], ["this"], ["same"]) or words[:2] == ["the", "same"]
+        pointing = words[:1] in (["that"], ["this"], ["same"]) or words[:2] == ["the", "same"] or words == ["the", mention.head]
         if not pointing or _qualified(mention):
             return None
         before = self.said[:self.said.index(mention)] if mention in self.said else []
@@ -269,12 +271,7 @@ class Referents:
         from app.engine.offline.resolve import closed_of, open_of
 
         state = {door.joint: closed_of(door.geometry)}
-        inside = []
-        for part in candidates:
-            target = open_of(part.geometry)
-            if target is not None and door.joint in blocking_joints(self.asset, part.joint, target, state):
-                inside.append(part)
-        return inside
+        return [p for p in candidates if (target := open_of(p.geometry)) is not None and door.joint in blocking_joints(self.asset, p.joint, target, state)]
 
     def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
         """The candidate nearest to the reference part in the named direction ("the key right below it")."""
@@ -292,6 +289,8 @@ class Referents:
             return candidates
         if side == "behind":  # "the rack (right) behind the upper door": the one that door closes in
             return self._behind(reference[0], candidates) if reference[0].kind is not None and info(reference[0].kind).hinged else candidates
+        if side == "in_front":  # "the door in front of the middle rack": the one that closes it in
+            return [p for p in candidates if p.kind is not None and info(p.kind).hinged and self._behind(p, reference)] or candidates
         anchor = position(reference[0], self.obj)
         axis, sign = {"below": (2, -1.0), "above": (2, 1.0), "left": (1, -1.0), "right": (1, 1.0)}.get(side, (None, 0.0))
         scored = []

@@ -45,6 +45,8 @@ class Act:
         return tuple(f for f in (self.means, self.goal, *self.results) if f is not None)
 
 
+_SETTLING = frozenset({"rest", "lie", "sit", "settle", "hang", "lean"})
+"""Verbs that say where a motion ends ("... and rest against the side"), not a step."""
 _LOOKING = frozenset({"see", "look", "peek", "peep", "check", "watch", "view", "inspect", "glance"})
 _USE_VERBS = frozenset({"use", "try", "clean", "fill", "load", "empty", "check"})
 """What a person wants to do with the whole object ("I need to use the loo"): their aim, not a motion."""
@@ -173,6 +175,11 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         verbless = frame.verb is None
         if frame.link is Link.PURPOSE and acts and frame.verb in _LOOKING and not any(m.kind is not None for m in frame.themes):
             continue  # "open the door 45 degrees to see inside": what the person will do then, not a motion
+        if verbless and index and frames[index - 1].link is Link.NEGATED and frame.quantities == Quantities() and frame.themes and any(
+                w.endswith("ing") for w in frame.text.split()) and {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}:
+            continue  # "the bin shouldn't go anywhere - just the wheel turning in place": the step before, said again
+        if acts and frame.conjoined and frame.verb in _SETTLING and frame.quantities.duration_s is None and all(m.is_object for m in frame.themes):
+            continue  # "drop down and rest against the side of the bucket": where the motion before ends, no step of its own
         merged = merged_result(acts[-1], frame) if acts and not acts[-1].condition else None
         if merged is not None:
             acts[-1] = merged  # "drop the handle so it lies flat along the back side", "swing it back so it sits flush"
@@ -211,6 +218,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.verb is None and frame.themes and all(m.is_object for m in frame.themes) and frame.quantities == Quantities() and (
                 frame.particle is None and index + 1 < len(frames) and frames[index + 1].verb is not None and frames[index + 1].themes):
             frame = replace(frame, heading=True)  # "toilet - put the cover up": the object named as a topic, not worked
+        if frame.verb is None and frame.text.split()[0].isdigit() and frame.themes and any(m.plural for m in frame.themes) and (
+                index + 1 < len(frames) and frames[index + 1].verb is not None):
+            frame = replace(frame, heading=True)  # "Two catches on the front of this toolbox. Swing the one on the right ...": there are two
         if _topic(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
         if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):
@@ -333,7 +343,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         for condition in pending_conditions:
             acts.append(Act(goal=condition, condition=True))
         pending_conditions = []
-        parallel = frame.link is Link.PARALLEL or restated or ((together or (frame.simultaneous and verbless)) and any(not a.condition for a in acts))
+        parallel = frame.link is Link.PARALLEL or restated or ((together or (frame.simultaneous and (verbless or frame.conjoined))) and any(
+            not a.condition for a in acts))  # "press the button and drop the door open at the same time"
         restated = False
         if frame.verb in _SELECTING and frame.particle is None and frame.quantities == Quantities() and index + 1 < len(frames) and (
                 frames[index + 1].conjoined and frames[index + 1].themes and all(m.pronoun for m in frames[index + 1].themes)):

@@ -319,7 +319,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in ("do", "does") and nxt < len(tokens) and tokens[nxt].text == "not":
             boundary = (Link.NEGATED, "not", False)
             nxt += 1
-        elif word in ("don't", "dont", "never", "cannot", "can't", "without") and not current:
+        elif word in ("don't", "dont", "never", "cannot", "can't", "without", "not") and not current:  # "... ? Not the drip tray."
             boundary = (Link.NEGATED, word, False)
         if boundary is None:
             current.append(token)

@@ -33,7 +33,7 @@ from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb
-from app.engine.offline.reading.verb_cues import aside, side_of_part, unknown_verb
+from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part, unknown_verb
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
 from app.engine.offline.reading.wishes import wished_state
 
@@ -45,6 +45,8 @@ _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "forme
                            "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before", "how_it_was", "how_it_was_before",
                            "how_they_were", "like_it_was_before", "like_it_was", "like_they_were",
                            "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
+_RETURN_ADJECTIVES = frozenset({"original", "starting", "initial", "previous", "former"})
+_POSSESSIVE_DETS = frozenset({"its", "the", "their", "his", "her", "your", "my", "to", "at", "in", "from"})
 _HAVING = frozenset({"has", "have", "had", "there's", "there_is", "there_are"})
 _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
@@ -334,8 +336,9 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad": the keypad is where
     let = causative or particle == "go"
     if let and verb_index is not None:
+        named = {k for m in objects for k in range(m.start, m.end)}  # "make the lower drawer come out": "lower" names the drawer
         inner = next((i for i in range(verb_index + 1, len(tokens)) if tokens[i].lemma in VERBS and tokens[i].lemma != "let"
-                      and tokens[i].lemma != "go"), None)
+                      and not (tokens[i].lemma == "go" and letting_go(tokens, i)) and i not in named), None)
         if inner is not None:  # "let the lid drop": the lid does what the inner verb says, on its own
             verb = tokens[inner].lemma
             particle, _ = _particle(tokens, inner, objects)
@@ -362,7 +365,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     elif verb_index is None and not objects and tokens and tokens[0].text in _SWITCHED:
         particle = tokens[0].text  # "flick it on and then off again": the verb of the clause before, this particle
     said_return = {t.text for k, t in enumerate(tokens) if t.text in _RETURN_WORDS and not (
-        t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently"))}  # "from where it's resting now"
+        t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently")) and not (
+        t.text in _RETURN_ADJECTIVES and (k == 0 or tokens[k - 1].text not in _POSSESSIVE_DETS))}  # "from where it's resting now", "you're starting"
     back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back" and (
         particle_at < 2 or tokens[particle_at - 2].text not in ("the", "its", "toward", "towards"))  # "set it back down", not "the one at the back down"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
@@ -376,8 +380,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         guessed_verb=guessed, same_direction="in_the_same_direction" in words,
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
-        explicit_return=bool(words & _RETURN_WORDS), correction=correction,
-        brief=verb in _BRIEF_VERBS or bool(words & _BRIEF_WORDS),
+        explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
+        brief=(verb in _BRIEF_VERBS and quantities.direction is None) or bool(words & _BRIEF_WORDS),  # "flick it across to the left": stays
     )
 
 

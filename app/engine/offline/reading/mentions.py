@@ -27,6 +27,7 @@ from app.engine.lexicon.words import (
     OPPOSITE_SIDES,
     ORDINALS,
     OTHER_WORDS,
+    PERSON_NOUNS,
     PERSONS,
     PHRASE_BREAKS,
     PLACE_SIDES,
@@ -42,6 +43,9 @@ from app.engine.offline.reading.tokens import Token, can_be_verb, finite_unknown
 
 __all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
 
+_HEDGE_ADVERBS = frozenset({"roughly", "approximately", "approx", "nearly", "almost", "exactly", "precisely", "circa", "somewhere", "maybe",
+                            "perhaps", "about", "around", "currently", "presently"})
+"""", roughly half a revolution": how sure the amount is, never a part."""
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
@@ -67,7 +71,7 @@ def _nominal(token: Token) -> bool:
     if word in _OBJECT_WORDS:
         return True  # "chest_of_drawers"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
-            and word not in STATIVE_VERBS and word not in PERSONS)
+            and word not in STATIVE_VERBS and word not in PERSONS and word not in _HEDGE_ADVERBS and word not in PERSON_NOUNS)
 
 
 def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = frozenset()) -> list[Mention]:
@@ -273,10 +277,11 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
 _RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
               "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
               "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far",
-              "farther": "far", "further": "far", "behind": "behind"}
+              "farther": "far", "further": "far", "behind": "behind", "in_front_of": "in_front"}
 _VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
 _ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
-_RELATIVE = frozenset({"that's", "that", "which", "which's", "is", "sits", "sitting"})
+_RESTING = frozenset({"sits", "sitting", "rests", "resting", "seated", "perched"})
+_RELATIVE = frozenset({"that's", "that", "which", "which's", "is", *_RESTING})
 
 
 def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
@@ -284,11 +289,14 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
     i = mention.end
     if i + 2 < len(tokens) and tokens[i].text in ("on", "at") and tokens[i + 1].text in DETERMINERS and tokens[i + 2].text in ("end", "side"):
         i += 3  # "the lever on the end closest to me"
+    start = i
     while i < len(tokens) and tokens[i].text in _ADVERBS | _RELATIVE:
         i += 1  # "the rack (that's) nearest the floor"
-    if i >= len(tokens) or tokens[i].text not in _RELATIONS:
+    resting = mention.kind is not None and any(tokens[k].text in _RESTING for k in range(start, i)) and i < len(tokens) and (
+        tokens[i].text in ("on", "atop", "on_top_of"))  # not "the roast sitting on the middle shelf": no part, the shelf is where it is
+    if i >= len(tokens) or (tokens[i].text not in _RELATIONS and not resting):
         return None
-    relation = _RELATIONS[tokens[i].text]
+    relation = "above" if resting else _RELATIONS[tokens[i].text]  # "the little cap sitting on the jar": above the jar
     j = i + 1
     if j < len(tokens) and tokens[j].text in ("of", "to", "from"):
         j += 1

@@ -47,7 +47,7 @@ _DURATION_PHRASES = {"a_couple_of_seconds": 2.0, "a_few_seconds": 3.0, "a_second
 _POSITION_DIRECTIONS = {"to_the_top": "up", "to_the_very_top": "up", "to_the_bottom": "down", "to_the_very_bottom": "down",
                         "as_high_as_it_goes": "up", "as_high_as_possible": "up", "as_low_as_it_goes": "down", "as_low_as_possible": "down"}
 _SIDE_PREPS = frozenset({"toward", "towards", "against", "onto", "over"})
-_SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right",
+_SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right", "left-hand": "left", "right-hand": "right",
                     **dict.fromkeys(("me", "you", "us", "viewer", "camera", "user"), "forward"), "wall": "backward"}
 _VIEWER_WORDS = frozenset({"me", "you", "us", "viewer", "camera", "user"})
 

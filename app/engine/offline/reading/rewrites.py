@@ -25,6 +25,7 @@ from app.engine.lexicon.words import (
     SPATIAL,
     VIEWER_POSSESSIVES,
 )
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
 _JOINT_WORDS = frozenset({"hinge", "hinges", "joint", "pivot", "axle", "slide", "slides", "runners"})
@@ -34,7 +35,8 @@ _AFTER_HAND = frozenset({"to", "and", "then", "on", "with", "while", "side", "so
 _KNOWN_NOUNS = frozenset({"ceiling", "opening", "housing", "casing", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STAYS = frozenset({"stays_where_it_is", "stay_where_it_is", "stays_put", "stay_put", "stays_as_it_is", "stay_as_it_is"})
 _STAYING = frozenset({"stays", "stay", "remains", "remain"})
-_AS_IT_IS = frozenset({"still", "put", "alone", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed"})
+_AS_IT_IS = frozenset({"still", "put", "alone", "untouched", "unchanged", "motionless", "unmoved", "closed", "shut", "in_place", "stationary", "fixed",
+                       "seated", "docked", "parked", "planted", "attached", "mounted"})
 
 
 def _kept_as_is(tokens: list[Token], i: int) -> bool:
@@ -68,7 +70,7 @@ def _as_they_are(tokens: list[Token], i: int) -> bool:
 
 
 @lru_cache(maxsize=4096)
-def _motion_verb(word: str) -> bool:
+def motion_verb(word: str) -> bool:
     from lemminflect import getAllLemmas
 
     return word in VERBS or any(lemma in VERBS for lemma in getAllLemmas(word).get("VERB", ()))
@@ -150,13 +152,14 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             skip = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in _CLAUSE_BREAKS), len(tokens)) - i - 1
         if token.text in ("untouched", "unmoved", "unchanged") and (i + 1 == len(tokens) or tokens[i + 1].is_punct):
             token = replace(token, text="stays_put", lemma="stays_put")  # "lid and clasps untouched"
-        if token.text in _STAYS and out and out[-1].text in ("and", "then", ",") and any(_motion_verb(t.text) for t in out[-8:]):
+        if token.text in _STAYS and out and out[-1].text in ("and", "then", ",") and any(motion_verb(t.text) for t in out[-8:]):
             out += [replace(token, text="stays", lemma="stay"), replace(token, text="there", lemma="there")]
             continue  # "the drawer comes out 20 cm and stays put for 1.5 s": no subject of its own, so it holds what just moved
         if token.text in _STAYS:  # "the lid stays where it is": the subject is left untouched
             start = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS), default=0)
             wider = max((k + 1 for k, t in enumerate(out) if t.text in _CLAUSE_BREAKS and t.text != "and"), default=0)
-            if not any(t.lemma in VERBS for t in out[wider:]):
+            if not any(t.lemma in VERBS and t.text not in SPATIAL and kind_of_word(t.text) is None for t in out[wider:]):
+                # "lid and left latch stay put": "left" is a side, "latch" a part
                 start = wider  # "lid and clasps untouched": both
             out.insert(start, replace(token, text="without", lemma="without"))
             continue
@@ -180,6 +183,8 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
     return out
 
 _SIDES = frozenset({"left", "right", "left-hand", "right-hand"})
+_DISTANCE_WORDS = frozenset({"cm", "mm", "m", "metre", "meter", "metres", "meters", "inch", "inches", "foot", "feet", "bit", "little", "slightly", "way", "over",
+                             "move", "slide", "push", "shift", "nudge", "roll", "drag", "scoot"})
 
 
 def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
@@ -233,7 +238,7 @@ _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", 
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
 _ARRANGED = frozenset({"above", "below", "over", "under", "beneath", "behind", "beside", "atop", "next_to", "on_top_of", "alongside"})
 """Relations of "one ... the other" that say how parts are arranged ("one after the other" is an order, not one of them)."""
-_VIEWERS = frozenset({"viewer", "camera", "audience", "observer", "onlooker", "spectator"})
+_VIEWERS = frozenset({"viewer", "camera", "audience", "observer", "onlooker", "spectator", "operator", "user", "person", "robot"})
 _SITTING = frozenset({"sits", "sitting", "lies", "located", "placed", "positioned"})
 _WHERE = ("at", "on", "in", "near")
 
@@ -241,17 +246,18 @@ _WHERE = ("at", "on", "in", "near")
 def _placed_relative(tokens: list[Token], i: int) -> int:
     """How many words at ``i`` say "(that / which) sits / is" between a noun and where it is ("at the upper right"), or 0."""
     words = [t.text for t in tokens[i:i + 3]]
-    if words[:1] in (["that"], ["which"]) and len(words) == 3 and words[1] in {*_SITTING, "is"} and words[2] in _WHERE:
-        count = 2
-    elif len(words) > 1 and words[0] in _SITTING and words[1] in _WHERE:
-        count = 1
+    if (words[:1] in (["that"], ["which"]) and len(words) == 3 and words[1] in {*_SITTING, "is", "sits"} and words[2] in _WHERE) or (
+            words[:1] == ["is"] and len(words) == 3 and words[1] in _SITTING and words[2] in _WHERE):
+        count = 2  # "the key (that) sits at ...", "whatever piece is sitting on the very top"
+    elif len(words) > 1 and (words[0] in _SITTING or words[0] in ("that's", "which's")) and words[1] in _WHERE:
+        count = 1  # "the door (that's) on the left"
     else:
         return 0
     if i == 0 or not tokens[i - 1].text.isalpha() or tokens[i - 1].text in ("it", "they", "and", "then"):
         return 0
     start = max((k + 1 for k in range(i) if tokens[k].is_punct), default=0)
     # "tap the key that sits ...", not "the drawer sits on the left; ...": a verb before makes the noun its object
-    return count if any(_motion_verb(t.text) for t in tokens[start:i - 1]) else 0
+    return count if any(motion_verb(t.text) for t in tokens[start:i - 1]) else 0
 
 
 def same_words(tokens: list[Token]) -> list[Token]:
@@ -265,8 +271,9 @@ def same_words(tokens: list[Token]) -> list[Token]:
             continue
         before = tokens[i - 1].text if i else ""
         after = tokens[i + 1].text if i + 1 < len(tokens) else ""
-        if t.text == "on" and after in VIEWER_POSSESSIVES and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES:
-            t = replace(t, text="to", lemma="to")  # "25 cm on my right side": to my right
+        if t.text == "on" and after in VIEWER_POSSESSIVES and i + 2 < len(tokens) and tokens[i + 2].text in _SIDES and (
+                any(w.number is not None or w.text in _DISTANCE_WORDS for w in tokens[max(i - 3, 0):i])):
+            t = replace(t, text="to", lemma="to")  # "25 cm on my right side": to my right (not "the door on my right")
         elif (t.text in VIEWER_POSSESSIVES and after in _SIDES) or (t.text == "its" and before == "to" and after in _LIMITS):
             t = replace(t, text="the", lemma="the")
         elif t.text in ("whichever", "whatever") and after.isalpha():

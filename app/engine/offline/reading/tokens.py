@@ -18,9 +18,11 @@ from functools import lru_cache
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
 from app.engine.offline.reading.everyday import everyday_words
+from app.engine.offline.reading.framing import drop_framing
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_forms import known_forms
 
 __all__ = ["Token", "can_be_verb", "finite_unknown_verb", "inflected_verb", "lemma_of", "tokenize", "verb_ing", "verb_only"]
 
@@ -45,7 +47,7 @@ _ARROW_STEP_WORDS = frozenset({"up", "down", "open", "shut", "closed", "out", "b
 _LETTERS = frozenset("abcdefgh")
 """Letters that number steps: "a) close the lid b) ..."."""
 _ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
-""""i.e." / "e.g.": same length, read as a comma (offsets stay put)."""
+""""e.g.": same length, read as a comma; "i.e.": "ie", a restatement dropped by :mod:`.framing` (offsets stay put)."""
 _BULLET = re.compile(r"(?m)^([ \t]*)[-*•](?=[ \t])")
 """A list item's bullet at the start of a line ("- top drawer out 40 cm"): the end of the item before (same length)."""
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
@@ -64,7 +66,7 @@ def _unbracket(text: str) -> str:
 
 
 def _raw_tokens(prompt: str) -> list[Token]:
-    lowered = _ABBREVIATIONS.sub(lambda m: "," + " " * (len(m.group(0)) - 1), prompt.lower().replace("’", "'").replace("‘", "'"))
+    lowered = _ABBREVIATIONS.sub(lambda m: ("ie" if m.group(0).startswith("i") else ",").ljust(len(m.group(0))), prompt.lower().replace("’", "'").replace("‘", "'"))
     lowered = _unbracket(lowered)
     lowered = _BULLET.sub(lambda m: m.group(1) + ".", lowered)
     text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
@@ -346,7 +348,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = facing(drop_asides(corrections(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))
+    tokens = facing(drop_asides(corrections(drop_framing(known_forms(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

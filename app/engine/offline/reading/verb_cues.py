@@ -70,3 +70,8 @@ def intransitive(tokens: list[Token], verb_index: int | None) -> bool:
         return False
     token = tokens[verb_index]
     return token.text != token.lemma or tokens[verb_index - 1].text in ("is", "are", "gets", "get")
+
+
+def letting_go(tokens: list[Token], i: int) -> bool:
+    """At a "go": "let go (of it)", "let the lid go" (the user lets go), not "make the lid go up" (a motion)."""
+    return tokens[i - 1].lemma == "let" or i + 1 == len(tokens) or tokens[i + 1].is_punct or tokens[i + 1].text in ("of", "again", "and", "then")
