@@ -192,8 +192,7 @@ class Builder:
             return
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
-            self.add(replace(act, goal=act.means, means=None))
-            return
+            return self.add(replace(act, goal=act.means, means=None))
         if sense is VerbSense.GRASP:
             try:
                 parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])
