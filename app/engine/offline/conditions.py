@@ -18,8 +18,9 @@ if TYPE_CHECKING:
     from app.engine.offline.reading.frames import Frame
 
 
-_HAVING = frozenset({"has", "have", "carries", "carry", "features", "holds", "bears", "sports", "includes", "houses"})
-"""Verbs of a description that names parts on another ("the door carries a wheel and a dial"): the parts after it."""
+_HAVING = frozenset({"has", "have"})
+"""A description that names parts on another ("the door has two knobs"; "carries", "features" ... are read as "has" by
+:mod:`.reading.word_forms`): the parts after it."""
 _GROUPS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console", "keyboard"})
 """Heads that name a group of parts ("Keypad: press 7 and 3"), not one part."""
 

@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from app.engine.asset.layout import AssetLayout, asset_layout
+from app.engine.asset.layout import AssetLayout, PartPlace, asset_layout
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.words import GENERIC_PART_NOUNS, Side
@@ -58,10 +58,17 @@ def _other_side(part: Part, mention: Mention, obj: ObjectGeometry) -> bool:
     return False
 
 
+_PLACE = {Side.TOP: ("vertical", "top"), Side.BOTTOM: ("vertical", "bottom"), Side.LEFT: ("side", "left"), Side.RIGHT: ("side", "right"),
+          Side.FRONT: ("depth", "front"), Side.BACK: ("depth", "back")}
+"""Where ``artimo inspect`` says a part is that way: the field of its place and the word."""
 _ORDER = {"bottom": 0, "middle": 1, "top": 2, "left": 0, "center": 1, "right": 2, "back": 0, "front": 2}
-_RANKS = {Side.TOP: lambda p: _ORDER[p.vertical], Side.BOTTOM: lambda p: -_ORDER[p.vertical], Side.RIGHT: lambda p: _ORDER[p.side],
-          Side.LEFT: lambda p: -_ORDER[p.side], Side.FRONT: lambda p: _ORDER[p.depth], Side.BACK: lambda p: -_ORDER[p.depth]}
-"""How far each side word's way a part sits, from ``artimo inspect``'s words (a larger value is further)."""
+
+
+def _rank(place: PartPlace, side: Side) -> int:
+    """How far ``side``'s way ``place`` lies, from inspect's words (a larger value is further)."""
+    field, word = _PLACE[side]
+    value = _ORDER[getattr(place, field)]
+    return value if _ORDER[word] == 2 else -value
 
 
 @lru_cache(maxsize=16)
@@ -74,14 +81,12 @@ def _shown_there(part: Part, mention: Mention, asset: ArticulatedAsset) -> bool:
     place = next((p for p in _layout(asset).parts if p.link == part.link), None)
     if place is None:
         return False
-    shown = {Side.LEFT: place.side == "left", Side.RIGHT: place.side == "right", Side.TOP: place.vertical == "top",
-             Side.BOTTOM: place.vertical == "bottom", Side.FRONT: place.depth == "front", Side.BACK: place.depth == "back"}
-    if all(shown.get(side, False) for side, _ in mention.sides):
+    if all(side in _PLACE and getattr(place, _PLACE[side][0]) == _PLACE[side][1] for side, _ in mention.sides):
         return True
     if mention.head not in GENERIC_PART_NOUNS:
         return False
     others = [p for p in _layout(asset).parts if p.link != part.link]  # "the upper half of the laptop": above its (fixed) base
-    return bool(others) and all(side in _RANKS and all(_RANKS[side](place) > _RANKS[side](o) for o in others) for side, _ in mention.sides)
+    return bool(others) and all(side in _PLACE and all(_rank(place, side) > _rank(o, side) for o in others) for side, _ in mention.sides)
 
 
 def _beyond_others(part: Part, mention: Mention, obj: ObjectGeometry, parts: list[Part]) -> bool:

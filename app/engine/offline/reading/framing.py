@@ -139,10 +139,11 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     """At ``i``: the index after the framing words there (``out`` may lose a comma before them), or None."""
     t = tokens[i]
     after = [w.text for w in tokens[i + 1:i + 5]]
-    skip = _viewpoint(tokens, i) or _simile(tokens, i) or _bound_only(tokens, i) or _free_sense(tokens, i)
+    view = _viewpoint(tokens, i)
+    skip = view or _simile(tokens, i) or _bound_only(tokens, i) or _free_sense(tokens, i)
     if skip:
         since = next((k + 1 for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end), 0)
-        if _viewpoint(tokens, i) and since < len(out) and {w.text for w in out[since:]} <= _SIDE_WORDS:
+        if view and since < len(out) and {w.text for w in out[since:]} <= _SIDE_WORDS:
             del out[since:]  # "Left as you face the cabinet.", "Left and right as seen from the front.": how sides are meant
         if out and out[-1].text in (",", "-") and not (i + skip < len(tokens) and tokens[i + skip].is_sentence_end):
             out.pop()

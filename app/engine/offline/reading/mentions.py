@@ -145,8 +145,9 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             i += found[1]
             continue
         if token.number is not None or word in ("open", "closed", "shut", "opened"):
-            pass  # "all four wheels", "the closed pedal bin": a count or a state, the noun follows
-        elif word in DETERMINERS:
+            i += 1  # "all four wheels", "the closed pedal bin": a count or a state, the noun follows
+            continue
+        if word in DETERMINERS:
             determiner = True
             possessive = possessive or word in ("its", "their")
         elif word == "both" and (i + 1 == len(tokens) or tokens[i + 1].text in ("back", "in", "out", "up", "down", "shut", "closed", "open", ",", ".", "together")):

@@ -179,7 +179,7 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if (not out or out[-1].is_sentence_end) and (told := _code_heading(tokens, i)):
         out.append(Token("press", "press", t.start, tokens[i + told - 1].end))  # "Enter a code on the keypad: top-left key, then ..."
         return i + told
-    if t.text in ("give", "gives") and any(w.rstrip("s") in ("revolution", "rotation") for w in after + [w.text for w in tokens[i + 5:i + 7]]):
+    if t.text in ("give", "gives") and any(w.text.rstrip("s") in ("revolution", "rotation") for w in tokens[i + 1:i + 7]):
         out.append(replace(t, text="turn", lemma="turn"))  # "give the turntable one complete revolution": turn it one revolution
         return i + 1
     if t.text in ("on", "at", "to") and after[:1] == ["the"] and len(after) >= 4 and after[1] in ("left", "right", "left-hand", "right-hand") and (
