@@ -1,6 +1,7 @@
 """Blind prompt probe: run every prompt of an expectations file through ``artimo animate``, judge it
 mechanically, and report the rate right by prompt type — separating wrong answers that carried a
-warning, wrong refusals, and *silent* wrong answers (exit 0, no warning).
+warning, wrong refusals, and *silent* wrong answers (exit 0, no warning). "(warned)" counts right answers
+that carried a warning anyway: the price of the warnings, so that warning on everything cannot pass for honesty.
 
 Uses the probe tools of ``../shared/tools/probe`` (``run.py`` runs each prompt as a user would, one
 ``artimo animate`` process per prompt; ``judge.py`` checks each trajectory against its expectation)::
@@ -46,17 +47,23 @@ def _warnings(run_dir: Path) -> list[str]:
     return [str(w) for w in data.get("warnings", [])]
 
 
+def _total(counts: Counter[str]) -> int:
+    return sum(n for outcome, n in counts.items() if outcome != "right_warned")  # a right answer that warned is counted once, as right
+
+
 def summarize(out: Path, expect: Path) -> dict[str, Any]:
     verdicts = json.loads((out / "auto_verdicts.json").read_text())
     rows = {json.loads(line)["id"]: json.loads(line) for line in expect.read_text().splitlines() if line.strip()}
     by_type: dict[str, Counter[str]] = defaultdict(Counter)
-    cases = []
+    cases = []  # outcome per prompt; "right_warned" counts right answers that still carried a warning (false alarms)
     for verdict in verdicts:
         expected = rows[verdict["id"]]["expect"]
         refused = verdict["rc"] != 0
         warnings = _warnings(out / "runs" / verdict["id"]) if not refused else []
         if verdict["verdict"] == "RIGHT":
             outcome = "right"
+            by_type[verdict["type"]]["right_warned"] += bool(warnings)
+            by_type["all"]["right_warned"] += bool(warnings)
         elif refused:
             outcome = "wrong_refusal"
         elif expected.get("refuse"):
@@ -67,8 +74,8 @@ def summarize(out: Path, expect: Path) -> dict[str, Any]:
         by_type["all"][outcome] += 1
         cases.append({"id": verdict["id"], "type": verdict["type"], "outcome": outcome, "prompt": verdict["prompt"], "errors": verdict["errs"],
                       "warnings": warnings})
-    table = {kind: {"n": sum(c.values()), "right": c["right"], "rate": round(c["right"] / max(sum(c.values()), 1), 4),
-                    "wrong_warned": c["wrong_warned"], "wrong_refusal": c["wrong_refusal"],
+    table = {kind: {"n": _total(c), "right": c["right"], "rate": round(c["right"] / max(_total(c), 1), 4),
+                    "right_warned": c["right_warned"], "wrong_warned": c["wrong_warned"], "wrong_refusal": c["wrong_refusal"],
                     "wrong_silent": c["wrong_silent"] + c["wrong_not_refused"]} for kind, c in sorted(by_type.items())}
     return {"expect": str(expect), "types": table, "cases": cases}
 
@@ -136,9 +143,9 @@ def main(argv: list[str] | None = None) -> int:
         return 2
     summary = summarize(args.out, args.expect)
     (args.out / "summary.json").write_text(json.dumps(summary, indent=1))
-    lines = [f"{'type':14s} {'n':>4s} {'right':>6s} {'rate':>6s} {'warned':>7s} {'refused':>8s} {'silent':>7s}"]
+    lines = [f"{'type':14s} {'n':>4s} {'right':>6s} {'rate':>6s} {'(warned)':>9s} {'warned':>7s} {'refused':>8s} {'silent':>7s}"]
     for kind, row in summary["types"].items():
-        lines.append(f"{kind:14s} {row['n']:4d} {row['right']:6d} {row['rate']:6.1%} {row['wrong_warned']:7d} {row['wrong_refusal']:8d} {row['wrong_silent']:7d}")
+        lines.append(f"{kind:14s} {row['n']:4d} {row['right']:6d} {row['rate']:6.1%} {row['right_warned']:9d} {row['wrong_warned']:7d} {row['wrong_refusal']:8d} {row['wrong_silent']:7d}")
     lines.append(f"details: {args.out / 'summary.json'}, judge output: {args.out / 'judge.txt'}")
     sys.stdout.write("\n".join(lines) + "\n")
     return 0

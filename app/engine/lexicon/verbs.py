@@ -90,7 +90,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("seal", S.CLOSE),
     VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE, down=S.PRESS, closed=S.CLOSE)),
     VerbInfo("fold", S.CLOSE, _FOLDING, motion="hinge"),
-    VerbInfo("swing", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.OPEN, up=S.RAISE, down=S.LOWER, back=S.RETURN), motion="hinge"),
+    VerbInfo("swing", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.OPEN, up=S.RAISE, down=S.LOWER, back=S.RETURN, over=S.TOGGLE),
+             motion="hinge"),
     VerbInfo("flip", S.TOGGLE, _p(open=S.OPEN, up=S.OPEN, back=S.OPEN, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, on=S.SWITCH_ON, off=S.SWITCH_OFF,
                               round=S.YAW, around=S.YAW), motion="hinge"),
     VerbInfo("tilt", S.RAISE, _p(back=S.RECLINE, open=S.OPEN, up=S.RAISE, down=S.LOWER, forward=S.CLOSE), motion="hinge"),
@@ -264,7 +265,7 @@ _VERBS: tuple[VerbInfo, ...] = (
 VERBS: Mapping[str, VerbInfo] = MappingProxyType({v.lemma: v for v in _VERBS})
 
 GENERIC = VerbInfo("generic", S.MOVE, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, up=S.RAISE, down=S.LOWER, back=S.OPEN,
-                                       **{"in": S.PUSH_IN}, on=S.SWITCH_ON, off=S.SWITCH_OFF))
+                                       **{"in": S.PUSH_IN}, on=S.SWITCH_ON, off=S.SWITCH_OFF, over=S.TOGGLE))
 """What an imperative verb we do not know does ("jiggle the lid open"), read from its particle; the
 explanation warns that the verb was guessed."""
 

@@ -112,7 +112,7 @@ LENGTH_UNITS: Mapping[str, float] = MappingProxyType({
 })
 ANGLE_UNITS: Mapping[str, float] = MappingProxyType({"degree": 0.017453292519943295, "deg": 0.017453292519943295, "°": 0.017453292519943295,
                                                       "radian": 1.0, "rad": 1.0})
-TURN_UNITS: Mapping[str, float] = MappingProxyType({"turn": 1.0, "revolution": 1.0, "rotation": 1.0, "spin": 1.0, "twist": 1.0})
+TURN_UNITS: Mapping[str, float] = MappingProxyType({"turn": 1.0, "revolution": 1.0, "rotation": 1.0, "spin": 1.0, "twist": 1.0, "circle": 1.0, "lap": 1.0})
 TIME_UNITS: Mapping[str, float] = MappingProxyType({"s": 1.0, "sec": 1.0, "second": 1.0, "ms": 1e-3, "millisecond": 1e-3, "minute": 60.0, "min": 60.0})
 RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
     # unit phrase -> (quantity, factor to SI)
@@ -177,7 +177,8 @@ MULTIWORD: tuple[str, ...] = (
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
     "a couple of seconds", "a couple of", "a few seconds", "a full second", "a whole second", "a full minute", "a whole minute", "a second and a half", "half a second", "do the same", "the same amount",
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
-    "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like",
+    "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
+    "we'd like", "we want", "we would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
     "like that", "like this", "as wide as", "as high as", "back to the middle", "back to the centre", "back to the center",
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "because of that", "because of this", "as a consequence", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
@@ -244,7 +245,8 @@ WHOLE_WORDS = frozenset({"whole", "entire", "asset", "model", "body"})
 """Words that name the whole object, never the part a verb works on it ("rotate the whole tap asset": not its handle)."""
 ASPECT_VERBS = frozenset({"starts", "start", "started", "begins", "begin", "began", "continues", "continue"})
 """Verbs of starting or going on: the verb after them is the motion ("the plate starts turning / begins to turn")."""
-WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like"})
+WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like", "i'd_love", "i_would_love", "i'd_prefer", "i_would_prefer",
+                    "we'd_like", "we_want", "we_would_like"})
 """What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
 ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
@@ -257,6 +259,13 @@ FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstl
 """Words that may open a clause before its verb."""
 RELEASE_NAME_WORDS = frozenset({"release", "open", "opener", "door", "eject", "unlock", "lid", "pop"})
 """Words in a button's own name that say it releases a door or lid."""
+FUNCTION_NAME_WORDS = frozenset({"start", "power", "on", "off", "stop", "cancel", "timer", "clock", "cook", "defrost", "popcorn", "reheat",
+                                 "mode", "program", "programme", "temperature", "wash", "rinse", "number", "digit", "pin"})
+"""Words in what the user calls a control that give it another job than releasing a door ("the start button")."""
+CLOSED_AGAINST = frozenset({"keyboard", "base", "body", "frame", "deck", "wall", "jamb", "cabinet", "carcass", "housing", "case"})
+"""What a hinged part closes against: "135 degrees from the keyboard" is 135 degrees from closed."""
+FUNCTION_VERBS = frozenset({"start", "begin", "activate", "run", "cook", "heat", "warm", "reheat", "defrost", "brew", "boil", "wash", "toast"})
+"""What an appliance does when worked: "press the button to start it" asks for the press only, not a motion of "it"."""
 BUTTON_RELEASED_OBJECTS = frozenset({"microwave", "kettle", "cooker", "rice"})
 """Kinds of object whose only door or lid a (any) button releases."""
 OPERATED_OBJECTS = frozenset({"tap", "faucet", "valve", "mixer", "switch", "spigot"})

@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING
 from app.engine.contracts.steps import Goal, Why
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.goals import goal_for
 from app.engine.offline.moves import Move
@@ -59,6 +59,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
                 builder.mentioned.add(control.joint)
     if controls and not effects and sense in (VerbSense.PRESS, VerbSense.OPERATE, VerbSense.HOLD, VerbSense.PUSH_IN, VerbSense.TOGGLE):
         for worked in list(controls):
+            if mech.named_for_another_job(worked.words):
+                continue  # "hit the start button": it starts the oven, it releases nothing
             for effect in mech.effects_of(worked.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
                 effects.append(Move(effect, "effect", goal_for(_NOTHING, VerbSense.OPEN, effect, builder.tracker).goal, words=""))
                 notes[effect.joint] = f"the {_kind(worked.part)} ({worked.part.joint}) drives it"
@@ -100,6 +102,9 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         return
     builder.append(act, sense, controls, kept, why=why)
     builder.explanation.because(notes)
+    verb = VERBS.get(act.goal.verb or "")
+    if VerbSense.LOCK in (sense, verb.sense if verb is not None else None) and not controls:
+        _fasten(builder, act, kept)  # "latch the toolbox shut": its verb locks, its result closes
     _brief_fall(builder, act, controls, kept)
     builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or [m.part for m in controls], [m.part for m in controls])
 
@@ -131,8 +136,10 @@ def _joins_unlatch(builder: Builder, act: Act, effects: list[Move]) -> bool:
 def _merge_into_last(builder: Builder, effects: list[Move]) -> None:
     last = builder.steps[-1]
     moves = [builder.joint_move(replace(m, role="effect")) for m in effects]
+    starts = [builder.tracker.value(m.joint) for m in moves]
     builder.steps[-1] = last.model_copy(update={"effects": [*last.effects, *moves]})
     replay(builder)
+    builder.explanation.add_to_last(moves, starts, [m.words for m in effects])  # the understanding shows the door it freed
 
 
 def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Move], implicit: list[Part]) -> list[Move]:
@@ -204,6 +211,18 @@ def _latches(builder: Builder, effects: list[Move]) -> list[Move]:
             out.append(Move(latch, "control", goal_for(_NOTHING, VerbSense.UNLATCH, latch, builder.tracker).goal, words=""))
             builder.mentioned.add(latch.joint)
     return out
+
+
+def _fasten(builder: Builder, act: Act, closed: list[Move]) -> None:
+    """"Latch the toolbox shut": once its lid is closed, the latches that hold it shut are worked too."""
+    for move in closed:
+        latches = mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned)
+        if move.part.kind not in HINGED_KINDS or not latches:
+            continue
+        locking = [Move(latch, "control", goal_for(_NOTHING, VerbSense.LOCK, latch, builder.tracker).goal, words="") for latch in latches]
+        builder.mentioned.update(latch.joint for latch in latches)
+        builder.append(replace(act, means=None, hold_s=0.0, wait_before_s=0.0, parallel=False), VerbSense.LOCK, locking, [], why="latch", parallel=False)
+        builder.explanation.because({latch.joint: f"the {_kind(latch)} ({latch.joint}) holds the {_kind(move.part)} shut" for latch in latches})
 
 
 def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:

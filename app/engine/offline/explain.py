@@ -73,6 +73,11 @@ class Explanation:
             out["then"] = {"self_return": "springs back", "held": "held while its effect lasts"}[move.release]
         return out
 
+    def add_to_last(self, moves: list[JointMove], starts: list[float], words: list[str]) -> None:
+        """Effects merged into the step recorded last ("turn the latch, then open the door": one causal step)."""
+        if self.last is not None:
+            self.last["moves"].extend(self._move(m, m.q, start, said) for m, start, said in zip(moves, starts, words, strict=True))
+
     def because(self, reasons: dict[str, str]) -> None:
         if self.last is None:
             return

@@ -32,6 +32,8 @@ OPEN_CLOSED_MIN_GAP = 0.02
 """Smallest difference of the normalised closedness score that decides open vs closed."""
 SNAP_ANGLE_DEG = 35.0
 DEFAULT_FRONT = np.array([-1.0, 0.0, 0.0])
+WIDE_SWING_RAD = 1.25 * np.pi
+"""A hinge that swings further than this (a bucket's carry handle over 270 degrees) may be highest between its ends."""
 """PartNet-Mobility objects face -X after their root rotation; used only without any cue."""
 
 
@@ -109,6 +111,12 @@ def _local_points(asset: ArticulatedAsset) -> dict[str, FloatArray]:
 def _posed(points: dict[str, FloatArray], poses: dict[str, FloatArray], links: tuple[str, ...] | list[str], frame: int = 0) -> FloatArray:
     chunks = [points[n] @ poses[n][frame, :3, :3].T + poses[n][frame, :3, 3] for n in links if n in points]
     return np.concatenate(chunks) if chunks else np.zeros((0, 3))
+
+
+def _highest(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: dict[str, FloatArray], points: dict[str, FloatArray],
+             moved: FloatArray) -> float:
+    heights = [float(posed[:, 2].mean()) for posed in _moved_at(asset, joint, values, rest, points, moved)]
+    return float(values[int(np.argmax(heights))])
 
 
 def _moved_at(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: dict[str, FloatArray],
@@ -194,6 +202,8 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
             up, down = float(values[int(np.argmax(heights))]), float(values[int(np.argmin(heights))])
             if abs(heights[0] - heights[1]) < 1e-6:
                 up = down = None
+            if spec.type == "revolute" and spec.upper - spec.lower > WIDE_SWING_RAD:
+                up = _highest(asset, joint, np.linspace(spec.lower, spec.upper, 25), rest, points, moved)  # upright, over the top
             press = float(values[int(np.argmin(depth))]) if abs(depth[0] - depth[1]) > 1e-9 else None
             if press is not None and abs(press - spec.rest) < 1e-9 and category is not None and info(category).press == "into_face" and (
                     spec.type == "prismatic"):

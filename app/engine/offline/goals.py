@@ -153,14 +153,16 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     geometry = part.geometry
     spin = sense is VerbSense.SPIN or (geometry.type == "continuous" and sense in (VerbSense.TURN, VerbSense.OPERATE)
                                        and (quantities.omega_radps is not None or quantities.duration_s is not None) and quantities.amount is None)
-    if spin and geometry.type == "continuous":
+    counted = quantities.times > 1 and quantities.duration_s is None and quantities.omega_radps is None  # "spin the dial twice": two turns
+    if spin and geometry.type == "continuous" and not counted:
         return GoalChoice(_spin(quantities, geometry, tracker))
     if quantities.target is not None and any(m.head in (part.joint, part.link) and "_" in m.head for m in frame.themes):
         # "set joint_1 to -1.0 rad": a raw joint value, for users who name joints as the URDF does
         return GoalChoice(Goal(state="value", value=round(quantities.target, 9), measured_from="current"))
     state = state_for(frame, sense, part, tracker)
-    if state == "velocity":  # "work the tray": a spinner set going, at the default speed unless told
+    if state == "velocity" and not counted:  # "work the tray": a spinner set going, at the default speed unless told
         return GoalChoice(_spin(quantities, geometry, tracker))
+    state = "cw" if state == "velocity" else state
     value, unit = _amount(quantities.amount)
     if value is not None and unit == "m" and geometry.type != "prismatic":
         value, unit = None, None
@@ -169,9 +171,10 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     notes: list[str] = []
     if is_screw_cap(part, tracker) and state in ("cw", "ccw") and value is None and geometry.type == "continuous":
         value, unit = DEFAULT_UNSCREW_RAD, "rad"
-    if value is None and quantities.times > 1 and sense in (VerbSense.TURN, VerbSense.SPIN) and geometry.type in ("revolute", "continuous"):
+    if value is None and quantities.times > 1 and sense in (VerbSense.TURN, VerbSense.SPIN, VerbSense.YAW) and geometry.type in ("revolute", "continuous"):
         value, unit = quantities.times * 2 * math.pi, "rad"  # "rotate it twice"
-    if state in ("cw", "ccw") and quantities.sense is None and value is None and geometry.type != "continuous" and sense in _FLIPPABLE:
+    if state in ("cw", "ccw") and quantities.sense is None and (value is None or (unit == "fraction" and value >= 1.0)) and (
+            geometry.type != "continuous" and sense in _FLIPPABLE):  # "turn the handle (as far as it goes)": the way it can turn
         ahead = resolve(Goal(state=state), geometry, tracker.obj, tracker.asset, tracker.value(part.joint)).value
         if ahead is not None and abs(ahead - tracker.value(part.joint)) < LIMIT_EPS:
             state = "ccw" if state == "cw" else "cw"  # it only turns the other way

@@ -17,9 +17,10 @@ from typing import TYPE_CHECKING, Literal
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Goal
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
-from app.engine.lexicon.words import BUTTON_RELEASED_OBJECTS, RELEASE_NAME_WORDS
+from app.engine.lexicon.words import BUTTON_RELEASED_OBJECTS, FUNCTION_NAME_WORDS, RELEASE_NAME_WORDS
 from app.engine.offline.grounding import Part, openable
 from app.engine.offline.naming import link_words
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.tracker import Tracker
 
 if TYPE_CHECKING:
@@ -30,6 +31,15 @@ REACHED = 1e-6
 
 def _named_release(part: Part, asset: ArticulatedAsset) -> bool:
     return bool(link_words(asset, part.link, visuals=False) & RELEASE_NAME_WORDS)
+
+
+def named_for_another_job(words: str) -> bool:
+    """What the user called a control gives it a job other than releasing ("the start button", "the timer knob"); only the
+    words before its noun count ("the button on the microwave" names no job)."""
+    said = words.lower().split()
+    head = next((k for k, word in enumerate(said) if kind_of_word(word) is not None), len(said))
+    name = set(said[:head])
+    return bool(name & FUNCTION_NAME_WORDS) and not name & RELEASE_NAME_WORDS
 
 
 def drives(control: Part, effect: Part, parts: list[Part], tracker: Tracker) -> bool:

@@ -12,14 +12,29 @@ from app.engine.offline.reading.mentions import Mention
 def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...]) -> bool:
     """Whether ``mention`` (which did not ground, raising ``error``) is a stray word among ``mentions``: no kind the
     lexicon knows, nothing qualifying it as a part, not the clause's first word (its verb), and another phrase of the
-    clause names what moves. A single word must be a noun or an adjective ("home", "clear", "total")."""
-    if error.candidates or mention.kind is not None or mention.is_object or mention.pronoun or mention.anaphor or mention.start == 0:
+    clause names what moves. A single word must be a noun or an adjective ("home", "clear", "total"). A landmark right after a
+    part ("the lid on top of | the big round water tank") is a stray whatever its words: a portion of the body that does not move."""
+    if error.candidates or mention.is_object or mention.pronoun or mention.anaphor or mention.start == 0:
+        return False
+    if _landmark(mention, mentions):
+        return True
+    if mention.kind is not None:
         return False
     words = (mention.words or mention.head).split()
     if len(words) == 1 and not _describes(words[0]):
         return False
     qualified = bool(mention.sides or mention.ordinal or mention.size or mention.relation)
     return not qualified and any(other is not mention and not other.is_object for other in mentions)
+
+
+_RELATIONS = frozenset({"of", "on", "on_top_of", "above", "over", "under", "below", "behind", "beside", "next_to", "near", "by", "atop"})
+
+
+def _landmark(mention: Mention, mentions: tuple[Mention, ...]) -> bool:
+    """``mention`` only places the part named just before it ("the lid on top of | the big round water tank"): a portion
+    of the body that does not move, which the part's own words already pick."""
+    before = [m for m in mentions if m is not mention and m.end <= mention.start and mention.start - m.end <= 3]
+    return bool(before) and before[-1].kind is not None and not before[-1].is_object and (before[-1].words.split() or [""])[-1] in _RELATIONS
 
 
 def _describes(word: str) -> bool:

@@ -9,7 +9,7 @@ from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, OPPOSITE_SIDES, PAUSE_NOUNS
+from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, FUNCTION_VERBS, OPPOSITE_SIDES, PAUSE_NOUNS
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.ellipsis import carry
 from app.engine.offline.reading.frames import Frame
@@ -173,8 +173,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if zero is not None and frame.quantities.amount is not None and frame.quantities.amount.reference is None:
             frame, zero = replace(frame, quantities=replace(frame.quantities, amount=replace(frame.quantities.amount, reference=zero))), None
         verbless = frame.verb is None
-        if frame.link is Link.PURPOSE and acts and frame.verb in _LOOKING and not any(m.kind is not None for m in frame.themes):
-            continue  # "open the door 45 degrees to see inside": what the person will do then, not a motion
+        if frame.link is Link.PURPOSE and acts and (frame.guessed_verb or frame.verb) in _LOOKING | FUNCTION_VERBS and not any(m.kind is not None for m in frame.themes) and (
+                acts[-1].goal.verb is not None and bool(acts[-1].goal.themes)):
+            continue  # "open the door 45 degrees to see inside", "push the button to start it": what follows, not a motion
         if verbless and index and frames[index - 1].link is Link.NEGATED and frame.quantities == Quantities() and frame.themes and any(
                 w.endswith("ing") for w in frame.text.split()) and {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}:
             continue  # "the bin shouldn't go anywhere - just the wheel turning in place": the step before, said again

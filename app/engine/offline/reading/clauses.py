@@ -354,9 +354,9 @@ def _measure_at(tokens: list[Token], start: int) -> int | None:
 
 
 def _subject_only(tokens: list[Token]) -> bool:
-    """Only a noun phrase so far ("the door | then unlocks")."""
+    """Only a noun phrase so far ("the door | then unlocks"; not "the one under it, | and after that swing ...")."""
     body = [t for t in tokens if not t.is_punct]
-    return bool(body) and body[0].text in DETERMINERS and not any(verb_at(body, i) for i in range(len(body)))
+    return bool(body) and not tokens[-1].is_punct and body[0].text in DETERMINERS and not any(verb_at(body, i) for i in range(len(body)))
 
 
 def _bare_verb(tokens: list[Token]) -> bool:
@@ -376,13 +376,21 @@ def _condition(tokens: list[Token], i: int) -> bool:
     return False
 
 
+_DOERS = frozenset({"you", "we", "i", "you've", "we've", "i've", "someone", "somebody"})
+
+
+def _someone_does(tokens: tuple[Token, ...]) -> bool:
+    """"(after) you spin the handle", "(once) you've turned it": a person's action, told like a gerund."""
+    return len(tokens) > 1 and tokens[0].text in _DOERS and any(verb_at(list(tokens), k, strict=True) for k in (1, 2) if k < len(tokens))
+
+
 def _order(clauses: list[Clause]) -> list[Clause]:
-    """Mark clauses that run before the clause they follow in the text: "B after A-ing" and
+    """Mark clauses that run before the clause they follow in the text: "B after A-ing", "B once you A" and
     "before B, A" put A first."""
     out: list[Clause] = []
     for clause in clauses:
         first = clause.tokens[0] if clause.tokens else None
-        gerund = first is not None and (_ing(first) or verb_at(list(clause.tokens), 0, strict=True))
+        gerund = first is not None and (_ing(first) or verb_at(list(clause.tokens), 0, strict=True) or _someone_does(clause.tokens))
         previous = clauses[clause.index - 1] if clause.index > 0 else None
         after_gerund = clause.marker in AFTER and gerund and previous is not None and previous.marker not in AFTER
         after_before = clause.index == 1 and previous is not None and previous.marker in BEFORE and previous.link is not Link.CONDITION

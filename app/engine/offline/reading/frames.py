@@ -43,8 +43,7 @@ _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
                            "the_way_it_was_before", "the_way_it_was", "as_it_was_before", "as_it_was", "as_before", "how_it_was", "how_it_was_before",
-                           "how_they_were", "like_it_was_before", "like_it_was", "like_they_were",
-                           "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
+                           "how_they_were", "like_it_was_before", "like_it_was", "like_they_were", "where_it_was", "where_it_began", "where_they_started", "where_they_were", "where_you_started"})
 _RETURN_ADJECTIVES = frozenset({"original", "starting", "initial", "previous", "former"})
 _POSSESSIVE_DETS = frozenset({"its", "the", "their", "his", "her", "your", "my", "to", "at", "in", "from"})
 _HAVING = frozenset({"has", "have", "had", "there's", "there_is", "there_are"})
@@ -52,8 +51,7 @@ _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
 _CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
 _REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
-                              "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around",
-                              "away", "clear", "near"})
+                              "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around", "away", "clear", "near"})
 _REGION_WORDS = frozenset({"top", "bottom", "side", "front", "back", "middle", "edge", "corner", "centre", "center", "rear", "left", "right"})
 _INSTRUMENT_PREPS = INSTRUMENT | frozenset({"by", "on", "holding", "gripping"})
 
@@ -165,11 +163,13 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
             return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
         if word == "back" and i > 0 and tokens[i - 1].text in ("the", "its", "toward", "towards"):
             continue  # "toward the back", "along its back": a place or a way, not the particle
+        if word in ("up", "down") and [t.text for t in tokens[i + 1:i + 3]] == ["and", "over"]:
+            return "over", i + 2  # "swing the handle up and over": over is where it ends ("over the top of ...": the way it goes)
         if word in PARTICLES:
             if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text not in ("to", "in", "down", "up", "out", "into", "on") and tokens[i + 1].text not in DETERMINERS and not tokens[i + 1].is_punct and tokens[i + 1].number is None:
                 continue
-            if word == "in" and i + 1 < len(tokens) and (tokens[i + 1].text in DETERMINERS or tokens[i + 1].number is not None):
-                continue  # "in the top row", "in 2 seconds"
+            if word in ("in", "over") and i + 1 < len(tokens) and (tokens[i + 1].text in DETERMINERS or tokens[i + 1].number is not None):
+                continue  # "in the top row", "in 2 seconds", "over the top of the bucket"
             info = VERBS.get(tokens[verb].lemma)
             adjacent = i == verb + 1 and info is not None and word in info.particles
             if word == "on" and not adjacent and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
@@ -357,8 +357,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         sense, let = VerbSense.RELEASE, True
         themes = [m for m in themes if m.head not in _BODY_PARTS] + _reference_mentions(objects, themes)
     inside = {k for m in objects for k in range(m.start, m.end)}
-    if verb_index is None and any(t.text == "back" and k not in inside and not (k and tokens[k - 1].text in _FURTHER) for k, t in enumerate(tokens)):
-        particle = "back"  # "then 0.3 m back" (not "the back one")
+    if verb_index is None and any(t.text == "back" and k not in inside and not (k and tokens[k - 1].text in _FURTHER | {"the", "its", "their"}) for k, t in enumerate(tokens)):
+        particle = "back"  # "then 0.3 m back" (not "the back one", not "down the back of the bucket")
         after = [tokens[k + 1].text for k, t in enumerate(tokens[:-1]) if t.text == "back"]
         if after and after[0] in ("in", "out", "up", "down"):
             particle, particle_at = after[0], next(k + 1 for k, t in enumerate(tokens) if t.text == "back")  # "then back in": back, and in

@@ -2,7 +2,7 @@
 
 - Where the user stands or looks: "when you stand facing the dishwasher", "as seen when looking at the front", ", my
   left, standing in front of the machine" (left, right and clockwise are always meant as seen facing the front).
-- Comparisons and asides: "like you're starting a batch of toast", "the way you'd hold it to carry it", "I think",
+- Comparisons and asides: "like you're starting a batch of toast", "what I'd love is (for the door to ...)", "I'm interested in (the smaller one)", "the way you'd hold it to carry it", "I think",
   ", ready for carrying", ", it is for the browning level", ", i.e. away from the side where the lid opens".
 - Afterthoughts: "about 20 cm? not all the way", "either direction is fine", "- just that one", "its half open rn",
   "- open a door first if you have to" (the agent opens what blocks the way itself), "Start them together."
@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from app.engine.lexicon.words import PARALLEL, SEQUENCE, SIMULTANEOUS
+from app.engine.lexicon.words import PARALLEL, SEQUENCE, SIMULTANEOUS, WISHES
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -189,6 +189,13 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         return until_break(tokens, i, frozenset({".", ";", "!", "?"}))
     if (not out or out[-1].is_sentence_end) and (told := _resting_part(tokens, i)):
         return i + told  # "The lid is (just) sitting on the jug, so ...": how the scene is, no step
+    if t.text in ("i'm", "we're") and after[:2] in (["interested", "in"], ["talking", "about"], ["thinking", "of"], ["looking", "at"]):
+        if out and out[-1].text in ("and", ","):
+            out[-1] = Token(".", ".", out[-1].start, out[-1].end)  # "... two knobs, and I'm interested in ...": a sentence of its own
+        return i + 3  # "I'm interested in the smaller one, the one higher up": that part is what the next sentence works
+    if t.text == "what" and after[:1] and after[0] in WISHES and after[1:2] == ["is"]:
+        out.append(tokens[i + 1])
+        return i + 3  # "what I'd love is for the door to swing open": I'd love for the door to swing open
     if t.text in ("i", "we") and (not out or out[-1].is_sentence_end or out[-1].text == ",") and after[:1] and after[0] in _HEDGES:
         return i + (2 + (after[1:2] == ["that"]))  # "I think the handle should drop": the handle should drop
     return None

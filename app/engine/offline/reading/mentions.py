@@ -38,7 +38,7 @@ from app.engine.lexicon.words import (
     Side,
 )
 from app.engine.offline.reading.mention import Mention
-from app.engine.offline.reading.part_words import kind_at, kind_of_word, side_run
+from app.engine.offline.reading.part_words import control_name, kind_at, kind_of_word, side_run
 from app.engine.offline.reading.tokens import Token, can_be_verb, finite_unknown_verb, verb_ing, verb_only
 
 __all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
@@ -133,7 +133,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         if (nouns or unknown) and (word in DETERMINERS or word in COLLECTIVE or word in ORDINALS or word in SPATIAL or word in SIZES):
             break  # "open the right door | first": a qualifier after the head is not part of it
         if (token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and word not in SIZES and kind_at(tokens, i) is None
-                and not nouns and not _object_after(tokens, i, begin)):
+                and not nouns and not _object_after(tokens, i, begin) and not (i > begin and control_name(tokens, i))):
             return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
         if token.ident:
             unknown.append(i)
@@ -178,7 +178,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         elif word in ("any", "either", "whichever") and not nouns and not unknown:
             chosen_freely = True  # "press any key in the second row": the user leaves the choice
         elif word in PRONOUNS or (word in ("one", "ones") and (sides or other or ordinal or size or determiner)):
-            pronoun = Mention(head=word, pronoun=word in PRONOUNS, anaphor=word in ("one", "ones"), other=other, sides=tuple(sides),
+            pointed = word == "one" and i == begin + 1 and tokens[begin].text in ("that", "this")  # "give that one half a turn": it
+            pronoun = Mention(head="it" if pointed else word, pronoun=word in PRONOUNS or pointed, anaphor=word in ("one", "ones") and not pointed, other=other, sides=tuple(sides),
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
                               start=begin, end=i + 1, words=_words(tokens, begin, i + 1))
             return pronoun, i + 1
@@ -186,6 +187,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             break  # "the entire 6 cm it can travel": a modal, not the noun "can"
         elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
             nouns.append((i, 1, None, True))
+        elif i > begin and control_name(tokens, i):
+            unknown.append(i)  # "the start button": a word of the control's name
         elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not _continues(tokens, i + 1))):
             break  # a verb ends the phrase ("the lid | drops"); "the door release button" goes on
         elif "-" in word and all(part in SPATIAL or part in ("side", "hand") for part in word.split("-")) and word.split("-")[0] in SPATIAL:
@@ -207,6 +210,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well", "to", "by") or (
             tokens[end].number is not None)
         facing = begin > 1 and tokens[begin - 1].text in ("of", "to", "with", "from") and tokens[begin - 2].text in FACE_RELATIONS
+        if at_end and end == begin + 1 and tokens[begin].text in ("this", "that"):
+            return Mention(head="it", pronoun=True, start=begin, end=end, words=tokens[begin].text), end  # "open this": the object
         if not facing and (other or (determiner and (sides or ordinal or size) and at_end)):
             # "the other", "then the second": an anaphoric head with qualifiers
             return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,

@@ -5,8 +5,8 @@ from __future__ import annotations
 
 from functools import lru_cache
 
-from app.engine.lexicon.kinds import REGISTRY, PartKind
-from app.engine.lexicon.words import SPATIAL, Side
+from app.engine.lexicon.kinds import REGISTRY, PartKind, info
+from app.engine.lexicon.words import DETERMINERS, SPATIAL, Side
 from app.engine.offline.reading.token import Token
 
 
@@ -48,3 +48,10 @@ def side_run(tokens: list[Token], j: int) -> tuple[tuple[tuple[Side, bool], ...]
     if len(sides) < 2:
         return (), j
     return tuple(sides), k + (k < len(tokens) and tokens[k].text in _PLACE_NOUNS)
+
+
+def control_name(tokens: list[Token], i: int) -> bool:
+    """"the start button", "the stop key": a word between a determiner and a control is what the control is for (a word of
+    its name), even one that is elsewhere a verb or a place ("from the start")."""
+    found = kind_at(tokens, i + 1) if i > 0 and tokens[i - 1].text in DETERMINERS and tokens[i].text.isalpha() else None
+    return found is not None and info(found[0]).control

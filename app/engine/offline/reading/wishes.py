@@ -3,6 +3,9 @@ come out 8 inches". The wish words go; what is left names a part and its wanted 
 
 from __future__ import annotations
 
+from dataclasses import replace
+
+from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import DETERMINERS, WISHES
 from app.engine.offline.reading.mentions import kind_of_word
 from app.engine.offline.reading.token import Token
@@ -18,7 +21,7 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
         k += 1  # "but for now I just need its drawer ...", "so I want ..."
     if k < len(tokens) and (tokens[k].text in WISHES or (tokens[k].text in ("need", "needs", "want") and k + 1 < len(tokens)
                                                           and tokens[k + 1].text in ("the", "this", "that", "both", "its", "my"))):
-        return True, tokens[k + 1:]  # "I need ...", "need the whole microwave flipped round"
+        return True, _done_to(tokens[k + 1:])  # "I need ...", "need the whole microwave flipped round"
     if k + 2 < len(tokens) and tokens[k].text in ("i", "we") and tokens[k + 1].text in _WISH_ADVERBS and tokens[k + 2].text in ("need", "want"):
         return True, tokens[k + 3:]
     words = [t.text for t in tokens]
@@ -30,3 +33,12 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
     if len(words) >= 2 and words[-1] in ("needs", "has") and (words[k] in DETERMINERS or kind_of_word(words[-2]) is not None):
         return True, tokens[:-1]  # "drawer needs | to come out 8 inches": the part, then what it should do
     return False, tokens
+
+
+def _done_to(tokens: list[Token]) -> list[Token]:
+    """"the cupboard at the bottom opened": what is wished done, told as a command ("open the cupboard at the bottom")
+    when the done word ends the clause after a longer phrase (a short one, "the door opened", is read as it stands)."""
+    last = tokens[-1] if len(tokens) > 3 and tokens[0].text in DETERMINERS else None
+    if last is None or last.lemma not in VERBS or last.lemma == last.text or not last.text.endswith("ed"):
+        return tokens
+    return [replace(last, text=last.lemma), *tokens[:-1]]

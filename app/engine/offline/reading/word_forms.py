@@ -7,7 +7,10 @@ door carries a wheel and a dial" (has), "make one full revolution" / "give it on
 revolution), "the knob which is low on the front" (the lower knob), "Enter a code on the keypad: top-left key, then ..."
 (press each), "the upper half of the laptop" (the upper part), "the rack in that upper compartment" (the upper
 compartment's rack), "the knob on the left side of the handle" (left of it), "once it is open the left drawer follows"
-(the condition ends after "open").
+(the condition ends after "open"), "put a bowl of soup in the microwave" / "get it out of the oven" (open the microwave /
+the oven: what holds a thing that is no part is opened; the note says so), "the glass plate inside turned once" (the plate
+turned once), "135 degrees from the keyboard" (from closed), "On the keypad hit ..." (On the keypad, hit ...),
+"let some fresh air in" (open it).
 """
 
 from __future__ import annotations
@@ -15,7 +18,8 @@ from __future__ import annotations
 import itertools
 from dataclasses import replace
 
-from app.engine.lexicon.words import OBJECT_NOUNS
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, OBJECT_NOUNS, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
@@ -41,6 +45,10 @@ _COMPARTMENTS = frozenset({"compartment", "cavity", "section", "oven", "chamber"
 _REGION_OF = frozenset({"half", "part", "section", "portion", "piece", "bit", "panel"})
 _SIDE_OF = frozenset({"upper", "lower", "top", "bottom", "left", "right", "left-hand", "right-hand", "front", "back", "rear"})
 _MOMENTS = frozenset({"moment", "instant", "time"})
+_PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "slide", "shove", "stash", "store", "stow"})
+_FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
+_INTO = frozenset({"in", "into", "inside"})
+_OUT_OF = frozenset({"out_of", "from", "out"})
 
 
 def _same_moment(tokens: list[Token], i: int) -> int:
@@ -113,15 +121,17 @@ def _code_heading(tokens: list[Token], i: int) -> int:
     return colon - i + 1 if told and words[0] in _ENTERING else 0
 
 
-def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> list[Token] | None:
-    """At "in" of "the rack in that upper compartment": the tokens for "the upper compartment 's rack", else None."""
-    words = [t.text for t in tokens[i:i + 4]]
-    if len(words) < 4 or words[0] not in ("in", "inside", "of") or words[1] not in ("the", "that", "this") or words[3] not in _COMPARTMENTS:
+def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[Token]] | None:
+    """At "in" of "the rack in that upper compartment" / "out of the upper oven compartment": (tokens read, the tokens for
+    "the upper compartment 's rack"), else None."""
+    words = [t.text for t in tokens[i:i + 5]] + [""]
+    if len(words) < 5 or words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this") or words[3] not in _COMPARTMENTS:
         return None
     if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or len(out) < 2 or out[-2].text != "the":
         return None
+    last = i + 3 + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
     noun = out[-1]
-    return [tokens[i + 2], tokens[i + 3], Token("'s", "'s", tokens[i + 3].end, tokens[i + 3].end), noun]
+    return last + 1 - i, [tokens[i + 2], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), noun]
 
 
 def _of_the_object(tokens: list[Token], j: int) -> int:
@@ -130,6 +140,44 @@ def _of_the_object(tokens: list[Token], j: int) -> int:
     if words[0] != "of" or words[1] not in ("the", "this", "its", "that") or words[2] not in OBJECT_NOUNS:
         return 0
     return 5 if words[3] == "'s" and words[4] in ("front", "face", "side", "body") else 3
+
+
+def _stowed(tokens: list[Token], i: int) -> int:
+    """At a verb of putting in or taking out: the index of the holder's determiner in "put a bowl of soup in | the microwave",
+    "get it out of | the oven" when what is moved is no part (a pronoun only when no part was named before), else 0."""
+    verb = tokens[i].text
+    into = _INTO if verb in _PUTTING else _OUT_OF if verb in _FETCHING else None
+    if into is None or (i and tokens[i - 1].text in ("the", "a", "its")):
+        return 0
+    k = i + 1
+    while k < len(tokens) and k < i + 8 and tokens[k].text not in into and not tokens[k].is_punct:
+        k += 1
+    thing = tokens[i + 1:k]
+    if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
+        return k + 1  # "the plates I need to load into this": open it
+    if not thing or k + 2 >= len(tokens) or tokens[k].is_punct or any(kind_of_word(t.text) is not None or t.text in OBJECT_NOUNS for t in thing):
+        return 0
+    if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
+        return 0  # "... the tray. Get it out of the oven": it is the tray
+    k += tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
+    holder = tokens[k + 1:k + 4]
+    if holder[0].text not in ("the", "this", "that", "its", "my") or not any(t.text in OBJECT_NOUNS or kind_of_word(t.text) is not None for t in holder[1:]):
+        return 0
+    return k + 1
+
+
+def _let_through(tokens: list[Token], i: int) -> int:
+    """The index after "let (some fresh) air in" / "let the steam out" at ``i`` when that is the whole request (something
+    that is no part let through the object, and no motion said with it), else 0."""
+    k = i + 1
+    while k < len(tokens) and k < i + 5 and tokens[k].text not in ("in", "out", "inside", "escape") and not tokens[k].is_punct:
+        k += 1
+    thing = [w.text for w in tokens[i + 1:k]]
+    if not thing or k >= len(tokens) or tokens[k].is_punct or any(w in ("it", "them", "go") or kind_of_word(w) is not None or w in OBJECT_NOUNS for w in thing):
+        return 0
+    if i and tokens[i - 1].text in ("to", "and", "so"):
+        return 0  # "hold the lid up to let the steam out": why, the motion is said
+    return k + 1 if k + 1 == len(tokens) or tokens[k + 1].is_sentence_end else 0  # "let some steam out - crack the lid 3 cm": the how follows
 
 
 def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
@@ -199,14 +247,32 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(replace(t, text="part", lemma="part"))  # "the upper half of the laptop": the upper part
         return i + (1 + whole)
     if (moved := _in_compartment(tokens, i, out)) is not None:
-        out[-1:] = moved  # "the rack (that sits) in that upper compartment": the upper compartment's rack
-        return i + 4
+        out[-1:] = moved[1]  # "the rack (that sits) in that upper compartment": the upper compartment's rack
+        return i + moved[0]
     if t.text in _END_STATES and after[:1] and after[0] in ("the", "its", "a", "an") and _condition_open(out):
         out += [t, Token(",", ",", t.end, t.end)]  # "once it is open the left drawer follows": the condition ends here
         return i + 1
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
         out.append(replace(t, text="spoke", lemma="spoke"))  # "a big three-spoke wheel": a spoke wheel (a handle)
         return i + 1
+    if holder := _stowed(tokens, i):
+        said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
+        out.append(Token("open", "open", t.start, tokens[holder - 1].end, corrected_from=said))  # "put a bowl of soup in the microwave"
+        return holder
+    if t.text in ("inside", "within", "in_there") and out and kind_of_word(out[-1].text) is not None and after[:1] and after[0].endswith("ed") and motion_verb(after[0]):
+        return i + 1  # "the glass plate inside turned once": where the part is, before what it should do
+    if t.text == "from" and out and (out[-1].text in ANGLE_UNITS or out[-1].text[:-1] in ANGLE_UNITS) and after[:1] and after[0] in ("the", "its") and after[1:2] and after[1] in CLOSED_AGAINST:
+        out.append(t)
+        out.append(Token("closed", "closed", tokens[i + 1].start, tokens[i + 2].end, corrected_from=f"the {after[1]}"))
+        return i + 3  # "open to 135 degrees from the keyboard": from closed
+    if t.text in ("on", "at") and (not out or out[-1].is_sentence_end) and after[:1] == ["the"] and len(after) > 2 and kind_of_word(after[1]) is not None and (
+            after[2] in VERBS and after[2] not in SPATIAL):
+        out += [*tokens[i:i + 3], Token(",", ",", tokens[i + 2].end, tokens[i + 2].end)]
+        return i + 3  # "On the keypad hit the top-left button": where, then the command
+    if t.text == "let" and (through := _let_through(tokens, i)):
+        out += [Token("open", "open", t.start, tokens[through - 1].end, corrected_from=" ".join(w.text for w in tokens[i:through])),
+                Token("it", "it", t.start, t.start)]
+        return through  # "let some fresh air in", "let the steam out": open it
     if t.text == "also" and out and not out[-1].is_punct:
         return i + 1  # "open also the small upper door"
     if t.text == "to" and len(after) >= 1 and any(w.text == "make" for w in out[-6:]) and out and out[-1].text.isalpha() and out[-1].text != "make" \
