@@ -103,11 +103,11 @@ def _beyond_others(part: Part, mention: Mention, obj: ObjectGeometry, parts: lis
 
 
 def _same_place(mention: Mention, candidates: list[Part], obj: ObjectGeometry) -> bool:
-    """The side named does not tell the candidates apart ("the left-hand lever" of a toaster whose levers sit at its
-    front and back)."""
+    """No side named tells the candidates apart ("the left-hand lever" of a toaster whose levers sit at its front and
+    back)."""
+    spreads = []
     for side, _ in mention.sides:
         if side in _AXIS_OF:
             values = [float(position(p, obj)[_AXIS_OF[side][0]]) for p in candidates]
-            if max(values) - min(values) < SAME_PLACE * obj.diag:
-                return True
-    return False
+            spreads.append(max(values) - min(values))
+    return bool(spreads) and all(spread < SAME_PLACE * obj.diag for spread in spreads)  # "the upper of the two dials on the right": upper tells

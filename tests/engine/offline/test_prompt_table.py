@@ -886,6 +886,14 @@ ROWS: list[Row] = [
       joints={"joint_2": E(peak="lower")}),
     R("bucket_102352", "Swing the handle over the top of the bucket until it's pointing at the ceiling.", joints={"joint_0": E(end=2.3593)}),
     R("bucket_102352", "lift the handle up", joints={"joint_0": E(end=2.3593)}),
+    # --- round 25 (benchmark/probes/dev_round25_prompts.jsonl: scored first after rounds 23-24's fixes, then these classes fixed) ---
+    R("extra/microwave_7128", "Turn the upper of the two dials on the right side of the microwave a quarter turn clockwise.",
+      joints={"joint_3": E(abs_end=PI / 2), "joint_2": E(still=True)}),
+    R("extra/safe_101623", "There are two dials on the safe door. Rotate the bigger, lower one half a turn clockwise.",
+      joints={"joint_0": E(abs_end=PI), "joint_2": E(still=True)}),
+    R("microwave_7236", "I want to put my leftovers inside to warm them up.", joints={"joint_0": E(end="upper")}),
+    R("extra/microwave_7128", "i need put bowl of soup inside microwave for heating", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("window_103135", "It's stuffy in this room, let some fresh air in please.", joints={"joint_0": E(end="upper")}),
 ]
 
 

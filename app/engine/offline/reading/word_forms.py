@@ -10,7 +10,7 @@ compartment's rack), "the knob on the left side of the handle" (left of it), "on
 (the condition ends after "open"), "put a bowl of soup in the microwave" / "get it out of the oven" (open the microwave /
 the oven: what holds a thing that is no part is opened; the note says so), "the glass plate inside turned once" (the plate
 turned once), "135 degrees from the keyboard" (from closed), "On the keypad hit ..." (On the keypad, hit ...),
-"let some fresh air in" (open it).
+"let some fresh air in" (open it), "the bigger, lower one" (one part, two qualifiers).
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ import itertools
 from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, OBJECT_NOUNS, SPATIAL
+from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
@@ -143,8 +143,9 @@ def _of_the_object(tokens: list[Token], j: int) -> int:
 
 
 def _stowed(tokens: list[Token], i: int) -> int:
-    """At a verb of putting in or taking out: the index of the holder's determiner in "put a bowl of soup in | the microwave",
-    "get it out of | the oven" when what is moved is no part (a pronoun only when no part was named before), else 0."""
+    """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
+    "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part
+    was named before), else 0. The holder follows that index; when none does, the object itself holds it."""
     verb = tokens[i].text
     into = _INTO if verb in _PUTTING else _OUT_OF if verb in _FETCHING else None
     if into is None or (i and tokens[i - 1].text in ("the", "a", "its")):
@@ -154,14 +155,18 @@ def _stowed(tokens: list[Token], i: int) -> int:
         k += 1
     thing = tokens[i + 1:k]
     if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
-        return k + 1  # "the plates I need to load into this": open it
-    if not thing or k + 2 >= len(tokens) or tokens[k].is_punct or any(kind_of_word(t.text) is not None or t.text in OBJECT_NOUNS for t in thing):
+        return k + 2  # "the plates I need to load into this": open it
+    if not thing or k >= len(tokens) or tokens[k].text not in into or any(kind_of_word(t.text) is not None or t.text in OBJECT_NOUNS for t in thing):
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
-    k += tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
-    holder = tokens[k + 1:k + 4]
-    if holder[0].text not in ("the", "this", "that", "its", "my") or not any(t.text in OBJECT_NOUNS or kind_of_word(t.text) is not None for t in holder[1:]):
+    if tokens[k].text in ("inside", "in") and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in ("to", "for", "and", "so")):
+        return k + 1 if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
+    k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
+    holder = [t.text for t in tokens[k + 1:k + 4]]
+    if holder and holder[0] not in ("the", "this", "that", "its", "my"):
+        holder = ["the", *holder]  # "inside microwave"
+    if len(holder) < 2 or not any(w in OBJECT_NOUNS or kind_of_word(w) is not None for w in holder[1:]):
         return 0
     return k + 1
 
@@ -177,7 +182,8 @@ def _let_through(tokens: list[Token], i: int) -> int:
         return 0
     if i and tokens[i - 1].text in ("to", "and", "so"):
         return 0  # "hold the lid up to let the steam out": why, the motion is said
-    return k + 1 if k + 1 == len(tokens) or tokens[k + 1].is_sentence_end else 0  # "let some steam out - crack the lid 3 cm": the how follows
+    end = k + 1 + (k + 1 < len(tokens) and tokens[k + 1].text in ("please", "pls", "plz"))  # "let some fresh air in please"
+    return end if end == len(tokens) or tokens[end].is_sentence_end else 0  # "let some steam out - crack the lid 3 cm": the how follows
 
 
 def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
@@ -258,6 +264,8 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if holder := _stowed(tokens, i):
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
         out.append(Token("open", "open", t.start, tokens[holder - 1].end, corrected_from=said))  # "put a bowl of soup in the microwave"
+        if holder == len(tokens) or tokens[holder].is_punct or tokens[holder].text in ("to", "for", "and", "so"):
+            out.append(Token("it", "it", t.start, t.start))  # "put my leftovers inside": the object holds them
         return holder
     if t.text in ("inside", "within", "in_there") and out and kind_of_word(out[-1].text) is not None and after[:1] and after[0].endswith("ed") and motion_verb(after[0]):
         return i + 1  # "the glass plate inside turned once": where the part is, before what it should do
@@ -273,6 +281,9 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out += [Token("open", "open", t.start, tokens[through - 1].end, corrected_from=" ".join(w.text for w in tokens[i:through])),
                 Token("it", "it", t.start, t.start)]
         return through  # "let some fresh air in", "let the steam out": open it
+    if t.text == "," and out and (out[-1].text in SIZES or out[-1].text in SPATIAL) and after[:1] and (after[0] in SIZES or after[0] in SPATIAL) and (
+            len(after) > 1 and (after[1] == "one" or kind_of_word(after[1]) is not None)):
+        return i + 1  # "the bigger, lower one": two qualifiers of one part
     if t.text == "also" and out and not out[-1].is_punct:
         return i + 1  # "open also the small upper door"
     if t.text == "to" and len(after) >= 1 and any(w.text == "make" for w in out[-6:]) and out and out[-1].text.isalpha() and out[-1].text != "make" \
