@@ -216,8 +216,8 @@ def _latches(builder: Builder, effects: list[Move]) -> list[Move]:
 def _fasten(builder: Builder, act: Act, closed: list[Move]) -> None:
     """"Latch the toolbox shut": once its lid is closed, the latches that hold it shut are worked too."""
     for move in closed:
-        latches = mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned)
-        if move.part.kind not in HINGED_KINDS or not latches:
+        latches = [] if move.part.kind not in HINGED_KINDS else mech.latches_of(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned)
+        if not latches:
             continue
         locking = [Move(latch, "control", goal_for(_NOTHING, VerbSense.LOCK, latch, builder.tracker).goal, words="") for latch in latches]
         builder.mentioned.update(latch.joint for latch in latches)

@@ -32,9 +32,9 @@ OPEN_CLOSED_MIN_GAP = 0.02
 """Smallest difference of the normalised closedness score that decides open vs closed."""
 SNAP_ANGLE_DEG = 35.0
 DEFAULT_FRONT = np.array([-1.0, 0.0, 0.0])
+"""PartNet-Mobility objects face -X after their root rotation; used only without any cue."""
 WIDE_SWING_RAD = 1.25 * np.pi
 """A hinge that swings further than this (a bucket's carry handle over 270 degrees) may be highest between its ends."""
-"""PartNet-Mobility objects face -X after their root rotation; used only without any cue."""
 
 
 @dataclass(frozen=True, eq=False)
