@@ -3,7 +3,8 @@
 - Where the user stands or looks: "when you stand facing the dishwasher", "as seen when looking at the front", ", my
   left, standing in front of the machine" (left, right and clockwise are always meant as seen facing the front).
 - Comparisons and asides: "like you're starting a batch of toast", "what I'd love is (for the door to ...)", "I'm
-  interested in (the smaller one)", "the way you'd hold it to carry it", "I think", ", ready for carrying", ", it is for the browning level", ", i.e. away from the side where the lid opens".
+  interested in (the smaller one)", "the way you'd hold it to carry it", "I think", ", ready for carrying", ", it is for
+  the browning level", ", i.e. away from the side where the lid opens".
 - Afterthoughts: "about 20 cm? not all the way", "either direction is fine", "- just that one", "its half open rn",
   "- open a door first if you have to" (the agent opens what blocks the way itself), "Start them together."
 - Who acts and what is only carried or resting: "one gripper ... the other arm", "The lid is sitting on the jug, so it
