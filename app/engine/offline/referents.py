@@ -102,7 +102,9 @@ class Referents:
         if kind is None:
             candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
             how: How = "name" if candidates else "none"
-            if not candidates and mention.head in GENERIC_PART_NOUNS and (mention.sides or mention.size or mention.relation is not None):
+            generic = mention.head in GENERIC_PART_NOUNS or (mention.anaphor and "one" in mention.words.split() and any(
+                m.head in GENERIC_PART_NOUNS and m.plural for m in self.said))  # "of the two pieces on top, the upper one"
+            if not candidates and generic and (mention.sides or mention.size or mention.relation is not None):
                 candidates, how = list(self.parts), "kind"  # "the topmost piece", "the left-hand section": any movable part, placed
         else:
             candidates, how = by_kind(self.parts, kind, self.obj.up)

@@ -894,6 +894,13 @@ ROWS: list[Row] = [
     R("microwave_7236", "I want to put my leftovers inside to warm them up.", joints={"joint_0": E(end="upper")}),
     R("extra/microwave_7128", "i need put bowl of soup inside microwave for heating", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
     R("window_103135", "It's stuffy in this room, let some fresh air in please.", joints={"joint_0": E(end="upper")}),
+    # --- round 26 (benchmark/probes/dev_round26_prompts.jsonl: first run 77 of 81 before these) ---
+    R("microwave_7236", "Pop the microwave door open, I need to put a plate in.", joints={"joint_0": E(end="upper")}),
+    R("microwave_7119", "put a plate inside", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("coffee_machine_103030", "Of the two pieces stacked on top of the base, lift off the upper one.",
+      joints={"joint_2": E(end="upper"), "joint_1": E(still=True), "joint_0": E(still=True)}),
+    R("box_102456", "opne the box lid all teh way back", joints={"joint_0": E(end="upper")}),
+    R("laptop_10101", "tilt the screen all the way back", joints={"joint_1": E(end="upper")}),
 ]
 
 

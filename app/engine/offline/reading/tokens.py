@@ -238,8 +238,9 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
             n = len(phrase)
             if tuple(t.text for t in tokens[i:i + n]) == phrase:
                 joined = "_".join(phrase)
+                typed = " ".join(t.corrected_from or t.text for t in tokens[i:i + n])  # "all teh way", not just "teh"
                 out.append(Token(joined, joined, tokens[i].start, tokens[i + n - 1].end,
-                                 corrected_from=next((t.corrected_from for t in tokens[i:i + n] if t.corrected_from), None)))
+                                 corrected_from=typed if any(t.corrected_from for t in tokens[i:i + n]) else None))
                 i += n
                 break
         else:

@@ -49,6 +49,8 @@ _PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "
 _FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
 _INTO = frozenset({"in", "into", "inside"})
 _OUT_OF = frozenset({"out_of", "from", "out"})
+_BROUGHT = frozenset({"a", "an", "some", "my", "our"})
+"""Before what is put in or taken out: a thing of the user's, not a part of the object ("the tray" may be a part)."""
 
 
 def _same_moment(tokens: list[Token], i: int) -> int:
@@ -156,7 +158,9 @@ def _stowed(tokens: list[Token], i: int) -> int:
     thing = tokens[i + 1:k]
     if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
         return k + 2  # "the plates I need to load into this": open it
-    if not thing or k >= len(tokens) or tokens[k].text not in into or any(kind_of_word(t.text) is not None or t.text in OBJECT_NOUNS for t in thing):
+    brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
+    if not thing or k >= len(tokens) or tokens[k].text not in into or any(
+            (kind_of_word(t.text) is not None and not brought) or t.text in OBJECT_NOUNS for t in thing):
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
