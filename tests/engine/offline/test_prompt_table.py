@@ -901,6 +901,11 @@ ROWS: list[Row] = [
       joints={"joint_2": E(end="upper"), "joint_1": E(still=True), "joint_0": E(still=True)}),
     R("box_102456", "opne the box lid all teh way back", joints={"joint_0": E(end="upper")}),
     R("laptop_10101", "tilt the screen all the way back", joints={"joint_1": E(end="upper")}),
+    # a key placed relative to another: an intensifier before the relation, "left of", "one" and a row after the landmark
+    R("safe_101564", "Tap the key right above the bottom-right one.", joints={"joint_8": E(moves=True), "joint_9": E(still=True)}),
+    R("safe_101564", "press the button just left of the top-right button", joints={"joint_1": E(moves=True), "joint_2": E(still=True)}),
+    R("safe_101564", "press the key directly under the middle key of the top row", joints={"joint_4": E(moves=True), "joint_1": E(still=True)}),
+    R("safe_101564", "press the key immediately below the 5", joints={"joint_7": E(moves=True), "joint_4": E(still=True)}),
 ]
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.relations import PLACE_PREPS, RELATION_ADVERBS, RELATIONS, RELATIVE, RESTING, VIEWERS
 from app.engine.lexicon.verbs import PARTICLES, VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
@@ -130,8 +131,9 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             nouns, unknown, sides, ordinal, size = [], [], [], None, None
             i += 1
             continue
-        if (nouns or unknown) and (word in DETERMINERS or word in COLLECTIVE or word in ORDINALS or word in SPATIAL or word in SIZES):
-            break  # "open the right door | first": a qualifier after the head is not part of it
+        if (nouns or unknown) and (word in DETERMINERS or word in COLLECTIVE or word in ORDINALS or word in SPATIAL or word in SIZES or (
+                word in RELATION_ADVERBS and i + 1 < len(tokens) and tokens[i + 1].text in RELATIONS)):
+            break  # "open the right door | first": a qualifier after the head is not part of it; "the key | directly under .."
         if (token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and word not in SIZES and kind_at(tokens, i) is None
                 and not nouns and not _object_after(tokens, i, begin) and not (i > begin and control_name(tokens, i))):
             return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
@@ -241,13 +243,9 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                    region=region, words=_words(tokens, begin, end)), end
 
 
-_PLACE_PREPS = frozenset({"on", "off", "onto", "from", "along", "across", "against", "over", "under", "at", "to", "toward", "towards", "into",
-                          "in", "by", "near", "beside", "next_to", "on_top_of"})
-
-
 def _object_after(tokens: list[Token], i: int, begin: int) -> bool:
     """"turn the (side) table around": the object itself, unless a preposition makes it a place ("push it along the table")."""
-    if begin > 0 and tokens[begin - 1].text in _PLACE_PREPS:
+    if begin > 0 and tokens[begin - 1].text in PLACE_PREPS:
         return False
     j = i + 1 if tokens[i].lemma not in _OBJECT_WORDS else i
     return j < len(tokens) and tokens[j].lemma in _OBJECT_WORDS
@@ -280,29 +278,20 @@ def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: lis
     return replace(mention, column=index, end=end, words=_words(tokens, mention.start, end))
 
 
-_RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath": "below", "above": "above", "over": "above",
-              "next_to": "beside", "beside": "beside", "to_the_left": "left", "to_the_right": "right", "left_of": "left", "right_of": "right",
-              "nearest": "near", "closest": "near", "nearer": "near", "closer": "near", "furthest": "far", "farthest": "far",
-              "farther": "far", "further": "far", "behind": "behind", "in_front_of": "in_front"}
-_VIEWER = frozenset({"me", "you", "us", "viewer", "user"})
-_ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
-_RESTING = frozenset({"sits", "sitting", "rests", "resting", "seated", "perched"})
-_RELATIVE = frozenset({"that's", "that", "which", "which's", "is", *_RESTING})
-
-
 def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
     """"the key (right) below it", "the knob to the left of the dial": a part placed relative to another."""
     i = mention.end
     if i + 2 < len(tokens) and tokens[i].text in ("on", "at") and tokens[i + 1].text in DETERMINERS and tokens[i + 2].text in ("end", "side"):
         i += 3  # "the lever on the end closest to me"
     start = i
-    while i < len(tokens) and tokens[i].text in _ADVERBS | _RELATIVE:
+    while i < len(tokens) and tokens[i].text in RELATION_ADVERBS | RELATIVE:
         i += 1  # "the rack (that's) nearest the floor"
-    resting = mention.kind is not None and any(tokens[k].text in _RESTING for k in range(start, i)) and i < len(tokens) and (
+    resting = mention.kind is not None and any(tokens[k].text in RESTING for k in range(start, i)) and i < len(tokens) and (
         tokens[i].text in ("on", "atop", "on_top_of"))  # not "the roast sitting on the middle shelf": no part, the shelf is where it is
-    if i >= len(tokens) or (tokens[i].text not in _RELATIONS and not resting):
+    beside = i + 1 < len(tokens) and tokens[i].text in ("left", "right") and tokens[i + 1].text == "of"  # "(just) left of the 9"
+    if i >= len(tokens) or (tokens[i].text not in RELATIONS and not resting and not beside):
         return None
-    relation = "above" if resting else _RELATIONS[tokens[i].text]  # "the little cap sitting on the jar": above the jar
+    relation = tokens[i].text if beside else "above" if resting else RELATIONS[tokens[i].text]  # "the little cap sitting on the jar": above the jar
     j = i + 1
     if j < len(tokens) and tokens[j].text in ("of", "to", "from"):
         j += 1
@@ -310,7 +299,7 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
     if relation in ("near", "far") and k < len(tokens) and tokens[k].text in PLACE_SIDES:  # "the dial closest to the counter": the bottom one
         side = PLACE_SIDES[tokens[k].text] if relation == "near" else OPPOSITE_SIDES[PLACE_SIDES[tokens[k].text]]
         return replace(mention, sides=(*mention.sides, (side, True)), end=k + 1, words=_words(tokens, mention.start, k + 1))
-    if relation in ("near", "far") and j < len(tokens) and tokens[j].text in _VIEWER:
+    if relation in ("near", "far") and j < len(tokens) and tokens[j].text in VIEWERS:
         viewer = Mention(head="viewer", start=j, end=j + 1, words=tokens[j].text)  # "closest to me": the front; "furthest from me": the back
         return replace(mention, relation=(relation, viewer), end=j + 1, words=_words(tokens, mention.start, j + 1))
     bare_hinge = [t.text for t in tokens[j:j + 2]] in (["the", "hinge"], ["its", "hinge"]) or (tokens[j:j + 1] and tokens[j].text == "hinge")
@@ -331,6 +320,11 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
         reference, end = _phrase(tokens, j, used)
     if reference is None or not (reference.pronoun or reference.kind is not None or reference.anaphor):
         return None
+    if reference.anaphor and reference.kind is None and not reference.pronoun and mention.kind is not None:
+        reference = replace(reference, kind=mention.kind)  # "the key right above the bottom-right one": the bottom-right key
+    if end < len(tokens) and tokens[end].text in ("of", "in") and not reference.pronoun:
+        reference = _trailing(tokens, reference, used, [])  # "under the middle key of the top row"
+        end = max(end, reference.end)
     if relation == "near" and end < len(tokens) and tokens[end].text == "hinge":
         end += 1  # "the knob nearest the door hinge"
     if relation == "near" and any(tokens[k].text == "hinge" for k in range(j, end)):
