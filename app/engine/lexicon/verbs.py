@@ -127,7 +127,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("let", S.RELEASE, _p(go=S.RELEASE, down=S.LOWER, up=S.RAISE, open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT,
                                   back=S.RETURN)),
     VerbInfo("spring", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, up=S.RAISE)),
-    VerbInfo("snap", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, shut=S.CLOSE)),
+    VerbInfo("snap", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, shut=S.CLOSE, over=S.TOGGLE)),
     VerbInfo("bounce", S.RELEASE, _p(back=S.RELEASE)),
     # slide in / out
     VerbInfo("pull", S.PULL_OUT, _PULLING, object_sense=S.MOVE),

@@ -328,6 +328,23 @@ def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeomet
     return out
 
 
+def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray]) -> dict[str, JointGeometry]:
+    """Where a part sits is where it sits with the object shut: a knob on a safe door that rests open is placed with the
+    door closed (the viewer's left knob stays the left one). Only parts carried by another joint that rests away from
+    its closed end change; every other part's closed-state centre is already right."""
+    shut = {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9}
+    if not shut:
+        return joints
+    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
+    out = dict(joints)
+    for name, geometry in joints.items():
+        if any(carrier != name and geometry.child in asset.moving_links(carrier) for carrier in shut):
+            placed = _bounded(_posed(points, poses, geometry.moving_links))
+            if placed.shape[0]:
+                out[name] = replace(geometry, home_centroid=placed.mean(axis=0))
+    return out
+
+
 @lru_cache(maxsize=64)
 def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     points = _local_points(asset)
@@ -335,7 +352,8 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     laid_out = RestPoints.of(asset, {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points})
     low, high = laid_out.box()
     center = (low + high) / 2.0
-    joints = _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints})
+    joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
+                            points)
     front = infer_front(joints, center, asset, points, rest)
     right = np.cross(-front, UP)
     return ObjectGeometry(

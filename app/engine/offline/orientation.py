@@ -15,7 +15,7 @@ import numpy as np
 
 from app.engine.asset.kinematics import link_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.offline.geometry import JointGeometry
+from app.engine.offline.geometry import WIDE_SWING_RAD, JointGeometry
 from app.engine.types import FloatArray
 
 SAMPLES = 721
@@ -89,6 +89,18 @@ def directional_sign(geometry: JointGeometry, direction: FloatArray) -> float:
     """+1 or -1: the joint direction that moves the part's centre along ``direction``."""
     if geometry.type == "prismatic":
         along = float(geometry.axis_world @ direction)
+    elif geometry.span is not None and geometry.span > WIDE_SWING_RAD:
+        # a handle that swings over the top: where it ends, not where it starts to go (hanging down the front,
+        # it first moves forward and up, yet its far end hangs down the back)
+        along = float((_swung(geometry, geometry.upper) - _swung(geometry, geometry.lower)) @ direction)
     else:
         along = float(np.cross(geometry.axis_world, geometry.tip - geometry.pivot_world) @ direction)
     return 1.0 if along >= 0 else -1.0
+
+
+def _swung(geometry: JointGeometry, value: float | None) -> FloatArray:
+    """Where the part's tip is with the joint at ``value`` (a rotation about its axis from rest)."""
+    angle = (value if value is not None else geometry.rest) - geometry.rest
+    axis, arm = geometry.axis_world, geometry.tip - geometry.pivot_world
+    turned = arm * math.cos(angle) + np.cross(axis, arm) * math.sin(angle) + axis * float(axis @ arm) * (1 - math.cos(angle))
+    return geometry.pivot_world + turned

@@ -41,6 +41,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
     if info is None or (info.object_sense is None and frame.sense not in _TRANSLATING and frame.sense is not VerbSense.YAW):
         return False  # ("flip it round": its particle turns the object)
     quantities = frame.quantities
+    if pronoun and frame.let and frame.sense is VerbSense.LOWER:
+        return False  # "the handle is upright. Let it fall toward me": a part let fall, not the object sent that way
     directional = quantities.direction in ("forward", "backward", "left", "right", "sideways") or quantities.axis is not None
     if pronoun and after_part and quantities.amount is not None and quantities.amount.unit == "fraction":
         return False  # "lift it halfway back up": a fraction of a part's range, not of the object's

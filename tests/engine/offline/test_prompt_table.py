@@ -906,6 +906,23 @@ ROWS: list[Row] = [
     R("safe_101564", "press the button just left of the top-right button", joints={"joint_1": E(moves=True), "joint_2": E(still=True)}),
     R("safe_101564", "press the key directly under the middle key of the top row", joints={"joint_4": E(moves=True), "joint_1": E(still=True)}),
     R("safe_101564", "press the key immediately below the 5", joints={"joint_7": E(moves=True), "joint_4": E(still=True)}),
+    # --- round 27 (benchmark/probes/dev_round27_prompts.jsonl: first run 74 of 81 after round 26's fixes) ---
+    R("bucket_100454", "The handle's standing straight up. Let it fall down on the side that's facing me.", joints={"joint_0": E(end="lower")}),
+    R("bucket_100454", "The handle is upright. Let it fall toward me.", joints={"joint_0": E(end="lower")}),
+    R("bucket_102352", "Swing the handle over the top so it ends up hanging down the far side of the bucket, away from me.",
+      joints={"joint_0": E(end="upper")}),
+    R("coffee_machine_103030", "Lift off just the piece right at the very top of the coffee maker and leave everything below it alone.",
+      joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
+    R("safe_101564", "Enter a two-key code on the keypad - top-left key first, then the bottom-right one - and after that pull the safe door open.",
+      joints={"joint_0": E(moves=True), "joint_9": E(moves=True), "joint_13": E(end="upper"), "joint_1": E(still=True)},
+      order=(("joint_0", "joint_9"), ("joint_9", "joint_13"))),
+    R("extra/box_100214", "Of the two latches on the front of the box, flip the right-hand one up so it's closed.",
+      joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
+    R("extra/box_100214", "Can you shut the lid first, and once it's down, snap the left latch over it?",
+      joints={"joint_0": E(end="lower"), "joint_1": E(end="upper"), "joint_2": E(still=True)}, order=(("joint_0", "joint_1"),)),
+    # where a part sits is where it sits with the object shut: the knobs of a safe whose door rests open
+    R("extra/safe_101623", "turn the left knob a quarter turn", joints={"joint_0": E(abs_end=PI / 2), "joint_2": E(still=True)}),
+    R("extra/safe_101623", "turn the right knob a quarter turn", joints={"joint_2": E(abs_end=PI / 2), "joint_0": E(still=True)}),
 ]
 
 

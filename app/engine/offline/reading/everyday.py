@@ -8,7 +8,8 @@ lives in the door" (a sentence of its own: where it is kept)."""
 from __future__ import annotations
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import NUMBER_WORDS, ROTATION_SENSE, TURN_UNITS
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, NUMBER_WORDS, ROTATION_SENSE, TURN_UNITS
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
 _STATE_AFTER_IS = frozenset({"open", "closed", "shut", "stuck", "ajar", "jammed", "still", "already", "halfway", "partly", "wide", "up", "down"})
@@ -31,6 +32,23 @@ _TAP_SIDES = {"hot": "left", "cold": "right", "hottest": "left", "coldest": "rig
 
 
 _POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
+
+
+_SIDE_PREPS = frozenset({"on", "to", "down", "onto", "toward", "towards", "over"})
+_PLACED_AT = frozenset({"at", "on", "in", "inside", "by", "near", "beside", "behind", "in_front_of", "on_top_of"})
+_VIEWERS = frozenset({"me", "us", "you", "viewer", "camera", "user"})
+
+
+def _facing_viewer(tokens: list[Token], i: int) -> int:
+    """The index after "(that's) facing (the) me" / "nearest (to) me" at ``i`` (after "the side"), else 0."""
+    k = i + (i < len(tokens) and tokens[i].text in ("that's", "that", "which", "which's", "is"))
+    k += k < len(tokens) and tokens[k].text == "is"
+    if k >= len(tokens) or tokens[k].text not in ("facing", "nearest", "closest", "near", "nearer", "closer", "toward", "towards"):
+        return 0
+    k += 1
+    while k < len(tokens) and tokens[k].text in ("to", "the"):
+        k += 1
+    return k + 1 if k < len(tokens) and tokens[k].text in _VIEWERS else 0
 
 
 def _state_position(tokens: list[Token], i: int) -> tuple[str, int] | None:
@@ -66,6 +84,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         if t.text == "flush" and before in ("the", "a") and (not after or not after.isalpha() or after in ("then", "and", "once", "twice")):
             out.extend((t, Token("button", "button", t.start, t.end)))  # "press the flush": its flush button
             continue
+        if t.text == "right" and after in _PLACED_AT and (before in GENERIC_PART_NOUNS or kind_of_word(before) is not None):
+            continue  # "the piece right at the very top": where it is, "right" only sharpens it
         if t.text == "just" and after == "enough" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
             if out and out[-1].text == ",":
                 out.pop()  # "open the door ~45 deg, just enough to see inside": the amount said, then why
@@ -123,6 +143,11 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         elif t.text in ("along", "against", "over") and after in ("the", "its") and i + 2 < len(tokens) and tokens[i + 2].text in ("back", "front"):
             t = Token("toward", "toward", t.start, t.end)  # "lies flat along the back side": toward the back
+        elif t.text == "side" and before == "the" and len(out) > 1 and out[-2].text in _SIDE_PREPS and (viewer := _facing_viewer(tokens, i + 1)):
+            del out[-2:]  # "let it fall down on the side that's facing me": toward me
+            out.extend((Token("toward", "toward", t.start, t.end), Token("me", "me", t.start, tokens[viewer - 1].end)))
+            skip = viewer - 1
+            continue
         elif t.text == "left" and before in ("i", "you", "we", "they", "he", "she", "who", "someone", "somebody", "kids", "people"):
             t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
         elif t.text in _TAP_SIDES and before in ("toward", "towards", "to", "max", "full", "fully", "the", "all_the_way"):

@@ -162,7 +162,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text in _STATE_PARTICLES and (own is None or "back" not in own.particles):
             return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
         if word == "back" and i > 0 and (tokens[i - 1].text in ("the", "its", "toward", "towards") or (
-                tokens[i - 1].text == "all_the_way" and own is not None and own.sense in (VerbSense.OPEN, VerbSense.RECLINE))):
+                tokens[i - 1].text == "all_the_way" and own is not None and (own.lemma == "open" or own.sense is VerbSense.RECLINE))):
             continue  # "toward the back", "along its back": a place; "open the lid all the way back": how far it opens
         if word in ("up", "down") and [t.text for t in tokens[i + 1:i + 3]] == ["and", "over"]:
             return "over", i + 2  # "swing the handle up and over": over is where it ends ("over the top of ...": the way it goes)

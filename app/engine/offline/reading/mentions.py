@@ -318,8 +318,8 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
         end = owned + 1
     else:
         reference, end = _phrase(tokens, j, used)
-    if reference is None or not (reference.pronoun or reference.kind is not None or reference.anaphor):
-        return None
+    if reference is None or not (reference.pronoun or reference.kind is not None or reference.anaphor) or (reference.pronoun and tokens[i].text == "over"):
+        return None  # "snap the left latch over it": where it goes, not which latch
     if reference.anaphor and reference.kind is None and not reference.pronoun and mention.kind is not None:
         reference = replace(reference, kind=mention.kind)  # "the key right above the bottom-right one": the bottom-right key
     if end < len(tokens) and tokens[end].text in ("of", "in") and not reference.pronoun:

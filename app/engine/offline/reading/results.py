@@ -18,6 +18,7 @@ if TYPE_CHECKING:
     from app.engine.offline.reading.acts import Act
 
 
+_NEGATIONS = frozenset({"not", "no", "never", "isn't", "aren't", "longer", "without"})
 _CONTRACTED = frozenset({"it's", "they're"})
 """A pronoun and its verb in one word: "until it's properly shut" is about "it" though it reads no theme."""
 
@@ -63,8 +64,9 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
         # "ease it back up until it's sitting at 45 degrees": the angle says where it stops, not the way back
         return replace(act, goal=replace(goal, returning=False, quantities=replace(q, amount=r.amount, target=r.target)))
     ends = {STATES[w] for w in frame.text.split() if STATES.get(w) in ("open", "closed")}
-    if len(ends) == 1 and goal.sense in (VerbSense.RETURN, VerbSense.MOVE):
-        # "swing it back so it sits flush": back to where it shuts
+    said_end = q.amount is None and not _NEGATIONS & set(frame.text.split()) and goal.sense in (VerbSense.OPEN, VerbSense.RAISE, VerbSense.LOWER)
+    if len(ends) == 1 and (goal.sense in (VerbSense.RETURN, VerbSense.MOVE) or said_end):
+        # "swing it back so it sits flush": back to where it shuts; "flip the latch up so it's closed": the end it names
         sense = VerbSense.CLOSE if ends == {"closed"} else VerbSense.OPEN
         return replace(act, goal=replace(goal, sense=sense, particle=None, returning=False))
     return None

@@ -95,7 +95,8 @@ def _raw_tokens(prompt: str) -> list[Token]:
         if depth:
             continue  # "(standard phone layout)": an aside, not part of the request
         if kind == "dash":  # "open both doors — the left to 120 degrees, ...": a pause, like a comma
-            tokens.append(Token(",", ",", start, end))
+            spelled = any(t.text in _SPELLED_OUT for t in tokens[-6:]) and not any(t.text in (":", ",", ".") for t in tokens)
+            tokens.append(Token(":" if spelled else ",", ":" if spelled else ",", start, end))  # "enter a code on the keypad - 7 first, ...": the keys follow
         elif kind == "slash":  # "drawer out 40cm / hold 3s / back in": one step after another
             tokens.append(Token(";", ";", start, end))
         elif kind == "ident":
@@ -227,6 +228,8 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
     return out
 
 
+_SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode"})
+"""Before a first dash: what the steps after it spell out ("enter the code - 7, then 3 - and open the door")."""
 _PHRASES = sorted((tuple(p.split()) for p in MULTIWORD), key=len, reverse=True)
 
 
