@@ -123,7 +123,7 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
 })
 PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
-GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit"})
+GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half"})
 """Nouns that name no kind of part: with a place or a size ("the topmost piece", "the left-hand section") any movable part there."""
 PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator",
                           "thief", "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse",

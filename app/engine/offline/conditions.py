@@ -58,8 +58,8 @@ def condition(builder: Builder, act: Act) -> None:
             raise
         parts, words = each, []  # "There's a big wheel on the door and a smaller dial higher up": both, each named alone
     words_in = set(frame.text.split())
-    if words_in & {"starts", "begins", "started", "already"}:
-        builder.refs.remember(parts, [])  # "the door starts partly open": how the scene begins, not a step
+    if words_in & {"starts", "begins", "started", "already"} or ("left" in words_in and words_in & {"was", "were", "been", "got"}):
+        builder.refs.remember(parts, [])  # "the door starts partly open", "it was left half open": how the scene begins, not a step
         return
     wanted = frame.sense if frame.sense is not None else (
         VerbSense.OPEN if words_in & {"open", "opened"} else VerbSense.CLOSE if words_in & {"closed", "shut"} else None)

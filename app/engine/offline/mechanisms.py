@@ -81,6 +81,9 @@ def latches_of(host: Part, parts: list[Part], tracker: Tracker, excluded: set[st
         return []
     if abs(tracker.value(host.joint) - host.geometry.closed_value) > REACHED:
         return []  # already ajar: nothing holds it
+    stated = tracker.releases.get(host.joint) or tracker.releases.get("*")
+    if stated is not None:
+        return [stated] if stated.joint not in excluded and stated.joint != host.joint else []  # the prompt said what releases it
     asset = tracker.asset
     below = set(asset.descendants(host.link))
     hinged = [p for p in parts if p.kind in HINGED_KINDS]

@@ -28,6 +28,7 @@ from app.engine.offline.reading.acts import build_acts
 from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.tokens import Token, tokenize
+from app.engine.offline.stated import record_release
 from app.engine.offline.tracker import resolve_steps
 
 
@@ -106,6 +107,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
                 builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
                 act = replace(act, goal=act.means, means=None)
+            if record_release(builder, act):
+                continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)
             except GroundingError as exc:

@@ -9,6 +9,7 @@ degrees" mean depends on what happened before.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -20,6 +21,9 @@ from app.engine.offline.geometry import ObjectGeometry, analyse
 from app.engine.offline.intent import BaseGoal, Intent, JointGoal, Return, Step
 from app.engine.offline.resolve import resolve, target_expression
 
+if TYPE_CHECKING:
+    from app.engine.offline.grounding import Part
+
 
 @dataclass
 class Tracker:
@@ -30,6 +34,8 @@ class Tracker:
     """Each joint's value before its last move ("back to where it was")."""
     held: dict[str, str] = field(default_factory=dict)
     """effect joint -> the control joint holding it (a pedal holding a lid)."""
+    releases: dict[str, Part] = field(default_factory=dict)
+    """host joint (or :data:`.stated.ANY_HOST`) -> the control the prompt says releases it (:mod:`.stated`)."""
 
     @classmethod
     def of(cls, asset: ArticulatedAsset) -> Tracker:

@@ -923,6 +923,20 @@ ROWS: list[Row] = [
     # where a part sits is where it sits with the object shut: the knobs of a safe whose door rests open
     R("extra/safe_101623", "turn the left knob a quarter turn", joints={"joint_0": E(abs_end=PI / 2), "joint_2": E(still=True)}),
     R("extra/safe_101623", "turn the right knob a quarter turn", joints={"joint_2": E(abs_end=PI / 2), "joint_0": E(still=True)}),
+    # --- round 28 (benchmark/probes/dev_round28_prompts.jsonl: first run 74 of 81 after rounds 26-27's fixes) ---
+    R("laptop_10101", "fold the upper half down until it lies flat on the lower half", joints={"joint_1": E(end="lower")}),
+    R("coffee_machine_103030", "The lid stays locked until the dial on the base is turned. Unlock it and lift the lid off.",
+      joints={"joint_0": E(moves=True), "joint_2": E(end="upper"), "joint_1": E(still=True)}, order=(("joint_0", "joint_2"),)),
+    R("safe_101593", "Turning the spoked handle on this safe pulls back the locking bolts. Get it open.",
+      joints={"joint_1": E(moves=True), "joint_0": E(end="upper"), "joint_2": E(still=True)}, order=(("joint_1", "joint_0"),)),
+    R("washing_machine_103508", "On the washer's control panel, twist the knob that sits furthest to the left.",
+      joints={"joint_3": E(moves=True), "joint_1": E(still=True), "joint_2": E(still=True)}),
+    R("storage_23472", "This bedside cabinet was left half open. Push the drawer all the way in first, and once it's shut, close the cabinet door underneath it.",
+      joints={"joint_1": E(end="lower"), "joint_0": E(end="lower")}, order=(("joint_1", "joint_0"),)),
+    R("safe_101564", "Punch in two keys on the safe - the top-left one, then the middle key of the bottom row - and then swing the door open.",
+      joints={"joint_0": E(moves=True), "joint_10": E(moves=True), "joint_13": E(end="upper")}, order=(("joint_0", "joint_10"), ("joint_10", "joint_13"))),
+    R("extra/box_100214", "Snap the right-hand clasp on the front of the chest shut, and leave the left one as it is.",
+      joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
 ]
 
 

@@ -35,6 +35,7 @@ _POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut
 
 
 _SIDE_PREPS = frozenset({"on", "to", "down", "onto", "toward", "towards", "over"})
+_SITS = frozenset({"sits", "is", "lies", "sitting", "located"})
 _PLACED_AT = frozenset({"at", "on", "in", "inside", "by", "near", "beside", "behind", "in_front_of", "on_top_of"})
 _VIEWERS = frozenset({"me", "us", "you", "viewer", "camera", "user"})
 
@@ -107,6 +108,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         elif t.text in ("furthest", "farthest", "furthermost") and (extreme := _extreme_side(tokens, i)) is not None:
             side, length = extreme
+            while out and (out[-1].text in ("that's", "which's", "that", "which") or (out[-1].text in _SITS and len(out) > 1 and out[-2].text in ("that", "which"))):
+                out.pop()  # "the knob (that sits) furthest to the left"
             out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
             skip = i + length - 1
             continue

@@ -1,7 +1,5 @@
-"""Stage 3 — frames: one :class:`Frame` per clause — verb sense, theme, instrument, end state,
-amount, manner, order, negation, holds and waits.
-
-A frame says what the clause asks in the lexicon's terms; it does not know the asset. The
+"""Stage 3 — frames: one :class:`Frame` per clause — verb sense, theme, instrument, end state, amount, manner, order,
+negation, holds and waits. A frame says what the clause asks in the lexicon's terms; it does not know the asset. The
 verb's sense may still depend on what it acts on ("push" a button presses it, "push" a
 drawer closes it, "push" the cart moves it): grounding refines it with the theme's kind.
 """
@@ -152,7 +150,8 @@ def _find_verb(tokens: list[Token]) -> int | None:
 
 def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[str | None, int | None]:
     inside = {i for m in mentions for i in range(m.start, m.end)}
-    for i in range(verb + 1, min(len(tokens), verb + 9)):
+    reach = verb + 9 + sum(verb < i < verb + 9 for i in inside)  # a long part name does not use up the words after it
+    for i in range(verb + 1, min(len(tokens), reach)):
         word = tokens[i].text
         if i in inside:
             continue

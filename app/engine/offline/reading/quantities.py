@@ -179,7 +179,8 @@ _BODY_NOUNS = frozenset({*OBJECT_NOUNS, "body", "base", "frame", "case", "shell"
 def _on_the_body(tokens: list[Token], i: int) -> bool:
     """"(flat) on the box", "onto its body", "against the case": what the part closes on."""
     words = [t.text for t in tokens[i:i + 4]]
-    return bool(words) and words[0] in ("on", "onto", "against", "down_on") and any(w in _BODY_NOUNS for w in words[1:])
+    lower_half = bool({"lower", "bottom"} & set(words[1:])) and bool({"half", "part", "section"} & set(words[1:]))  # "on the lower half"
+    return bool(words) and words[0] in ("on", "onto", "against", "down_on") and (any(w in _BODY_NOUNS for w in words[1:]) or lower_half)
 
 
 def _region_noun(tokens: list[Token], i: int) -> bool:

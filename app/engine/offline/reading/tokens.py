@@ -228,7 +228,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
     return out
 
 
-_SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode"})
+_SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode", "keys", "buttons", "digits", "numbers"})
 """Before a first dash: what the steps after it spell out ("enter the code - 7, then 3 - and open the door")."""
 _PHRASES = sorted((tuple(p.split()) for p in MULTIWORD), key=len, reverse=True)
 

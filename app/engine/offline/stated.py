@@ -1,0 +1,60 @@
+"""A mechanism the prompt states instead of asking for a step: "Turning the spoked handle pulls back the locking
+bolts. Get it open." (the handle releases what the bolts hold), "The lid stays locked until the dial on the base is
+turned. Unlock it and lift the lid off." (the dial releases the lid). The control is recorded as what holds its host
+shut (:func:`.mechanisms.latches_of` then works it before the host opens), and the statement adds no step itself."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from app.engine.errors import GroundingError
+from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline.reading.acts import Act
+
+if TYPE_CHECKING:
+    from app.engine.offline.builder import Builder
+    from app.engine.offline.reading.mention import Mention
+
+_WORKING = frozenset({"turning", "twisting", "rotating", "pressing", "pushing", "pulling", "sliding", "flipping", "lifting", "spinning"})
+"""A gerund subject: "Turning the handle pulls back the bolts" says what working the handle does."""
+_FREEING = frozenset({VerbSense.RETURN, VerbSense.RELEASE, VerbSense.UNLATCH, VerbSense.OPEN, VerbSense.PULL_OUT})
+_HELD = frozenset({"locked", "latched", "shut", "closed"})
+_WORKED = frozenset({VerbSense.TURN, VerbSense.PRESS, VerbSense.OPERATE, VerbSense.PULL_OUT, VerbSense.RAISE, VerbSense.TOGGLE, VerbSense.YAW})
+ANY_HOST = "*"
+"""The host key when the statement names no part it releases ("pulls back the locking bolts")."""
+
+
+def _released_by(act: Act) -> tuple[Mention, Mention | None] | None:
+    """(the control, the part it releases or None) when ``act`` states a release, else None."""
+    goal = act.goal
+    words = goal.text.split()
+    if words and words[0] in _WORKING and goal.themes and act.results:
+        result = act.results[0]
+        if result.sense in _FREEING and result.themes and all(m.kind is PartKind.LATCH for m in result.themes):
+            return goal.themes[0], None  # "Turning the handle pulls back the locking bolts"
+    if _HELD & set(words) and {"stays", "stay", "remains", "remain"} & set(words) and goal.themes and act.results:
+        result = act.results[0]
+        if result.themes and result.sense in _WORKED:
+            return result.themes[0], goal.themes[0]  # "The lid stays locked until the dial is turned"
+    return None
+
+
+def record_release(builder: Builder, act: Act) -> bool:
+    """Record the release ``act`` states (True), or leave it to be read as a step (False)."""
+    stated = _released_by(act)
+    if stated is None:
+        return False
+    control_words, host_words = stated
+    try:
+        controls, _ = builder.refs.resolve(control_words)
+        hosts = builder.refs.resolve(host_words)[0] if host_words is not None else []
+    except GroundingError:
+        return False
+    if len(controls) != 1 or len(hosts) > 1:
+        return False
+    host = hosts[0].joint if hosts else ANY_HOST
+    builder.tracker.releases[host] = controls[0]
+    builder.notes.append(f"read '{act.goal.text}' as how {builder.asset.name} works: the {control_words.head} ({controls[0].joint}) "
+                         f"releases {'the ' + host_words.head if host_words is not None else 'what holds it shut'}")
+    return True
