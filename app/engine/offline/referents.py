@@ -302,7 +302,7 @@ class Referents:
             offset = position(part, self.obj) - anchor
             if axis is not None and offset[axis] * sign <= 1e-6:
                 continue
-            across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else 0.0
+            across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else abs(float(offset[2])) if side == "beside" else 0.0
             scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
         scored.sort(key=lambda entry: entry[:3])
         if len(scored) > 1 and scored[0][:2] == scored[1][:2]:

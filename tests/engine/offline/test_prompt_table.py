@@ -937,6 +937,13 @@ ROWS: list[Row] = [
       joints={"joint_0": E(moves=True), "joint_10": E(moves=True), "joint_13": E(end="upper")}, order=(("joint_0", "joint_10"), ("joint_10", "joint_13"))),
     R("extra/box_100214", "Snap the right-hand clasp on the front of the chest shut, and leave the left one as it is.",
       joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),
+    # --- round 29 (benchmark/probes/dev_round29_prompts.jsonl: first run 77 of 81 after rounds 26-28's fixes) ---
+    R("laptop_10248", "For a product shot I need the laptop screen standing at 90 degrees to the keyboard.", joints={"joint_1": E(end=-0.1396)}),
+    R("bucket_100454", "Move the bucket straight up by 30 cm.", joints={"joint_0": E(still=True)}, base=(0.0, 0.0, 0.3)),
+    R("safe_101564", "Tap the top-left key on the keypad, then the key right next to it in the middle of the top row, and once that's done swing the safe door open.",
+      joints={"joint_0": E(moves=True), "joint_1": E(moves=True), "joint_5": E(still=True), "joint_13": E(end="upper")}),
+    R("safe_101564", "press the top-left key, then the key next to it", joints={"joint_0": E(moves=True), "joint_1": E(moves=True), "joint_5": E(still=True)}),
+    R("storage_20453", "I only need the drawer out about halfway, can you slide it out that much?", joints={"joint_0": E(end=0.288)}),
 ]
 
 

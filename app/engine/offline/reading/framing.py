@@ -149,6 +149,10 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         if out and out[-1].text in (",", "-") and not (i + skip < len(tokens) and tokens[i + skip].is_sentence_end):
             out.pop()
         return i + skip
+    if t.text == "for" and (not out or out[-1].is_sentence_end) and after[:1] and after[0] in ("a", "an", "the", "my", "our", "this") and (
+            wish := next((k for k in range(i + 2, min(len(tokens), i + 7)) if tokens[k].text in WISHES), None)) is not None and not any(
+            tokens[k].is_punct or kind_of_word(tokens[k].text) is not None for k in range(i + 1, wish)):
+        return wish  # "For a product shot I need the screen at 90 degrees": what it is for, then the wish
     if t.text == "ready" and out and out[-1].text == "," and after[:1] and after[0] in ("for", "to"):
         out.pop()  # ", ready for carrying": what the pose is for, no step
         return until_break(tokens, i, _SIMILE_ENDS)

@@ -341,8 +341,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
             return replace(mention, ordinal=ORDINALS[tokens[k].text], ordinal_from=SPATIAL[tokens[j].text][0], end=j + 1,
                            words=_words(tokens, mention.start, j + 1))
     related = _related(tokens, mention, used)
-    if related is not None:
-        return related
+    if related is not None:  # "the key right next to it in the middle of the top row": where it is, said too
+        return _trailing(tokens, related, used, earlier) if related.relation is not None and related.relation[1].pronoun else related
     i = mention.end
     if i < len(tokens) and tokens[i].text.endswith("most") and tokens[i].text in SPATIAL and not mention.sides:  # "the knob furthest left"
         return replace(mention, sides=(SPATIAL[tokens[i].text],), end=i + 1, words=_words(tokens, mention.start, i + 1))

@@ -144,6 +144,19 @@ def _of_the_object(tokens: list[Token], j: int) -> int:
     return 5 if words[3] == "'s" and words[4] in ("front", "face", "side", "body") else 3
 
 
+def _amount_said(out: list[Token]) -> list[Token]:
+    """The last amount said before ("halfway", "30 cm"), or nothing."""
+    for k in range(len(out) - 1, -1, -1):
+        if out[k].text in ("halfway", "all_the_way"):
+            return [out[k]]
+        if out[k].number is not None and k + 1 < len(out) and (out[k + 1].text in ANGLE_UNITS or out[k + 1].lemma in _LENGTHS):
+            return out[k:k + 2]
+    return []
+
+
+_LENGTHS = frozenset({"cm", "mm", "m", "centimetre", "centimeter", "millimetre", "millimeter", "metre", "meter", "inch"})
+
+
 def _stowed(tokens: list[Token], i: int) -> int:
     """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
     "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part
@@ -261,6 +274,12 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         return i + moved[0]
     if t.text in _END_STATES and after[:1] and after[0] in ("the", "its", "a", "an") and _condition_open(out):
         out += [t, Token(",", ",", t.end, t.end)]  # "once it is open the left drawer follows": the condition ends here
+        return i + 1
+    if t.text == "that" and after[:1] and after[0] in ("much", "far") and (again := _amount_said(out)):
+        out.extend(replace(w, start=t.start, end=tokens[i + 1].end, corrected_from=None if k else "that " + after[0]) for k, w in enumerate(again))
+        return i + 2  # "I only need the drawer out about halfway, can you slide it out that much?": the amount said before
+    if t.text == "straight_up" and i + 1 < len(tokens) and (after[0] == "by" or tokens[i + 1].number is not None):
+        out.append(Token("up", "up", t.start, t.end))  # "move the bucket straight up by 30 cm": the way it goes, not upright
         return i + 1
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
         out.append(replace(t, text="spoke", lemma="spoke"))  # "a big three-spoke wheel": a spoke wheel (a handle)
