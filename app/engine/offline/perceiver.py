@@ -107,7 +107,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
                 builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
                 act = replace(act, goal=act.means, means=None)
-            if record_release(builder, act):
+            if act is not acts[-1] and record_release(builder, act):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)

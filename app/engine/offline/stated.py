@@ -29,7 +29,7 @@ def _released_by(act: Act) -> tuple[Mention, Mention | None] | None:
     """(the control, the part it releases or None) when ``act`` states a release, else None."""
     goal = act.goal
     words = goal.text.split()
-    if words and words[0] in _WORKING and goal.themes and act.results:
+    if words and words[0] in _WORKING and goal.themes and len(act.results) == 1:  # not "..., so the door swings open": a request
         result = act.results[0]
         if result.sense in _FREEING and result.themes and all(m.kind is PartKind.LATCH for m in result.themes):
             return goal.themes[0], None  # "Turning the handle pulls back the locking bolts"

@@ -153,8 +153,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
     reach = verb + 9 + sum(verb < i < verb + 9 for i in inside)  # a long part name does not use up the words after it
     for i in range(verb + 1, min(len(tokens), reach)):
         word = tokens[i].text
-        if i in inside:
-            continue
+        if i in inside or (i >= verb + 9 and not any(m.end == i for m in mentions)):
+            continue  # past the usual reach only right after a long part name ("snap the clasp on the front of the chest shut")
         if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
             continue  # "the third drawer down": how it is counted, not where it goes
         own = VERBS.get(tokens[verb].lemma)
