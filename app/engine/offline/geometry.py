@@ -332,16 +332,18 @@ def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], po
     """Where a part sits is where it sits with the object shut: a knob on a safe door that rests open is placed with the
     door closed (the viewer's left knob stays the left one). Only parts carried by another joint that rests away from
     its closed end change; every other part's closed-state centre is already right."""
-    shut = {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9}
-    if not shut:
+    shut = {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9 and (
+        g.category is not None and info(g.category).openable)}  # doors, lids, drawers resting open
+    carried = {link for j in shut for link in asset.descendants(joints[j].child) if link != joints[j].child}
+    riders = [name for name, g in joints.items() if g.child in carried]
+    if not riders:
         return joints
     poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
     out = dict(joints)
-    for name, geometry in joints.items():
-        if any(carrier != name and geometry.child in asset.moving_links(carrier) for carrier in shut):
-            placed = _bounded(_posed(points, poses, geometry.moving_links))
-            if placed.shape[0]:
-                out[name] = replace(geometry, home_centroid=placed.mean(axis=0))
+    for name in riders:
+        placed = _bounded(_posed(points, poses, joints[name].moving_links))
+        if placed.shape[0]:
+            out[name] = replace(joints[name], home_centroid=placed.mean(axis=0))
     return out
 
 
