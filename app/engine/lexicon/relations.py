@@ -9,6 +9,9 @@ RELATIONS = {"below": "below", "under": "below", "beneath": "below", "underneath
              "farther": "far", "further": "far", "behind": "behind", "in_front_of": "in_front"}
 """A relation word -> how the part sits relative to the one named after it."""
 VIEWERS = frozenset({"me", "you", "us", "viewer", "user"})
+"""After "closest to" / "furthest from": the viewer, who stands at the front."""
+VIEWER_WORDS = frozenset({*VIEWERS, "camera"})
+"""The viewer in a direction ("toward me", "the side facing the camera")."""
 RELATION_ADVERBS = frozenset({"right", "just", "directly", "immediately", "straight"})
 """Before a relation word, they only sharpen it: "the key directly under the 5"."""
 RESTING = frozenset({"sits", "sitting", "rests", "resting", "seated", "perched"})

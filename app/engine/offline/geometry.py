@@ -330,8 +330,8 @@ def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeomet
 
 def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray]) -> dict[str, JointGeometry]:
     """Where a part sits is where it sits with the object shut: a knob on a safe door that rests open is placed with the
-    door closed (the viewer's left knob stays the left one). Only parts carried by another joint that rests away from
-    its closed end change; every other part's closed-state centre is already right."""
+    door closed (the viewer's left knob stays the left one). Only parts carried by a door, lid or drawer that rests away
+    from its closed end change; every other part's closed-state centre is already right."""
     shut = {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9 and (
         g.category is not None and info(g.category).openable)}  # doors, lids, drawers resting open
     carried = {link for j in shut for link in asset.descendants(joints[j].child) if link != joints[j].child}

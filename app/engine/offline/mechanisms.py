@@ -21,7 +21,7 @@ from app.engine.lexicon.words import BUTTON_RELEASED_OBJECTS, FUNCTION_NAME_WORD
 from app.engine.offline.grounding import Part, openable
 from app.engine.offline.naming import link_words
 from app.engine.offline.reading.part_words import kind_of_word
-from app.engine.offline.tracker import Tracker
+from app.engine.offline.tracker import ANY_HOST, Tracker
 
 if TYPE_CHECKING:
     from app.engine.offline.moves import Move
@@ -81,7 +81,7 @@ def latches_of(host: Part, parts: list[Part], tracker: Tracker, excluded: set[st
         return []
     if abs(tracker.value(host.joint) - host.geometry.closed_value) > REACHED:
         return []  # already ajar: nothing holds it
-    stated = tracker.releases.get(host.joint) or tracker.releases.get("*")
+    stated = tracker.releases.get(host.joint) or tracker.releases.get(ANY_HOST)
     if stated is not None:
         return [stated] if stated.joint not in excluded and stated.joint != host.joint else []  # the prompt said what releases it
     asset = tracker.asset

@@ -11,6 +11,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.reading.acts import Act
+from app.engine.offline.tracker import ANY_HOST
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -21,8 +22,6 @@ _WORKING = frozenset({"turning", "twisting", "rotating", "pressing", "pushing", 
 _FREEING = frozenset({VerbSense.RETURN, VerbSense.RELEASE, VerbSense.UNLATCH, VerbSense.OPEN, VerbSense.PULL_OUT})
 _HELD = frozenset({"locked", "latched", "shut", "closed"})
 _WORKED = frozenset({VerbSense.TURN, VerbSense.PRESS, VerbSense.OPERATE, VerbSense.PULL_OUT, VerbSense.RAISE, VerbSense.TOGGLE, VerbSense.YAW})
-ANY_HOST = "*"
-"""The host key when the statement names no part it releases ("pulls back the locking bolts")."""
 
 
 def _released_by(act: Act) -> tuple[Mention, Mention | None] | None:

@@ -24,6 +24,9 @@ from app.engine.offline.resolve import resolve, target_expression
 if TYPE_CHECKING:
     from app.engine.offline.grounding import Part
 
+ANY_HOST = "*"
+"""The key of :attr:`Tracker.releases` when the prompt names no part the control releases ("pulls back the bolts")."""
+
 
 @dataclass
 class Tracker:
@@ -35,7 +38,7 @@ class Tracker:
     held: dict[str, str] = field(default_factory=dict)
     """effect joint -> the control joint holding it (a pedal holding a lid)."""
     releases: dict[str, Part] = field(default_factory=dict)
-    """host joint (or :data:`.stated.ANY_HOST`) -> the control the prompt says releases it (:mod:`.stated`)."""
+    """host joint (or :data:`ANY_HOST`) -> the control the prompt says releases it (:mod:`.stated`)."""
 
     @classmethod
     def of(cls, asset: ArticulatedAsset) -> Tracker:

@@ -7,6 +7,7 @@ lives in the door" (a sentence of its own: where it is kept)."""
 
 from __future__ import annotations
 
+from app.engine.lexicon.relations import VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import GENERIC_PART_NOUNS, NUMBER_WORDS, ROTATION_SENSE, TURN_UNITS
 from app.engine.offline.reading.part_words import kind_of_word
@@ -34,10 +35,9 @@ _TAP_SIDES = {"hot": "left", "cold": "right", "hottest": "left", "coldest": "rig
 _POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut": "shut", "unlocked": "open", "unlatched": "open", "open": "open"}
 
 
-_SIDE_PREPS = frozenset({"on", "to", "down", "onto", "toward", "towards", "over"})
+_ON_THE_SIDE = frozenset({"on", "to", "down", "onto", "toward", "towards", "over"})
 _SITS = frozenset({"sits", "is", "lies", "sitting", "located"})
 _PLACED_AT = frozenset({"at", "on", "in", "inside", "by", "near", "beside", "behind", "in_front_of", "on_top_of"})
-_VIEWERS = frozenset({"me", "us", "you", "viewer", "camera", "user"})
 
 
 def _facing_viewer(tokens: list[Token], i: int) -> int:
@@ -49,7 +49,7 @@ def _facing_viewer(tokens: list[Token], i: int) -> int:
     k += 1
     while k < len(tokens) and tokens[k].text in ("to", "the"):
         k += 1
-    return k + 1 if k < len(tokens) and tokens[k].text in _VIEWERS else 0
+    return k + 1 if k < len(tokens) and tokens[k].text in VIEWER_WORDS else 0
 
 
 def _state_position(tokens: list[Token], i: int) -> tuple[str, int] | None:
@@ -146,7 +146,7 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         elif t.text in ("along", "against", "over") and after in ("the", "its") and i + 2 < len(tokens) and tokens[i + 2].text in ("back", "front"):
             t = Token("toward", "toward", t.start, t.end)  # "lies flat along the back side": toward the back
-        elif t.text == "side" and before == "the" and len(out) > 1 and out[-2].text in _SIDE_PREPS and (viewer := _facing_viewer(tokens, i + 1)):
+        elif t.text == "side" and before == "the" and len(out) > 1 and out[-2].text in _ON_THE_SIDE and (viewer := _facing_viewer(tokens, i + 1)):
             del out[-2:]  # "let it fall down on the side that's facing me": toward me
             out.extend((Token("toward", "toward", t.start, t.end), Token("me", "me", t.start, tokens[viewer - 1].end)))
             skip = viewer - 1

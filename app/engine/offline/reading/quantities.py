@@ -12,6 +12,7 @@ import math
 from dataclasses import dataclass, field
 from typing import Literal
 
+from app.engine.lexicon.relations import VIEWER_WORDS as _VIEWER_WORDS
 from app.engine.lexicon.words import (
     AMOUNTS,
     ANGLE_UNITS,
@@ -49,7 +50,6 @@ _POSITION_DIRECTIONS = {"to_the_top": "up", "to_the_very_top": "up", "to_the_bot
 _SIDE_PREPS = frozenset({"toward", "towards", "against", "onto", "over"})
 _SIDE_DIRECTIONS = {"front": "forward", "back": "backward", "rear": "backward", "left": "left", "right": "right", "left-hand": "left", "right-hand": "right",
                     **dict.fromkeys(("me", "you", "us", "viewer", "camera", "user"), "forward"), "wall": "backward"}
-_VIEWER_WORDS = frozenset({"me", "you", "us", "viewer", "camera", "user"})
 
 
 def _viewer_after(tokens: list[Token], i: int) -> bool:

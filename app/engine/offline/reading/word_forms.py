@@ -19,7 +19,7 @@ import itertools
 from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, OBJECT_NOUNS, SIZES, SPATIAL
+from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, LENGTH_UNITS, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
@@ -154,7 +154,8 @@ def _amount_said(out: list[Token]) -> list[Token]:
     return []
 
 
-_LENGTHS = frozenset({"cm", "mm", "m", "centimetre", "centimeter", "millimetre", "millimeter", "metre", "meter", "inch"})
+_LENGTHS = frozenset(LENGTH_UNITS) - {"in"}
+"""Units of a distance said before "that far" ("in" after a number is mostly "in 2 seconds")."""
 
 
 def _stowed(tokens: list[Token], i: int) -> int:
