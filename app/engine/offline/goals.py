@@ -189,7 +189,33 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)
+    notes.extend(_either_way(goal, part, tracker))
     return GoalChoice(goal, tuple(notes))
+
+
+EITHER_WAY_RATIO = 0.8
+"""Travel one way from rest at least this fraction of the other: neither end is "the far one"."""
+
+
+def _either_way(goal: Goal, part: Part, tracker: Tracker) -> list[str]:
+    """A part that can go about as far either way from rest, whose shape says neither which end is open nor which
+    is pressed (a mixer tap's lever, a rocker): the end taken is the URDF's sign, a guess worth a warning."""
+    geometry = part.geometry
+    if goal.state not in ("open", "pressed") or geometry.closed_value is not None or geometry.lower is None or geometry.upper is None:
+        return []
+    if geometry.press_value is not None and abs(geometry.press_value - geometry.rest) > LIMIT_EPS:
+        return []
+    if goal.state == "pressed" and part.kind is not None and info(part.kind).press == "down" and geometry.down_value is not None:
+        return []
+    up, down = geometry.upper - geometry.rest, geometry.rest - geometry.lower
+    if min(up, down) < EITHER_WAY_RATIO * max(up, down):
+        return []
+    value = resolve(goal, geometry, tracker.obj, tracker.asset, tracker.value(part.joint)).value
+    if value is None:
+        return []
+    end = "upper" if value > geometry.rest else "lower"
+    return [f"{part.link} ({part.joint}) goes about as far either way from where it rests, and its shape does not say which way "
+            f"to take it: took it toward its {end} limit; say which way (e.g. 'to the left', 'clockwise') to choose"]
 
 
 def _tipping(state: GoalState, direction: str | None, tracker: Tracker) -> tuple[float, float, float] | None:

@@ -13,6 +13,7 @@ from app.engine.offline import mechanisms as mech
 from app.engine.offline.grounding import Part, narrow, openable
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
+from app.engine.offline.tiebreak import tie_break
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -23,8 +24,10 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
     implied = VERBS[frame.verb].implies if frame.verb is not None and frame.verb in VERBS else ()
     if implied:
         found = [p for kind in implied for p in builder.refs.of_kind(kind)]
+        if len(found) > 1:
+            return [_one_implied(builder, frame, found)]
         if found:
-            return found[:1]
+            return found
     if sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF, VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE) or (
             builder.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.MOVE)):
         controls = [p for p in builder.parts if mech.is_control(p)]
@@ -60,3 +63,16 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
         builder.notes.append(f"'{frame.text}': opened both {first_kind.value}s")
         return same
     raise builder.refs.refuse(f"'{frame.text}' could mean {len(same)} parts", same)
+
+
+def _one_implied(builder: Builder, frame: Frame, found: list[Part]) -> Part:
+    """"Start the toaster" on a toaster with two levers: the one a geometric tie-break picks, said in a warning; with
+    nothing to tell them apart, a refusal naming them (never the URDF's first)."""
+    kind = found[0].kind
+    words = kind.value if kind is not None else "part"
+    picked = tie_break(Mention(head=words, kind=kind), kind, found, builder.tracker.obj, builder.asset)
+    if picked is None:
+        raise builder.refs.refuse(f"'{frame.text}' could work {len(found)} {words}s", found)
+    part, how = picked
+    builder.notes.append(f"'{frame.text}' could work {len(found)} {words}s; took {how} ({part.link})")
+    return part

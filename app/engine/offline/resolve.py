@@ -115,7 +115,13 @@ def _toward(geometry: JointGeometry, start: float, end: float, goal: Goal) -> fl
         return end
     if goal.unit == "fraction":
         return start + goal.amount * (end - start)
-    direction = 1.0 if end >= start else -1.0
+    if abs(end - start) <= LIMIT_EPS:
+        if goal.measured_from != "closed" or geometry.lower is None or geometry.upper is None:
+            return end  # already there: no way to go (an explicit amount is then refused, never sent the URDF's + way)
+        # "lower it until it is open 45 degrees": the state named is the closed end itself; measured from there,
+        # the amount goes into the range (not toward whichever limit happens to be written as the larger number)
+        end = geometry.upper if abs(geometry.upper - start) >= abs(geometry.lower - start) else geometry.lower
+    direction = 1.0 if end > start else -1.0
     return clamp(geometry, start + direction * goal.amount)
 
 

@@ -25,13 +25,16 @@ from tests.conftest import EXAMPLES, partnet_root
 def asset(name: str) -> ArticulatedAsset:
     """``examples/<x>`` from the repo, ``extra/<x>`` from the partnet-extra folder next to the PartNet one (dev assets
     only: the held-out split's assets never appear in these tests), anything else from the PartNet folder."""
+    return load_asset(asset_dir(name))
+
+
+def asset_dir(name: str) -> Path:
+    """The folder :func:`asset` loads ``name`` from."""
     if name.startswith("examples/"):
-        path = EXAMPLES / name.split("/", 1)[1]
-    elif name.startswith("extra/"):
-        path = partnet_root().parent / "partnet-extra" / name.split("/", 1)[1]
-    else:
-        path = partnet_root() / name
-    return load_asset(Path(path))
+        return Path(EXAMPLES / name.split("/", 1)[1])
+    if name.startswith("extra/"):
+        return partnet_root().parent / "partnet-extra" / name.split("/", 1)[1]
+    return partnet_root() / name
 
 
 @dataclass
@@ -61,7 +64,11 @@ def replan(name: str, causal_json: str, *, collisions: bool = True) -> Plan:
 
 
 def animate(name: str, prompt: str, *, collisions: bool = True) -> Outcome:
-    model = asset(name)
+    return animate_model(asset(name), prompt, collisions=collisions)
+
+
+def animate_model(model: ArticulatedAsset, prompt: str, *, collisions: bool = True) -> Outcome:
+    """:func:`animate` on an asset already loaded (a variant written by a test)."""
     roles = offline_roles()
     config = EngineConfig(check_collisions=collisions)
     context = Context(asset=model, prompt=prompt, joint_summary=joint_summary(model), scale=scale_context(model), config=config)

@@ -59,6 +59,19 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
+    # amount measured from a closed end that is the limit the state named ---
+    R("extra/faucet_1343", "swing the tap's lever as far left as it will go", joints={"joint_0": E(end="upper")}),
+    R("extra/faucet_1343", "push the lever as far right as possible", joints={"joint_0": E(end="lower")}),
+    R("extra/faucet_1343", "swing the lever all the way left", joints={"joint_0": E(end="upper")}),
+    R("extra/faucet_1343", "turn the lever hard right", joints={"joint_0": E(end="lower")}),
+    R("extra/faucet_1343", "set the lever to full left", joints={"joint_0": E(end="upper")}),
+    R("extra/faucet_1343", "turn the lever a bit right", joints={"joint_0": E(sign=-1)}),
+    R("extra/faucet_1343", "Keep the lever swung fully left for 3 seconds, then return it to the middle.", joints={"joint_0": E(peak="upper")}),
+    R("laptop_10697", "Lower the screen until it is open 45 degrees.", joints={"joint_1": E(end=-1.954 + PI / 4)}),
+    R("bottle_cap_3558", "Back the cap off by 90 degrees.", joints={"joint_0": E(end=PI / 2)}),
+    R("storage_19179", "1. lower drawer out half its travel\n2. push it back shut\n3. upper drawer out 20 cm",
+      joints={"joint_0": E(peak=0.5), "joint_1": E(end=0.2)}),
     # --- generalisation probes (all pass with /tmp/probe/offline_generalisation.patch) ---
     R("storage_27044", "pull the nightstand drawer three quarters of the way out", joints={"joint_0": E(end=0.75 * 0.684)}),
     R("refrigerator_11178", "swing the fridge door on the left halfway open", joints={"joint_0": E(end=PI / 2), "joint_1": E(still=True)}),

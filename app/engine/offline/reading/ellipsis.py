@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.verbs import VERBLESS_SENSES, VERBS, VerbSense
 from app.engine.lexicon.words import STATES
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
@@ -80,6 +80,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         verb, sense = ("close", VerbSense.CLOSE) if ends == {"closed"} else ("open", VerbSense.OPEN)
         return replace(frame, verb=verb, sense=sense, particle=None, returning=False, themes=frame.themes or previous.themes,
                        instruments=frame.instruments or previous.instruments)
+    if frame.themes and not frame.returning and any(word in VERBLESS_SENSES for word in frame.text.split()):
+        return frame  # "... 2. push it back shut 3. upper drawer out 20 cm": its own word says which way, not the verb before
     if frame.themes or amount_only:
         own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
         return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),

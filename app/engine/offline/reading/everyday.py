@@ -2,7 +2,8 @@
 "the drawer's sticking out" (is), "push it home" (shut), "into its locked position" (shut), "the knob furthest to the
 left" (leftmost), "lever: full left", "max cold" (a mixer tap: hot is the viewer's left), "to the midpoint of its
 travel" (halfway), "give it two seconds" (wait), "no need to touch the dial" (don't), "unlatch nothing", "forget the
-pedal", "one full counterclockwise turn" (the turn, then its sense), "180 clockwise" (degrees), "the ketchup, which
+pedal", "one full counterclockwise turn" (the turn, then its sense), "180 clockwise" (degrees), "back the cap off" (loosen
+it), "as far left as it will go" / "all the way left" / "hard left" (a way, not a part), "the ketchup, which
 lives in the door" (a sentence of its own: where it is kept)."""
 
 from __future__ import annotations
@@ -70,6 +71,45 @@ def _extreme_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
     return None
 
 
+_SIDES = frozenset({"left", "right"})
+_FULL_SIDE = frozenset({"full", "fully", "hard", "max", "maximum"})
+_AMOUNT_ENDS = frozenset({"way", "bit", "little", "tad", "slightly", "halfway", "further", "farther", "more", "somewhat", "fully"})
+"""Words that end an amount: a bare side right after one is where the part goes ("all the way left", "a bit right")."""
+_CLAUSE_ENDS = frozenset({"and", "then", "so", "until", "while", "before", "after", "once", "as", "side", "position", "too", "for", "with", "please"})
+_FAR_SIDES = frozenset({"left", "right", "up", "down", "back", "forward", "out", "open", "in"})
+_AS_FAR_TAIL = frozenset({"it", "they", "you", "i", "we", "will", "'ll", "can", "could", "would", "goes", "go", "possible", "get", "gets",
+                          "allows", "lets", "let", "turns", "turn", "swings", "swing", "moves", "move", "slides", "slide"})
+
+
+_CLAUSE_STARTS = frozenset({"", ",", ".", ";", ":", "!", "then", "and", "to", "please", "just", "lol"})
+
+
+def _backed_off(tokens: list[Token], i: int) -> int:
+    """"back it off", "back the cap off": the index of "off" when the words between name what is backed off, else 0."""
+    for k in range(i + 2, min(i + 6, len(tokens))):
+        if tokens[k].text == "off":
+            return k if all(t.text.isalpha() and t.text not in ("and", "then", "from", "of") for t in tokens[i + 1:k]) else 0
+        if tokens[k].is_punct:
+            return 0
+    return 0
+
+
+def _side_ends(tokens: list[Token], i: int) -> bool:
+    """Whether the clause's phrase ends at ``i``: the side before it names a way, not a part ("a bit left door")."""
+    return i >= len(tokens) or tokens[i].is_punct or tokens[i].text in _CLAUSE_ENDS
+
+
+def _as_far_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
+    """"as far left as it will go" at ``i``: (the way, the index of its last word), else ``None``."""
+    words = [t.text for t in tokens[i:i + 4]]
+    if len(words) < 4 or words[1] not in ("far", "farther", "further") or words[2] not in _FAR_SIDES or words[3] != "as":
+        return None
+    last = i + 3
+    while last + 1 < len(tokens) and tokens[last + 1].text in _AS_FAR_TAIL:
+        last += 1
+    return (words[2], last) if last > i + 3 else None
+
+
 def everyday_words(tokens: list[Token]) -> list[Token]:
     """``tokens`` with the everyday phrasings of this module's docstring rewritten (new tokens keep the offsets of the
     words they replace)."""
@@ -120,8 +160,24 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             t = Token("shut", "shut", t.start, t.end)  # "shove it (all the way) home": in as far as it goes
         elif t.text.startswith("hand-") and t.text[5:] in VERBS:
             t = Token(t.text[5:], t.text[5:], t.start, t.end, corrected_from=t.text)  # "hand-lift the lid": lift it by hand
-        elif t.text in ("full", "fully") and after in ("left", "right") and before not in ("to", "the"):
-            out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))  # "lever: full left": as far left as it goes
+        elif t.text == "back" and before in _CLAUSE_STARTS and (off := _backed_off(tokens, i)):
+            out.append(Token("loosen", "loosen", t.start, t.end))  # "back the cap off 90 degrees": loosen it
+            out.extend(tokens[i + 1:off])
+            skip = off
+            continue
+        elif t.text in _FULL_SIDE and after in _SIDES and before != "the" and _side_ends(tokens, i + 2):
+            if out and out[-1].text == "to":
+                out.pop()  # "set the lever to full left"
+            out.extend(Token(w, w, t.start, t.end) for w in ("fully", "to", "the"))  # "lever: full left", "hard left": as far left as it goes
+            continue
+        elif t.text in _AMOUNT_ENDS and after in _SIDES and _side_ends(tokens, i + 2):
+            out.extend((t, Token("to", "to", t.start, t.end), Token("the", "the", t.start, t.end)))  # "all the way left", "a bit right"
+            continue
+        elif t.text == "as" and (far := _as_far_side(tokens, i)) is not None:
+            side, last = far  # "as far left as it will go": all the way to the left
+            words = ("all", "the", "way", "to", "the", side) if side in _SIDES else ("all", "the", "way", side)
+            out.extend(Token(w, w, t.start, tokens[last].end) for w in words)
+            skip = last
             continue
         elif t.text == "full" and after in ("up", "down", "open", "on", "off"):
             t = Token("fully", "fully", t.start, t.end)  # "full open": as far as it goes

@@ -1,0 +1,37 @@
+"""Choices the URDF's encoding used to make silently now come from the shape, or carry a warning naming the guess:
+a lever that goes as far either way with no side said, a verb that implies a control ("start the toaster") on an
+object with two of them."""
+
+from __future__ import annotations
+
+import pytest
+
+from app.engine.offline.perceiver import read_prompt
+from tests.engine.offline.conftest import asset
+
+EITHER_WAY = "goes about as far either way"
+
+
+def _notes(name: str, prompt: str) -> list[str]:
+    return list(read_prompt(prompt, asset(name)).notes)
+
+
+@pytest.mark.parametrize("prompt", ["swing the lever", "push the lever all the way"])
+def test_a_lever_with_no_side_said_is_a_named_guess(prompt: str) -> None:
+    assert any(EITHER_WAY in n for n in _notes("extra/faucet_1343", prompt))
+
+
+@pytest.mark.parametrize("prompt", ["swing the lever to the left", "push the lever as far right as possible", "turn the lever hard left",
+                                    "swing the lever all the way left"])
+def test_a_side_said_is_no_guess(prompt: str) -> None:
+    assert not any(EITHER_WAY in n for n in _notes("extra/faucet_1343", prompt))
+
+
+def test_a_door_with_a_closed_end_is_no_guess() -> None:
+    assert not any(EITHER_WAY in n for n in _notes("refrigerator_11178", "open the left door"))
+
+
+@pytest.mark.parametrize("prompt", ["Start the toaster.", "Start toasting in the front slot."])
+def test_an_implied_control_among_two_is_chosen_by_shape_and_said(prompt: str) -> None:
+    notes = _notes("extra/toaster_103473", prompt)
+    assert any("could work 2 levers; took the one on the front (link_0)" in n for n in notes), notes
