@@ -81,6 +81,8 @@ class AssetLayout(BaseModel):
     """World direction the object faces (+Z up)."""
     right: tuple[float, float, float]
     """World direction of the viewer's right when facing the front."""
+    front_by_convention: bool = False
+    """Nothing on the object shows where it faces: ``front`` is PartNet-Mobility's convention (-X)."""
     parts: list[PartPlace]
     joints: list[JointEnds]
 
@@ -212,7 +214,7 @@ def _joints(asset: ArticulatedAsset, geometry: ObjectGeometry) -> list[JointEnds
 def asset_layout(asset: ArticulatedAsset) -> AssetLayout:
     """Part positions (as seen from the front) and joint ends of ``asset``."""
     geometry = analyse(asset)
-    return AssetLayout(front=_vector(geometry.front), right=_vector(geometry.right),
+    return AssetLayout(front=_vector(geometry.front), right=_vector(geometry.right), front_by_convention=geometry.front_by_convention,
                        parts=_parts(asset, geometry), joints=_joints(asset, geometry))
 
 

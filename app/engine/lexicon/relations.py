@@ -19,3 +19,5 @@ RELATIVE = frozenset({"that's", "that", "which", "which's", "is", *RESTING})
 PLACE_PREPS = frozenset({"on", "off", "onto", "from", "along", "across", "against", "over", "under", "at", "to", "toward", "towards", "into",
                          "in", "by", "near", "beside", "next_to", "on_top_of"})
 """Before a noun, they make it a place ("push it along the table"), not the object itself."""
+FRONT_RELATIVE_RELATIONS = frozenset({"left", "right", "behind", "in_front"})
+"""Relations read as seen from the object's front ("the knob left of the dial", "the tray behind the door")."""

@@ -84,6 +84,9 @@ class ObjectGeometry:
     right: FloatArray
     joints: dict[str, JointGeometry]
     category: str | None
+    front_by_convention: bool = False
+    """No door, drawer, lid, tilted panel or part named front shows where the object faces: ``front`` is
+    :data:`DEFAULT_FRONT`, PartNet-Mobility's convention, and every left/right/front/back read from it a guess."""
 
     def local(self, point: FloatArray) -> FloatArray:
         """(front, right, up) coordinates of a world point relative to the object centre."""
@@ -291,14 +294,21 @@ def _named_front(joints: dict[str, JointGeometry]) -> FloatArray:
     return np.zeros(3)
 
 
+def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
+                points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
+    """The sum of every cue to the object's front (zero when nothing on it says where it faces)."""
+    vote = _named_front(joints)
+    for geometry in joints.values():
+        vote = vote + _front_vote(geometry, center, asset, points, rest)
+    return vote
+
+
 def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
                 points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
     """Horizontal unit vector the object faces: where doors, drawers and controls point
     (and where parts named "front" sit, e.g. a car's front wheels); ``points`` and ``rest`` as
     :func:`_local_points` and ``link_poses(asset, {}, frames=1)``."""
-    vote = _named_front(joints)
-    for geometry in joints.values():
-        vote += _front_vote(geometry, center, asset, points, rest)
+    vote = front_votes(joints, center, asset, points, rest)
     if np.linalg.norm(vote) < 1e-6:
         return DEFAULT_FRONT.copy()
     front = _horizontal(vote)
@@ -357,6 +367,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
                             points)
     front = infer_front(joints, center, asset, points, rest)
+    by_convention = bool(np.linalg.norm(front_votes(joints, center, asset, points, rest)) < 1e-6)
     right = np.cross(-front, UP)
     return ObjectGeometry(
         center=center,
@@ -367,6 +378,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
         right=right / max(float(np.linalg.norm(right)), 1e-9),
         joints=joints,
         category=object_category(asset),
+        front_by_convention=by_convention,
     )
 
 

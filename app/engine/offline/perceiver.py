@@ -13,11 +13,14 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 from typing import Any
 
+import numpy as np
+
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
+from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import AGENT_NOUNS, PERSONS
+from app.engine.lexicon.words import AGENT_NOUNS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.conditions import set_topic
@@ -131,5 +134,30 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     extension = Extension(steps=builder.steps)
     understanding = builder.explanation.entries()
     checked = audit(clauses, extension, understanding, builder.explanation.obj)
-    notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes, *checked]))
+    notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes, *checked, *_conventional_front(frames, builder)]))
     return Reading(extension=extension, intent=resolve_steps(extension, asset, prompt, notes), understanding=understanding, notes=notes)
+
+
+_FRONT_SIDES = frozenset({Side.LEFT, Side.RIGHT, Side.FRONT, Side.BACK})
+_FRONT_WAYS = frozenset({"left", "right", "forward", "backward"})
+
+
+def _conventional_front(frames: list[Frame], builder: Builder) -> list[str]:
+    """A warning when a left / right / front / back was read from a front that nothing on the object shows (a faucet,
+    a toaster with its knob on a side, a pot): the front is PartNet-Mobility's convention, and on an asset modelled
+    facing elsewhere every such word lands on the wrong side."""
+    obj = builder.tracker.obj
+    if not obj.front_by_convention:
+        return []
+    mentions = [m for f in frames for m in (*f.themes, *f.instruments)]
+    mentions += [m.relation[1] for m in mentions if m.relation is not None]
+    relations = [(RELATIONS.get(m.relation[0], m.relation[0]), m.relation[1]) for m in mentions if m.relation is not None]
+    used = any(side in _FRONT_SIDES for m in mentions for side, _ in m.sides) or any(
+        way in FRONT_RELATIVE_RELATIONS or (way in ("near", "far") and landmark.head in VIEWER_WORDS) for way, landmark in relations) or any(
+        f.quantities.direction in _FRONT_WAYS for f in frames)
+    if not used:
+        return []
+    axis = "XYZ"[int(np.argmax(np.abs(obj.front)))]
+    sign = "+" if obj.front[int(np.argmax(np.abs(obj.front)))] > 0 else "-"
+    return [f"took {builder.asset.name}'s front to face {sign}{axis}, the PartNet-Mobility convention: nothing on it shows where it faces, "
+            f"and left, right, front and back were read from there"]

@@ -13,6 +13,16 @@ from app.engine.offline.reading.frames import Frame
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
+_OPENING = frozenset({VerbSense.OPEN, VerbSense.PULL_OUT, VerbSense.RAISE})
+_CLOSING = frozenset({VerbSense.CLOSE, VerbSense.PUSH_IN, VerbSense.LOWER})
+
+
+def _alike(way: VerbSense, sense: VerbSense | None) -> bool:
+    """Both senses open (pull out, raise) or both close (push in, lower): the verb before may go on ("pull the right
+    drawer out, then the left one out too")."""
+    return (way in _OPENING and sense in _OPENING) or (way in _CLOSING and sense in _CLOSING)
+
+
 def carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     if frame.link is Link.NEGATED:
         return frame  # "keep your hands off the drawer": what not to touch takes no verb
@@ -80,8 +90,10 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         verb, sense = ("close", VerbSense.CLOSE) if ends == {"closed"} else ("open", VerbSense.OPEN)
         return replace(frame, verb=verb, sense=sense, particle=None, returning=False, themes=frame.themes or previous.themes,
                        instruments=frame.instruments or previous.instruments)
-    if frame.themes and not frame.returning and any(word in VERBLESS_SENSES for word in frame.text.split()):
-        return frame  # "... 2. push it back shut 3. upper drawer out 20 cm": its own word says which way, not the verb before
+    own_way = next((VERBLESS_SENSES[w] for w in reversed(frame.text.split()) if w in VERBLESS_SENSES), None)  # the last: where it ends
+    if frame.themes and not frame.returning and own_way is not None and not _alike(own_way, previous.sense):
+        # "... 2. push it back shut 3. upper drawer out 20 cm", "Steps: * top drawer out 30 cm": its own word says which way
+        return replace(frame, sense=own_way)
     if frame.themes or amount_only:
         own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
         return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),

@@ -81,11 +81,15 @@ _AS_FAR_TAIL = frozenset({"it", "they", "you", "i", "we", "will", "'ll", "can", 
                           "allows", "lets", "let", "turns", "turn", "swings", "swing", "moves", "move", "slides", "slide"})
 
 
+_BACKED_OFF_STARTS = frozenset({"it", "them", "the", "this", "that", "its", "my", "your"})
 _CLAUSE_STARTS = frozenset({"", ",", ".", ";", ":", "!", "then", "and", "to", "please", "just", "lol"})
 
 
 def _backed_off(tokens: list[Token], i: int) -> int:
-    """"back it off", "back the cap off": the index of "off" when the words between name what is backed off, else 0."""
+    """"back it off", "back the cap off": the index of "off" when the words between name what is backed off, else 0
+    ("then back to off" is a return)."""
+    if i + 1 >= len(tokens) or tokens[i + 1].text not in _BACKED_OFF_STARTS:
+        return 0
     for k in range(i + 2, min(i + 6, len(tokens))):
         if tokens[k].text == "off":
             return k if all(t.text.isalpha() and t.text not in ("and", "then", "from", "of") for t in tokens[i + 1:k]) else 0
