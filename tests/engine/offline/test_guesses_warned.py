@@ -35,3 +35,19 @@ def test_a_door_with_a_closed_end_is_no_guess() -> None:
 def test_an_implied_control_among_two_is_chosen_by_shape_and_said(prompt: str) -> None:
     notes = _notes("extra/toaster_103473", prompt)
     assert any("could work 2 levers; took the one on the front (link_0)" in n for n in notes), notes
+
+
+CONVENTION = "the PartNet-Mobility convention: nothing on it shows where it faces"
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("extra/faucet_1343", "swing the lever to the left"),
+                                              ("extra/toaster_103473", "press the lever nearest me down"),
+                                              ("extra/toaster_103473", "push down the back lever")])
+def test_sides_read_from_a_conventional_front_are_said(name: str, prompt: str) -> None:
+    assert any(CONVENTION in n for n in _notes(name, prompt))
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("extra/faucet_1343", "swing the lever all the way"),  # no side word
+                                              ("refrigerator_11178", "open the left door")])  # its doors show its front
+def test_no_convention_warning_without_a_side_or_with_a_shown_front(name: str, prompt: str) -> None:
+    assert not any(CONVENTION in n for n in _notes(name, prompt))
