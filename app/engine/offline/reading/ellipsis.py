@@ -13,6 +13,8 @@ from app.engine.offline.reading.frames import Frame
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
 
+_STEPS = frozenset({Link.FIRST, Link.SEQUENCE, Link.PARALLEL})
+"""Clauses that are steps of their own (not the result, condition or purpose of another)."""
 _OPENING = frozenset({VerbSense.OPEN, VerbSense.PULL_OUT, VerbSense.RAISE})
 _CLOSING = frozenset({VerbSense.CLOSE, VerbSense.PUSH_IN, VerbSense.LOWER})
 
@@ -91,7 +93,7 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return replace(frame, verb=verb, sense=sense, particle=None, returning=False, themes=frame.themes or previous.themes,
                        instruments=frame.instruments or previous.instruments)
     own_way = next((VERBLESS_SENSES[w] for w in reversed(frame.text.split()) if w in VERBLESS_SENSES), None)  # the last: where it ends
-    if frame.themes and not frame.returning and own_way is not None and not _alike(own_way, previous.sense):
+    if frame.themes and not frame.returning and own_way is not None and not _alike(own_way, previous.sense) and frame.link in _STEPS:
         # "... 2. push it back shut 3. upper drawer out 20 cm", "Steps: * top drawer out 30 cm": its own word says which way
         return replace(frame, sense=own_way)
     if frame.themes or amount_only:
