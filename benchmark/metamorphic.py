@@ -35,7 +35,6 @@ from __future__ import annotations
 import argparse
 import json
 import math
-import os
 import re
 import sys
 from collections.abc import Callable
@@ -44,7 +43,7 @@ from typing import Any
 
 import numpy as np
 
-from benchmark.probe import run_in_process, summarize
+from benchmark.probe import judge, run_in_process
 from benchmark.variants import PURE, TRANSFORMS, Mapping, make_variant, rpy_matrix
 
 ROUNDING = 1e-9
@@ -146,16 +145,7 @@ def build(expect_files: list[Path], assets: Path, out: Path, transforms: tuple[s
 
 
 def _judge(out: Path, expect: Path, assets: Path) -> dict[str, dict[str, Any]]:
-    import subprocess
-    tools = Path(os.environ.get("ARTIMO_PROBE_TOOLS") or Path(__file__).resolve().parents[2] / "shared" / "tools" / "probe")
-    env = {**os.environ, "PROBE_DIR": str(out), "PROBE_EXPECT": str(expect), "PROBE_ASSETS": str(assets)}
-    judged = subprocess.run([sys.executable, str(tools / "judge.py")], env=env, capture_output=True, text=True)
-    (out / "judge.txt").write_text(judged.stdout + judged.stderr)
-    if judged.returncode != 0:
-        raise RuntimeError(f"judge failed on {out}: {judged.stderr[-400:]}")
-    summary = summarize(out, expect)
-    (out / "summary.json").write_text(json.dumps(summary, indent=1))
-    return {c["id"]: c for c in summary["cases"]}
+    return {c["id"]: c for c in judge(out, expect, assets)["cases"]}
 
 
 def compare(before: dict[str, dict[str, Any]], after: dict[str, dict[str, Any]]) -> list[dict[str, Any]]:

@@ -80,6 +80,30 @@ def summarize(out: Path, expect: Path) -> dict[str, Any]:
     return {"expect": str(expect), "types": table, "cases": cases}
 
 
+def tools_folder() -> Path:
+    """The probe tools (``run.py``, ``judge.py``): ``$ARTIMO_PROBE_TOOLS``, else ``../shared/tools/probe``."""
+    return _default("ARTIMO_PROBE_TOOLS", "shared/tools/probe")
+
+
+def judge(out: Path, expect: Path, assets: Path, tools: Path | None = None) -> dict[str, Any]:
+    """Judge the runs in ``out`` with ``judge.py`` (its output in OUT/judge.txt) and write OUT/summary.json.
+
+    Raises
+    ------
+    RuntimeError
+        ``judge.py`` failed (its error output is the message).
+    """
+    env = {**os.environ, "PYOPENGL_PLATFORM": os.environ.get("PYOPENGL_PLATFORM", "egl"), "PROBE_DIR": str(out), "PROBE_EXPECT": str(expect),
+           "PROBE_ASSETS": str(assets)}
+    judged = subprocess.run([sys.executable, str((tools or tools_folder()) / "judge.py")], env=env, capture_output=True, text=True)
+    (out / "judge.txt").write_text(judged.stdout + judged.stderr)
+    if judged.returncode != 0:
+        raise RuntimeError(judged.stderr.strip() or f"judge.py failed on {out}")
+    summary = summarize(out, expect)
+    (out / "summary.json").write_text(json.dumps(summary, indent=1))
+    return summary
+
+
 def run_in_process(expect: Path, out: Path, assets: Path) -> None:
     """What ``run.py`` does (one ``artimo animate`` per prompt), in this process: OUT/runs/<id> and run_results.json."""
     import time
@@ -122,7 +146,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--in-process", action="store_true", help="run this build's offline agent in this process (same outputs, much faster)")
     args = parser.parse_args(argv)
     assets = args.assets or _default("ARTIMO_PARTNET_EXTRA_ROOT", "shared/assets/partnet-extra")
-    tools = _default("ARTIMO_PROBE_TOOLS", "shared/tools/probe")
+    tools = tools_folder()
     for path, what in ((assets, "assets root (--assets / $ARTIMO_PARTNET_EXTRA_ROOT)"), (tools, "probe tools ($ARTIMO_PROBE_TOOLS)"),
                        (args.expect, "expectations file (--expect)")):
         if not path.exists():
@@ -135,14 +159,11 @@ def main(argv: list[str] | None = None) -> int:
         run_in_process(args.expect, args.out, assets)
     elif not args.judge_only:
         subprocess.run([sys.executable, str(tools / "run.py"), cli, str(args.out), str(args.expect), str(assets)], check=True, env=env)
-    judged = subprocess.run([sys.executable, str(tools / "judge.py")], env={**env, "PROBE_DIR": str(args.out), "PROBE_EXPECT": str(args.expect),
-                                                                           "PROBE_ASSETS": str(assets)}, capture_output=True, text=True)
-    (args.out / "judge.txt").write_text(judged.stdout + judged.stderr)
-    if judged.returncode != 0:
-        sys.stderr.write(judged.stderr)
+    try:
+        summary = judge(args.out, args.expect, assets, tools)
+    except RuntimeError as exc:
+        sys.stderr.write(f"{exc}\n")
         return 2
-    summary = summarize(args.out, args.expect)
-    (args.out / "summary.json").write_text(json.dumps(summary, indent=1))
     lines = [f"{'type':14s} {'n':>4s} {'right':>6s} {'rate':>6s} {'(warned)':>9s} {'warned':>7s} {'refused':>8s} {'silent':>7s}"]
     for kind, row in summary["types"].items():
         lines.append(f"{kind:14s} {row['n']:4d} {row['right']:6d} {row['rate']:6.1%} {row['right_warned']:9d} {row['wrong_warned']:7d} {row['wrong_refusal']:8d} {row['wrong_silent']:7d}")

@@ -294,6 +294,11 @@ def _named_front(joints: dict[str, JointGeometry]) -> FloatArray:
     return np.zeros(3)
 
 
+def by_convention(vote: FloatArray) -> bool:
+    """No cue to the front at all: it is taken as :data:`DEFAULT_FRONT`."""
+    return bool(np.linalg.norm(vote) < 1e-6)
+
+
 def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
                 points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
     """The sum of every cue to the object's front (zero when nothing on it says where it faces)."""
@@ -308,8 +313,12 @@ def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
     """Horizontal unit vector the object faces: where doors, drawers and controls point
     (and where parts named "front" sit, e.g. a car's front wheels); ``points`` and ``rest`` as
     :func:`_local_points` and ``link_poses(asset, {}, frames=1)``."""
-    vote = front_votes(joints, center, asset, points, rest)
-    if np.linalg.norm(vote) < 1e-6:
+    return front_of(front_votes(joints, center, asset, points, rest))
+
+
+def front_of(vote: FloatArray) -> FloatArray:
+    """The front :func:`front_votes` point to, snapped to an axis when near one (:data:`DEFAULT_FRONT` without any)."""
+    if by_convention(vote):
         return DEFAULT_FRONT.copy()
     front = _horizontal(vote)
     snapped = np.round(front)
@@ -366,8 +375,8 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     center = (low + high) / 2.0
     joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
                             points)
-    front = infer_front(joints, center, asset, points, rest)
-    by_convention = bool(np.linalg.norm(front_votes(joints, center, asset, points, rest)) < 1e-6)
+    vote = front_votes(joints, center, asset, points, rest)
+    front = front_of(vote)
     right = np.cross(-front, UP)
     return ObjectGeometry(
         center=center,
@@ -378,7 +387,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
         right=right / max(float(np.linalg.norm(right)), 1e-9),
         joints=joints,
         category=object_category(asset),
-        front_by_convention=by_convention,
+        front_by_convention=by_convention(vote),
     )
 
 

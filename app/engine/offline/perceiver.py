@@ -13,8 +13,7 @@ from dataclasses import dataclass, replace
 from functools import lru_cache
 from typing import Any
 
-import numpy as np
-
+from app.engine.asset.layout import direction_name
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
@@ -157,7 +156,6 @@ def _conventional_front(frames: list[Frame], builder: Builder) -> list[str]:
         f.quantities.direction in _FRONT_WAYS for f in frames)
     if not used:
         return []
-    axis = "XYZ"[int(np.argmax(np.abs(obj.front)))]
-    sign = "+" if obj.front[int(np.argmax(np.abs(obj.front)))] > 0 else "-"
-    return [f"took {builder.asset.name}'s front to face {sign}{axis}, the PartNet-Mobility convention: nothing on it shows where it faces, "
+    facing = direction_name((float(obj.front[0]), float(obj.front[1]), float(obj.front[2])))
+    return [f"took {builder.asset.name}'s front to face {facing}, the PartNet-Mobility convention: nothing on it shows where it faces, "
             f"and left, right, front and back were read from there"]

@@ -14,6 +14,7 @@ import pytest
 
 from app.engine.asset.loader import load_asset
 from app.engine.errors import GroundingError
+from app.engine.execute.trajectory import Trajectory
 from benchmark.metamorphic import Mapping, make_variant
 from tests.engine.offline.conftest import animate, animate_model, asset_dir
 
@@ -74,6 +75,12 @@ def test_same_motion_whatever_the_encoding(name: str, prompt: str, variants: dic
     assert moved or original.has_base_motion(), "the row moves nothing: it tests nothing"
 
 
+def _on_both(name: str, prompt: str, folder: Path, transforms: tuple[str, ...]) -> tuple[Mapping, Trajectory, Trajectory]:
+    """The variant of ``name`` written into ``folder``, and ``prompt`` animated on the original and on it."""
+    mapping = make_variant(asset_dir(name), folder / name, transforms)
+    return mapping, animate(name, prompt).trajectory, animate_model(load_asset(folder / name), prompt).trajectory
+
+
 AJAR_ROWS = [
     ("storage_20453", "open the drawer"),
     ("refrigerator_11178", "open the left door"),
@@ -86,10 +93,8 @@ AJAR_ROWS = [
 @pytest.mark.parametrize(("name", "prompt"), AJAR_ROWS, ids=[f"{n}: {p}" for n, p in AJAR_ROWS])
 def test_the_same_end_from_a_part_resting_ajar(name: str, prompt: str, tmp_path: Path) -> None:
     """Doors, lids and drawers resting 30% open instead of at a limit (``ajar``): "open it" / "close it" ends in the same pose."""
-    mapping = make_variant(asset_dir(name), tmp_path / name, ("ajar",))
+    mapping, original, variant = _on_both(name, prompt, tmp_path, ("ajar",))
     assert mapping.offsets, "nothing rests at a limit: the row tests nothing"
-    original = animate(name, prompt).trajectory
-    variant = animate_model(load_asset(tmp_path / name), prompt).trajectory
     for joint in original.joint_names:
         track = original.joint(joint)
         if float(np.ptp(track)) > 1e-6:  # what the prompt moves ends in the same pose ...
@@ -111,9 +116,7 @@ YAW_ROWS = [
 def test_an_object_with_a_front_turned_on_the_table_moves_alike(name: str, prompt: str, tmp_path: Path) -> None:
     """Turned 90 degrees (``yaw``), an object whose doors, drawers or named parts show its front is read alike: the same
     joints move the same way, and a whole-object motion turns with it."""
-    make_variant(asset_dir(name), tmp_path / name, ("yaw",))
-    model = load_asset(tmp_path / name)
-    original, variant = animate(name, prompt).trajectory, animate_model(model, prompt).trajectory
+    _, original, variant = _on_both(name, prompt, tmp_path, ("yaw",))
     assert np.allclose(variant.q, original.q, atol=1e-6)
     turn = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
     assert np.allclose(variant.base_translation, original.base_translation @ turn.T, atol=1e-6)

@@ -73,7 +73,7 @@ def _extreme_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
 
 _SIDES = frozenset({"left", "right"})
 _FULL_SIDE = frozenset({"full", "fully", "hard", "max", "maximum"})
-_AMOUNT_ENDS = frozenset({"way", "bit", "little", "tad", "slightly", "halfway", "further", "farther", "more", "somewhat", "fully"})
+_AMOUNT_ENDS = frozenset({"way", "bit", "little", "tad", "slightly", "halfway", "further", "farther", "more", "somewhat"})
 """Words that end an amount: a bare side right after one is where the part goes ("all the way left", "a bit right")."""
 _CLAUSE_ENDS = frozenset({"and", "then", "so", "until", "while", "before", "after", "once", "as", "side", "position", "too", "for", "with", "please"})
 _FAR_SIDES = frozenset({"left", "right", "up", "down", "back", "forward", "out", "open", "in"})
