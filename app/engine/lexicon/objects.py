@@ -77,3 +77,8 @@ def carrier_of(noun: str, category: str | None) -> PartKind | None:
     """The kind of part that carries ``noun`` in an object of ``category`` (None when it carries nothing by that name)."""
     carried = CARRIED.get(category or "")
     return carried[1] if carried is not None and noun in carried[0] else None
+
+
+SPOUTED = frozenset({"faucet"})
+"""Asset categories whose fixed body reaches out over its foot toward the user (a tap's spout): with no door, drawer or
+lid to show where the object faces, the reach does."""

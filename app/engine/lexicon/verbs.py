@@ -64,6 +64,9 @@ class VerbInfo:
     """Kinds a bare use works ("flush the toilet" -> its lever or button)."""
     stative: bool = False
     """Describes a state to keep ("hold", "keep", "leave"), not a motion."""
+    rocker_sense: VerbSense | None = None
+    """Sense on a rocker or button (a part pressed into its face) when no particle says the way: the verb names a hinge
+    motion but no way of its own ("tilt the wall switch" rocks it over, it does not raise it)."""
 
 
 def _p(**pairs: VerbSense) -> Mapping[str, VerbSense]:
@@ -94,7 +97,7 @@ _VERBS: tuple[VerbInfo, ...] = (
              motion="hinge"),
     VerbInfo("flip", S.TOGGLE, _p(open=S.OPEN, up=S.OPEN, back=S.OPEN, down=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, on=S.SWITCH_ON, off=S.SWITCH_OFF,
                               round=S.YAW, around=S.YAW), motion="hinge"),
-    VerbInfo("tilt", S.RAISE, _p(back=S.RECLINE, open=S.OPEN, up=S.RAISE, down=S.LOWER, forward=S.CLOSE), motion="hinge"),
+    VerbInfo("tilt", S.RAISE, _p(back=S.RECLINE, open=S.OPEN, up=S.RAISE, down=S.LOWER, forward=S.CLOSE), motion="hinge", rocker_sense=S.TOGGLE),
     VerbInfo("recline", S.RECLINE, motion="hinge"),
     VerbInfo("lean", S.RECLINE, _p(back=S.RECLINE, forward=S.CLOSE), motion="hinge"),
     VerbInfo("crack", S.OPEN, _p(open=S.OPEN)),

@@ -15,14 +15,15 @@ from functools import lru_cache
 
 import numpy as np
 
-from app.engine.asset.kinematics import drives_mimics, link_poses, subtree_motion, subtree_poses
+from app.engine.asset.kinematics import link_poses, subtree_motion, subtree_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.lexicon.kinds import CONTROL_KINDS, HINGED_KINDS, PartKind, info, kind_of_label
-from app.engine.offline.naming import link_kind, tokens
+from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info, kind_of_label
+from app.engine.offline.front import UP, by_convention, front_of, front_votes
+from app.engine.offline.naming import link_kind
 from app.engine.offline.rest_points import RestPoints
+from app.engine.offline.rest_points import posed as _posed
 from app.engine.types import FloatArray
 
-UP = np.array([0.0, 0.0, 1.0])
 MAX_POINTS_PER_LINK = 1500
 MAX_MOVED_POINTS = 8192
 """Most points one joint's questions are asked of: a joint moving more (a long chain's first joints) is judged on an
@@ -30,9 +31,6 @@ even stride of its moved points, so each joint costs at most this much and the w
 The largest moved set among the 103 shared PartNet assets is 5786 points, so none of them is sampled."""
 OPEN_CLOSED_MIN_GAP = 0.02
 """Smallest difference of the normalised closedness score that decides open vs closed."""
-SNAP_ANGLE_DEG = 35.0
-DEFAULT_FRONT = np.array([-1.0, 0.0, 0.0])
-"""PartNet-Mobility objects face -X after their root rotation; used only without any cue."""
 WIDE_SWING_RAD = 1.25 * np.pi
 """A hinge that swings further than this (a bucket's carry handle over 270 degrees) may be highest between its ends."""
 
@@ -85,8 +83,8 @@ class ObjectGeometry:
     joints: dict[str, JointGeometry]
     category: str | None
     front_by_convention: bool = False
-    """No door, drawer, lid, tilted panel or part named front shows where the object faces: ``front`` is
-    :data:`DEFAULT_FRONT`, PartNet-Mobility's convention, and every left/right/front/back read from it a guess."""
+    """No door, drawer, lid, tilted panel, part named front, tap's spout or control on a side shows where the object
+    faces (:mod:`app.engine.offline.front`): ``front`` is :data:`DEFAULT_FRONT`, PartNet-Mobility's convention, and every left/right/front/back read from it a guess."""
 
     def local(self, point: FloatArray) -> FloatArray:
         """(front, right, up) coordinates of a world point relative to the object centre."""
@@ -109,11 +107,6 @@ def _bounded(points: FloatArray) -> FloatArray:
 
 def _local_points(asset: ArticulatedAsset) -> dict[str, FloatArray]:
     return {name: _subsample(asset.links[name].vertices()) for name in asset.visual_links}
-
-
-def _posed(points: dict[str, FloatArray], poses: dict[str, FloatArray], links: tuple[str, ...] | list[str], frame: int = 0) -> FloatArray:
-    chunks = [points[n] @ poses[n][frame, :3, :3].T + poses[n][frame, :3, 3] for n in links if n in points]
-    return np.concatenate(chunks) if chunks else np.zeros((0, 3))
 
 
 def _highest(asset: ArticulatedAsset, joint: str, values: FloatArray, rest: dict[str, FloatArray], points: dict[str, FloatArray],
@@ -243,90 +236,6 @@ def _joint_geometry(asset: ArticulatedAsset, joint: str, points: dict[str, Float
     )
 
 
-def _horizontal(vector: FloatArray) -> FloatArray:
-    flat = np.array([vector[0], vector[1], 0.0])
-    norm = float(np.linalg.norm(flat))
-    return flat / norm if norm > 1e-9 else np.zeros(3)
-
-
-def _front_vote(geometry: JointGeometry, center: FloatArray, asset: ArticulatedAsset, points: dict[str, FloatArray],
-                rest: dict[str, FloatArray]) -> FloatArray:
-    """One part's vote for the object's front (zero when it says nothing)."""
-    if geometry.category in CONTROL_KINDS:
-        # a knob on a tilted control panel: its axis, taken pointing up and out of the panel,
-        # leans toward the user (a washer's back panel); vertical or level axes say nothing
-        if geometry.type in ("revolute", "continuous") and 0.2 < abs(float(geometry.axis_world @ UP)) < 0.7:
-            outward = geometry.axis_world if geometry.axis_world @ UP > 0 else -geometry.axis_world
-            return 1.0 * _horizontal(outward)
-        return np.zeros(3)
-    if geometry.open_value is not None and geometry.closed_value is not None:
-        if geometry.type == "prismatic":
-            ends = np.array([geometry.closed_value, geometry.open_value])
-            if drives_mimics(asset, geometry.joint):  # mimic followers move with it: where its parts go on average
-                posed = subtree_poses(asset, geometry.joint, ends, rest)
-                shift = _posed(points, posed, geometry.moving_links, 1).mean(axis=0) - _posed(points, posed, geometry.moving_links, 0).mean(axis=0)
-                return 2.0 * _horizontal(shift)
-            return 2.0 * _horizontal(geometry.axis_world * (geometry.open_value - geometry.closed_value))
-        if abs(geometry.axis_world @ UP) < 0.7 and abs(geometry.home_face @ UP) > 0.5:
-            # a lid (or laptop screen) on top, hinged at the back: the front is away from the hinge
-            offset = geometry.pivot_world - center
-            offset = offset - (offset @ geometry.axis_world) * geometry.axis_world
-            return -0.5 * _horizontal(offset)
-        if abs(float(geometry.axis_world @ geometry.home_face)) > 0.7:
-            return np.zeros(3)  # hinged about the normal of its nearest face (a stapler's arm): that face is no front
-        return 1.0 * _horizontal(geometry.home_face)
-    # controls say nothing reliable: a washer's knobs sit on a back panel facing the user,
-    # a faucet's lever on a column whose nearest box face is a side
-    return np.zeros(3)
-
-
-def _named_front(joints: dict[str, JointGeometry]) -> FloatArray:
-    """Front from part names: parts named front/rear (a car's wheels) point along the object's front."""
-    front, rear = [], []
-    for geometry in joints.values():
-        words = set(tokens(geometry.child)) | set(tokens(geometry.joint))
-        if "front" in words:
-            front.append(geometry.centroid)
-        elif words & {"rear", "back"}:
-            rear.append(geometry.centroid)
-    if front and rear:
-        return 3.0 * _horizontal(np.mean(front, axis=0) - np.mean(rear, axis=0))
-    return np.zeros(3)
-
-
-def by_convention(vote: FloatArray) -> bool:
-    """No cue to the front at all: it is taken as :data:`DEFAULT_FRONT`."""
-    return bool(np.linalg.norm(vote) < 1e-6)
-
-
-def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
-                points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
-    """The sum of every cue to the object's front (zero when nothing on it says where it faces)."""
-    vote = _named_front(joints)
-    for geometry in joints.values():
-        vote = vote + _front_vote(geometry, center, asset, points, rest)
-    return vote
-
-
-def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
-                points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
-    """Horizontal unit vector the object faces: where doors, drawers and controls point
-    (and where parts named "front" sit, e.g. a car's front wheels); ``points`` and ``rest`` as
-    :func:`_local_points` and ``link_poses(asset, {}, frames=1)``."""
-    return front_of(front_votes(joints, center, asset, points, rest))
-
-
-def front_of(vote: FloatArray) -> FloatArray:
-    """The front :func:`front_votes` point to, snapped to an axis when near one (:data:`DEFAULT_FRONT` without any)."""
-    if by_convention(vote):
-        return DEFAULT_FRONT.copy()
-    front = _horizontal(vote)
-    snapped = np.round(front)
-    if np.count_nonzero(snapped) == 1 and np.degrees(np.arccos(np.clip(front @ snapped, -1, 1))) < SNAP_ANGLE_DEG:
-        return snapped.astype(np.float64)
-    return front
-
-
 def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeometry]) -> dict[str, JointGeometry]:
     """A latch whose shape does not say which end is shut was modelled in the state of the door or lid it holds:
     with its host modelled open it rests unlatched, with its host modelled shut it rests latched."""
@@ -375,7 +284,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     center = (low + high) / 2.0
     joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
                             points)
-    vote = front_votes(joints, center, asset, points, rest)
+    vote = front_votes(joints, center, asset, points, rest, object_category(asset))
     front = front_of(vote)
     right = np.cross(-front, UP)
     return ObjectGeometry(

@@ -15,7 +15,7 @@ from app.engine.contracts.steps import Goal, GoalState, MeasuredFrom
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.senses import CLOSING_STATES, END_STATE, PartClass, part_class
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import CENTRE_WORDS
 from app.engine.offline.geometry import JointGeometry
 from app.engine.offline.grounding import Part
@@ -105,6 +105,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
             and geometry.open_value is None):
         return "backward"  # "flip the handle back" (from where it rests): toward the back of the object
     rolls = part.kind is not None and info(part.kind).rolls
+    rocker = VERBS[frame.verb].rocker_sense if frame.verb is not None and frame.verb in VERBS and frame.particle is None and frame.sense is sense else None
+    if rocker is not None and part_class_ is PartClass.PUSHED and quantities.direction is None:
+        sense = rocker  # "tilt the wall switch 10 degrees": rocked over, the way it can go
     midway = rotates and geometry.lower is not None and geometry.upper is not None and geometry.lower + MIDWAY_RAD < geometry.rest < geometry.upper - MIDWAY_RAD
     if quantities.direction in _DIRECTIONAL and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None or midway) and not (
             part_class_ is PartClass.PUSHED and geometry.type == "prismatic"):

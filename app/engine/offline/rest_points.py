@@ -59,3 +59,9 @@ class RestPoints:
     def box(self) -> tuple[FloatArray, FloatArray]:
         """(low, high) of the whole object at rest."""
         return self.low_after[0], self.high_after[0]
+
+
+def posed(points: dict[str, FloatArray], poses: dict[str, FloatArray], links: tuple[str, ...] | list[str], frame: int = 0) -> FloatArray:
+    """The local ``points`` of ``links`` placed by ``poses`` (link -> (f, 4, 4)) at ``frame``, stacked."""
+    chunks = [points[n] @ poses[n][frame, :3, :3].T + poses[n][frame, :3, 3] for n in links if n in points]
+    return np.concatenate(chunks) if chunks else np.zeros((0, 3))

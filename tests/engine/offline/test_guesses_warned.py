@@ -40,7 +40,7 @@ def test_an_implied_control_among_two_is_chosen_by_shape_and_said(prompt: str) -
 CONVENTION = "the PartNet-Mobility convention: nothing on it shows where it faces"
 
 
-@pytest.mark.parametrize(("name", "prompt"), [("extra/faucet_1343", "swing the lever to the left"),
+@pytest.mark.parametrize(("name", "prompt"), [("bucket_100454", "fold the handle down toward the front"),
                                               ("extra/toaster_103473", "press the lever nearest me down"),
                                               ("extra/toaster_103473", "push down the back lever")])
 def test_sides_read_from_a_conventional_front_are_said(name: str, prompt: str) -> None:
@@ -48,6 +48,7 @@ def test_sides_read_from_a_conventional_front_are_said(name: str, prompt: str) -
 
 
 @pytest.mark.parametrize(("name", "prompt"), [("extra/faucet_1343", "swing the lever all the way"),  # no side word
-                                              ("refrigerator_11178", "open the left door")])  # its doors show its front
+                                              ("refrigerator_11178", "open the left door"),  # its doors show its front
+                                              ("extra/faucet_1343", "swing the lever to the left")])  # its spout shows its front
 def test_no_convention_warning_without_a_side_or_with_a_shown_front(name: str, prompt: str) -> None:
     assert not any(CONVENTION in n for n in _notes(name, prompt))

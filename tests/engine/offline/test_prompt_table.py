@@ -59,6 +59,12 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- a bare "tilt" rocks a rocker over (it names no way of its own); "a (full) <unit>" is one unit ---
+    R("switch_100952", "Tilt the wall switch 10 degrees.", joints={"joint_0": E(end=0.1745)}),
+    R("switch_100952", "tilt the rocker a full degree", joints={"joint_0": E(end=PI / 180)}),
+    R("switch_100952", "Tilt the rocker a full radian.", refuse=True),
+    R("storage_19179", "pull the top drawer out an inch", joints={"joint_1": E(end=0.0254), "joint_0": E(still=True)}),
+    R("extra/faucet_1343", "swing the lever a single degree to the left", joints={"joint_0": E(end=PI / 180)}),
     # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
     # amount measured from a closed end that is the limit the state named ---
     R("extra/faucet_1343", "swing the tap's lever as far left as it will go", joints={"joint_0": E(end="upper")}),

@@ -1,0 +1,46 @@
+"""Where an object with no door, drawer or lid faces comes from its shape: a tap's spout, the side its controls sit on.
+The cue turns with the object; without any cue the front is PartNet-Mobility's convention, and said to be."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from app.engine.asset.loader import load_asset
+from app.engine.offline.geometry import analyse
+from benchmark.variants import make_variant
+from tests.engine.offline.conftest import asset, asset_dir
+
+MINUS_X = np.array([-1.0, 0.0, 0.0])
+MINUS_Y = np.array([0.0, -1.0, 0.0])
+"""-X turned 90 degrees about up (the ``yaw`` variant)."""
+
+SHOWN = ["faucet_148", "faucet_991", "extra/faucet_1343",  # the spout reaches toward the user
+         "toaster_103477", "toaster_103483", "coffee_machine_103030", "extra/coffee_machine_102145", "switch_100952",  # controls on one side
+         "extra/safe_101612"]
+UNSHOWN = ["bucket_100454", "kitchen_pot_100038", "extra/toaster_103473"]  # round, or levers on two opposite ends
+
+
+@pytest.mark.parametrize("name", SHOWN)
+def test_a_front_shown_by_a_spout_or_controls(name: str) -> None:
+    geometry = analyse(asset(name))
+    assert not geometry.front_by_convention
+    np.testing.assert_allclose(geometry.front, MINUS_X, atol=1e-9)
+
+
+@pytest.mark.parametrize("name", ["faucet_148", "toaster_103477", "extra/safe_101612"])
+def test_the_front_turns_with_the_object(name: str, tmp_path: Path) -> None:
+    turned = tmp_path / name.rsplit("/", 1)[-1]  # the folder's name gives the object's kind (a tap)
+    make_variant(asset_dir(name), turned, ("yaw",))
+    geometry = analyse(load_asset(turned))
+    assert not geometry.front_by_convention
+    np.testing.assert_allclose(geometry.front, MINUS_Y, atol=1e-9)
+
+
+@pytest.mark.parametrize("name", UNSHOWN)
+def test_no_cue_is_the_convention_and_said(name: str) -> None:
+    geometry = analyse(asset(name))
+    assert geometry.front_by_convention
+    np.testing.assert_allclose(geometry.front, MINUS_X, atol=1e-9)
