@@ -16,6 +16,9 @@ The transforms (``--transforms``, comma-separated, applied in this order):
 - ``yaw``: the whole object turned 90 degrees about up (expected base translations turn with it).
   Not a pure re-encoding: where nothing on the object says where its front is, the agent's
   conventional front does not turn, so its results are listed apart.
+- ``mirror``: the object's mirror image across the URDF's XZ plane, and each prompt with its sides and senses of turning
+  swapped ("left" <-> "right", "clockwise" <-> "counterclockwise"), so the expectation stays (its base translations
+  mirrored). Rows where "left" or "right" may mean something else ("right away", "left open") are left out.
 - ``ajar``: every door, lid, drawer, window and screen that rests at a limit rests 30% of the way to
   the other (assets are modelled shut or open). Only rows that take such parts to one of their limits
   ("open the door", "shut the lid") are kept: they mean the same pose whatever the part rests at.
@@ -87,6 +90,9 @@ def transform_expect(expect: dict[str, Any], m: Mapping) -> dict[str, Any]:
     if "hold" in out:
         out["hold"] = {**out["hold"], "joint": m.name(out["hold"]["joint"])}
     base = out.get("base")
+    if base and "translation" in base and m.mirrored:
+        x, y, z = (float(v) for v in base["translation"])
+        base = out["base"] = {**base, "translation": [x, -y, z]}
     if base and "translation" in base and m.yaw_deg:
         turn = rpy_matrix(np.array([0.0, 0.0, math.radians(m.yaw_deg)]))
         out["base"] = {**base, "translation": [round(float(v), 6) for v in turn @ np.array(base["translation"], dtype=float)]}
@@ -99,8 +105,30 @@ def comparable(row: dict[str, Any], transforms: tuple[str, ...]) -> bool:
     if "rename" in transforms and re.search(r"\b(link|joint)_\d", row["prompt"]):
         return False
     if "move" in transforms and "base" in row.get("expect", {}) and TURNS.search(row["prompt"].lower()):
+        return False
+    if "mirror" in transforms and NOT_A_SIDE.search(row["prompt"]):
         return False  # turned in place about its own centre: away from the URDF's origin, that is a translation too
     return "FULL" not in row.get("expect", {}).get("order", [])
+
+
+SWAPPED = {"left": "right", "right": "left", "leftmost": "rightmost", "rightmost": "leftmost", "left-hand": "right-hand",
+           "right-hand": "left-hand", "lefthand": "righthand", "righthand": "lefthand", "clockwise": "counterclockwise",
+           "counterclockwise": "clockwise", "counter-clockwise": "clockwise", "anticlockwise": "clockwise", "anti-clockwise": "clockwise",
+           "cw": "ccw", "ccw": "cw"}
+SIDE_WORDS = re.compile(r"\b(" + "|".join(sorted(map(re.escape, SWAPPED), key=len, reverse=True)) + r")\b", re.IGNORECASE)
+NOT_A_SIDE = re.compile(r"\bright (away|now|after|before|there|here|then|up to|at the|on|into|in|back|through)\b|\ball right\b|\bthat's right\b"
+                        r"|\b(is|was|be|been|are|were|it|them|gets?|got|stays?|remains?|keep|kept) left\b|\bleft (open|ajar|shut|closed|alone|as|in place|"
+                        r"where|untouched|over|behind)\b|\bleft[-_ ]?over", re.IGNORECASE)
+"""'right' and 'left' that are no side ("right away", "the lid left open"): such rows are left out under ``mirror``."""
+
+
+def mirror_words(prompt: str) -> str:
+    """The prompt said of the mirror image: sides and senses of turning swapped, each word's capitals kept."""
+    def swap(match: re.Match[str]) -> str:
+        word = match.group(0)
+        new = SWAPPED[word.lower()]
+        return new.capitalize() if word[0].isupper() else new
+    return SIDE_WORDS.sub(swap, prompt)
 
 
 TURNS = re.compile(r"\b(turn|rotat|spin|angle|around|round|swivel|twist|pivot|fac(e|ing)|quarter)")
@@ -140,7 +168,9 @@ def build(expect_files: list[Path], assets: Path, out: Path, transforms: tuple[s
         rows = [r for r in rows if rests_elsewhere_alike(r, mappings[r["asset_dir"]])]
     original, variant = out / "original.jsonl", out / "expect.jsonl"
     original.write_text("".join(json.dumps(r) + "\n" for r in rows))
-    variant.write_text("".join(json.dumps({**r, "expect": transform_expect(r["expect"], mappings[r["asset_dir"]])}) + "\n" for r in rows))
+    said = mirror_words if "mirror" in transforms else str
+    variant.write_text("".join(json.dumps({**r, "prompt": said(r["prompt"]), "expect": transform_expect(r["expect"], mappings[r["asset_dir"]])}) + "\n"
+                               for r in rows))
     return original, variant
 
 

@@ -1,6 +1,7 @@
 """Variants of an asset folder for the metamorphic probe (:mod:`benchmark.metamorphic`): the same object written
-down differently (``flip``, ``rename``, ``reorder``, ``shift``, ``move``), turned (``yaw``) or resting ajar (``ajar``),
-with the :class:`Mapping` from the original's joint values to the variant's."""
+down differently (``flip``, ``rename``, ``reorder``, ``shift``, ``move``), turned (``yaw``), resting ajar (``ajar``) or
+seen in a mirror (``mirror``: its left and right swapped), with the :class:`Mapping` from the original's joint values to
+the variant's."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from pathlib import Path
 
 import numpy as np
 
-TRANSFORMS = ("flip", "rename", "reorder", "shift", "move", "yaw", "ajar")
+TRANSFORMS = ("flip", "rename", "reorder", "shift", "mirror", "move", "yaw", "ajar")
 PURE = ("flip", "rename", "reorder", "shift", "move")
 MOVABLE = ("revolute", "prismatic", "continuous")
 NUMBERED = re.compile(r"^(link|joint)_(\d+)$")
@@ -31,6 +32,8 @@ class Mapping:
     """Joint -> what ``ajar`` adds to its values (after the sign): the variant's zero is the original's offset."""
     limits: dict[str, tuple[float, float]] = field(default_factory=dict)
     """Joint -> the original's limits, for each joint ``ajar`` set resting part-way."""
+    mirrored: bool = False
+    """``mirror``: the object is its own mirror image across the URDF's XZ plane (world +Y and -Y swapped)."""
 
     def name(self, joint: str) -> str:
         return self.names.get(joint, joint)
@@ -174,6 +177,33 @@ def _shift(robot: ET.Element) -> None:
             _set_origin(element, back @ _origin(element))
 
 
+MIRROR = np.diag([1.0, -1.0, 1.0, 1.0])
+"""``mirror``: the reflection across the URDF's XZ plane."""
+
+
+def _mirror(robot: ET.Element, mapping: Mapping) -> None:
+    """The object's mirror image: every pose ``T`` conjugated by the reflection ``M`` (``M T M``, a proper pose), every
+    mesh scaled by ``M``, so every point lands at ``M p``. A joint moves alike at the same values: a slide along ``M a``,
+    a hinge about ``-M a`` (a reflection reverses the sense of every turn)."""
+    for joint in robot.iter("joint"):
+        _set_origin(joint, MIRROR @ _origin(joint) @ MIRROR)
+        if joint.get("type") in MOVABLE:
+            axis = MIRROR[:3, :3] @ _axis(joint)
+            axis_element = joint.find("axis")
+            if axis_element is None:
+                axis_element = ET.SubElement(joint, "axis")
+            axis_element.set("xyz", _fmt(-axis if joint.get("type") in ("revolute", "continuous") else axis))
+    for link in robot.iter("link"):
+        for element in (e for tag in ("visual", "collision", "inertial") for e in link.findall(tag)):
+            if element.find("origin") is not None:
+                _set_origin(element, MIRROR @ _origin(element) @ MIRROR)
+            for mesh in element.iter("mesh"):
+                scale = _xyz(mesh.get("scale") or "1 1 1")
+                scale = np.repeat(scale, 3) if scale.size == 1 else scale
+                mesh.set("scale", _fmt(MIRROR[:3, :3] @ scale))
+    mapping.mirrored = True
+
+
 def _root_held(robot: ET.Element) -> list[ET.Element]:
     """What places the object in the world: the root link's own shapes and the joints hanging from it."""
     children = {c.get("link", "") for j in robot.iter("joint") if (c := j.find("child")) is not None}
@@ -286,6 +316,8 @@ def make_variant(source: Path, target: Path, transforms: tuple[str, ...]) -> Map
         _reorder(robot)
     if "shift" in transforms:
         _shift(robot)
+    if "mirror" in transforms:
+        _mirror(robot, mapping)
     if "move" in transforms:
         _move(robot)
     if "yaw" in transforms:

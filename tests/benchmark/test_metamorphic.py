@@ -12,6 +12,7 @@ from app.engine.asset.kinematics import link_poses
 from app.engine.asset.loader import load_asset
 from benchmark import metamorphic, variants
 from benchmark.metamorphic import Mapping, comparable, make_variant, transform_expect
+from tests.conftest import partnet_root
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
@@ -61,6 +62,42 @@ def test_pure_variants_place_every_link_alike(tmp_path: Path, transforms: tuple[
         assert (tmp_path / "variant" / "semantics.txt").read_text().splitlines()[0] == "link_2 hinge arm"
     changed = (tmp_path / "variant" / "mobility.urdf").read_text() != MIMIC_URDF
     assert changed
+
+
+def _sorted(points: np.ndarray) -> np.ndarray:
+    return points[np.lexsort(np.round(points, 9).T[::-1])]
+
+
+@pytest.mark.parametrize("transforms", [("mirror",), ("mirror", "flip", "rename", "shift")])
+def test_mirror_places_every_point_at_its_reflection_and_moves_alike(tmp_path: Path, transforms: tuple[str, ...]) -> None:
+    source = tmp_path / "pair"
+    source.mkdir()
+    (source / "mobility.urdf").write_text(MIMIC_URDF)
+    mapping = make_variant(source, tmp_path / "variant", transforms)
+    assert mapping.mirrored
+    links = {"link_0": "link_2", "link_2": "link_0"} if "rename" in transforms else {}
+    for values in ({}, {"joint_0": 0.7, "joint_2": 0.2}, {"joint_0": -0.4, "joint_2": 0.05}):
+        before = _placed(source, values)
+        after = _placed(tmp_path / "variant", {mapping.name(k): mapping.value(k, v) for k, v in values.items()})
+        for link, points in before.items():  # boxes: the same corners, in another order
+            assert np.allclose(_sorted(after[links.get(link, link)]), _sorted(points * [1.0, -1.0, 1.0]), atol=1e-9), (link, values)
+
+
+def test_mirror_swaps_the_prompt_sides_and_the_base_translation() -> None:
+    assert metamorphic.mirror_words("Open the Left door, then turn the knob clockwise") == "Open the Right door, then turn the knob counterclockwise"
+    assert not comparable({"prompt": "Do it right away", "expect": {}}, ("mirror",))
+    assert comparable({"prompt": "open the right door", "expect": {}}, ("mirror",))
+    out = transform_expect({"base": {"translation": [0.1, 0.2, 0.3], "tol": 0.05}}, Mapping(mirrored=True))
+    assert out["base"]["translation"] == [0.1, -0.2, 0.3]
+
+
+def test_mirror_of_a_mesh_asset_reflects_its_vertices(tmp_path: Path) -> None:
+    source = partnet_root() / "faucet_148"
+    make_variant(source, tmp_path / "faucet_148", ("mirror",))
+    for values in ({}, {"joint_0": 0.9}):
+        before, after = _placed(source, values), _placed(tmp_path / "faucet_148", values)
+        for link, points in before.items():  # meshes: each vertex at its reflection, in the same order
+            assert np.allclose(after[link], points * [1.0, -1.0, 1.0], atol=1e-9), link
 
 
 def test_yaw_turns_the_whole_object(tmp_path: Path) -> None:
@@ -119,7 +156,7 @@ def test_main_reports_changed_outcomes(tmp_path: Path, monkeypatch: pytest.Monke
 
 
 def test_unknown_transform_is_an_error(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    assert metamorphic.main(["--expect", "x", "--assets", str(tmp_path), "--out", str(tmp_path / "o"), "--transforms", "mirror"]) == 2
+    assert metamorphic.main(["--expect", "x", "--assets", str(tmp_path), "--out", str(tmp_path / "o"), "--transforms", "mirrored"]) == 2
     assert "unknown transform" in capsys.readouterr().err
 
 
