@@ -18,7 +18,8 @@ The transforms (``--transforms``, comma-separated, applied in this order):
   conventional front does not turn, so its results are listed apart.
 - ``mirror``: the object's mirror image across the URDF's XZ plane, and each prompt with its sides and senses of turning
   swapped ("left" <-> "right", "clockwise" <-> "counterclockwise"), so the expectation stays (its base translations
-  mirrored). Rows where "left" or "right" may mean something else ("right away", "left open") are left out.
+  mirrored). Rows where "left" or "right" may mean something else ("right away", "left open") are left out, and so are
+  rows that lean on a convention a mirror does not keep (a mixer's hot side, a thread's hand, the way a knob turns on).
 - ``ajar``: every door, lid, drawer, window and screen that rests at a limit rests 30% of the way to
   the other (assets are modelled shut or open). Only rows that take such parts to one of their limits
   ("open the door", "shut the lid") are kept: they mean the same pose whatever the part rests at.
@@ -106,7 +107,7 @@ def comparable(row: dict[str, Any], transforms: tuple[str, ...]) -> bool:
         return False
     if "move" in transforms and "base" in row.get("expect", {}) and TURNS.search(row["prompt"].lower()):
         return False
-    if "mirror" in transforms and NOT_A_SIDE.search(row["prompt"]):
+    if "mirror" in transforms and (NOT_A_SIDE.search(row["prompt"]) or HANDED.search(row["prompt"])):
         return False  # turned in place about its own centre: away from the URDF's origin, that is a translation too
     return "FULL" not in row.get("expect", {}).get("order", [])
 
@@ -120,6 +121,10 @@ NOT_A_SIDE = re.compile(r"\bright (away|now|after|before|there|here|then|up to|a
                         r"|\b(is|was|be|been|are|were|it|them|gets?|got|stays?|remains?|keep|kept) left\b|\bleft (open|ajar|shut|closed|alone|as|in place|"
                         r"where|untouched|over|behind)\b|\bleft[-_ ]?over", re.IGNORECASE)
 """'right' and 'left' that are no side ("right away", "the lid left open"): such rows are left out under ``mirror``."""
+HANDED = re.compile(r"\b(hot|cold|warm|warmer|colder|hotter|tighten\w*|loosen\w*|unscrew\w*|screw\w*|unlock\w*|lock\w*)\b"
+                    r"|\b(turn|switch|twist|crank|dial|rotate|put)\b[^.,;:]*\b(on|off|open|shut|closed)\b", re.IGNORECASE)
+"""Conventions a mirror image does not keep: a mixer's hot side, a thread's hand, the way a knob or valve turns on, off,
+open or shut. The variant's true answer keeps the convention, not the reflection, so such rows are left out."""
 
 
 def mirror_words(prompt: str) -> str:
