@@ -81,7 +81,8 @@ def _inspect(args: argparse.Namespace) -> int:
         return 0
     out(f"asset {asset.name}  ({asset.urdf_file}, root link {asset.root_link})")
     out(f"size {' x '.join(f'{v:.3f}' for v in scale.object_bbox_extents_m)} m, diagonal {scale.object_diag_m:.3f} m; "
-        f"front faces {direction_name(layout.front)}{CONVENTION if layout.front_by_convention else ''} (left/right below are as seen from the front)")
+        f"front faces {direction_name(layout.front)}{CONVENTION if layout.front_by_convention else f', shown by {layout.front_shown_by}'} "
+        "(left/right below are as seen from the front)")
     ends = {e.joint: e for e in layout.joints}
     out("\njoints:")
     for name in asset.joint_order:

@@ -87,6 +87,8 @@ def test_mirror_swaps_the_prompt_sides_and_the_base_translation() -> None:
     assert metamorphic.mirror_words("Open the Left door, then turn the knob clockwise") == "Open the Right door, then turn the knob counterclockwise"
     assert not comparable({"prompt": "Do it right away", "expect": {}}, ("mirror",))
     assert comparable({"prompt": "open the right door", "expect": {}}, ("mirror",))
+    for handed in ("turn the tap on", "tighten the cap", "swing the lever toward hot"):  # conventions a mirror does not keep
+        assert not comparable({"prompt": handed, "expect": {}}, ("mirror",)), handed
     out = transform_expect({"base": {"translation": [0.1, 0.2, 0.3], "tol": 0.05}}, Mapping(mirrored=True))
     assert out["base"]["translation"] == [0.1, -0.2, 0.3]
 

@@ -83,6 +83,9 @@ class AssetLayout(BaseModel):
     """World direction of the viewer's right when facing the front."""
     front_by_convention: bool = False
     """Nothing on the object shows where it faces: ``front`` is PartNet-Mobility's convention (-X)."""
+    front_shown_by: str = ""
+    """What showed the front: its doors, drawers, lids or control panel; its spout; the side its controls sit on; or
+    nothing (the convention)."""
     parts: list[PartPlace]
     joints: list[JointEnds]
 
@@ -215,6 +218,7 @@ def asset_layout(asset: ArticulatedAsset) -> AssetLayout:
     """Part positions (as seen from the front) and joint ends of ``asset``."""
     geometry = analyse(asset)
     return AssetLayout(front=_vector(geometry.front), right=_vector(geometry.right), front_by_convention=geometry.front_by_convention,
+                       front_shown_by=geometry.front_cue.value,
                        parts=_parts(asset, geometry), joints=_joints(asset, geometry))
 
 

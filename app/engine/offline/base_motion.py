@@ -1,7 +1,7 @@
 """Whole-object motion: direction, distance, yaw, and wheels that roll without slipping.
 
 "Forward" is the object's front (where its doors, drawers and controls face; for a
-vehicle, where its front wheels are), as :func:`app.engine.offline.geometry.infer_front`
+vehicle, where its front wheels are; for a tap, where its spout reaches), as :mod:`app.engine.offline.front`
 decides. A push with no direction moves a vehicle forward and anything else away from the
 user standing at its front; a guessed direction or distance is reported by the caller.
 """

@@ -8,6 +8,7 @@ over its foot), then the side faces the controls sit on. Without any cue at all,
 
 from __future__ import annotations
 
+from enum import StrEnum
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -97,19 +98,29 @@ def by_convention(vote: FloatArray) -> bool:
     return bool(np.linalg.norm(vote) < 1e-6)
 
 
+class FrontCue(StrEnum):
+    """What showed the object's front (``artimo inspect`` says it)."""
+
+    PARTS = "its doors, drawers, lids or control panel"
+    SPOUT = "its spout"
+    CONTROLS = "the side its controls sit on"
+    CONVENTION = "nothing: PartNet-Mobility's convention"
+
+
 def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
-                points: dict[str, FloatArray], rest: dict[str, FloatArray], category: str | None = None) -> FloatArray:
-    """The sum of every cue to the object's front (zero when nothing on it says where it faces). Doors, drawers, lids
-    and parts named front come first; without them a spouted object's reach (a tap, by ``category``), then the faces its
-    controls sit on (a toaster's lever and knob)."""
+                points: dict[str, FloatArray], rest: dict[str, FloatArray], category: str | None = None) -> tuple[FloatArray, FrontCue]:
+    """The sum of the strongest cues to the object's front (zero when nothing on it says where it faces) and what they
+    are. Doors, drawers, lids and parts named front come first; without them a spouted object's reach (a tap, by
+    ``category``), then the faces its controls sit on (a toaster's lever and knob)."""
     vote = _named_front(joints)
     for geometry in joints.values():
         vote = vote + _front_vote(geometry, center, asset, points, rest)
-    if by_convention(vote) and category in SPOUTED:
-        vote = _reach(asset, joints, points, rest)
-    if by_convention(vote):
-        vote = _control_faces(joints)
-    return vote
+    if not by_convention(vote):
+        return vote, FrontCue.PARTS
+    if category in SPOUTED and not by_convention(vote := _reach(asset, joints, points, rest)):
+        return vote, FrontCue.SPOUT
+    vote = _control_faces(joints)
+    return vote, FrontCue.CONVENTION if by_convention(vote) else FrontCue.CONTROLS
 
 
 def _reach(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
@@ -132,14 +143,6 @@ def _control_faces(joints: dict[str, JointGeometry]) -> FloatArray:
         if geometry.category in CONTROL_KINDS and abs(float(geometry.home_face @ UP)) < SIDE_FACE:
             vote = vote + _horizontal(geometry.home_face)
     return vote
-
-
-def infer_front(joints: dict[str, JointGeometry], center: FloatArray, asset: ArticulatedAsset,
-                points: dict[str, FloatArray], rest: dict[str, FloatArray]) -> FloatArray:
-    """Horizontal unit vector the object faces: where doors, drawers and controls point
-    (and where parts named "front" sit, e.g. a car's front wheels); ``points`` and ``rest`` as
-    :func:`_local_points` and ``link_poses(asset, {}, frames=1)``."""
-    return front_of(front_votes(joints, center, asset, points, rest))
 
 
 def front_of(vote: FloatArray) -> FloatArray:

@@ -18,7 +18,7 @@ import numpy as np
 from app.engine.asset.kinematics import link_poses, subtree_motion, subtree_poses
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info, kind_of_label
-from app.engine.offline.front import UP, by_convention, front_of, front_votes
+from app.engine.offline.front import UP, FrontCue, by_convention, front_of, front_votes
 from app.engine.offline.naming import link_kind
 from app.engine.offline.rest_points import RestPoints
 from app.engine.offline.rest_points import posed as _posed
@@ -85,6 +85,8 @@ class ObjectGeometry:
     front_by_convention: bool = False
     """No door, drawer, lid, tilted panel, part named front, tap's spout or control on a side shows where the object
     faces (:mod:`app.engine.offline.front`): ``front`` is :data:`DEFAULT_FRONT`, PartNet-Mobility's convention, and every left/right/front/back read from it a guess."""
+    front_cue: FrontCue = FrontCue.PARTS
+    """What showed the front."""
 
     def local(self, point: FloatArray) -> FloatArray:
         """(front, right, up) coordinates of a world point relative to the object centre."""
@@ -284,7 +286,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     center = (low + high) / 2.0
     joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
                             points)
-    vote = front_votes(joints, center, asset, points, rest, object_category(asset))
+    vote, cue = front_votes(joints, center, asset, points, rest, object_category(asset))
     front = front_of(vote)
     right = np.cross(-front, UP)
     return ObjectGeometry(
@@ -297,6 +299,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
         joints=joints,
         category=object_category(asset),
         front_by_convention=by_convention(vote),
+        front_cue=cue,
     )
 
 

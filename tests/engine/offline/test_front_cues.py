@@ -9,6 +9,8 @@ import numpy as np
 import pytest
 
 from app.engine.asset.loader import load_asset
+from app.cli.main import main
+from app.engine.offline.front import FrontCue
 from app.engine.offline.geometry import analyse
 from benchmark.variants import make_variant
 from tests.engine.offline.conftest import asset, asset_dir
@@ -17,17 +19,26 @@ MINUS_X = np.array([-1.0, 0.0, 0.0])
 MINUS_Y = np.array([0.0, -1.0, 0.0])
 """-X turned 90 degrees about up (the ``yaw`` variant)."""
 
-SHOWN = ["faucet_148", "faucet_991", "extra/faucet_1343",  # the spout reaches toward the user
-         "toaster_103477", "toaster_103483", "coffee_machine_103030", "extra/coffee_machine_102145", "switch_100952",  # controls on one side
-         "extra/safe_101612"]
+SHOWN = {"faucet_148": FrontCue.SPOUT, "faucet_991": FrontCue.SPOUT, "extra/faucet_1343": FrontCue.SPOUT,  # it reaches toward the user
+         "toaster_103477": FrontCue.CONTROLS, "toaster_103483": FrontCue.CONTROLS, "coffee_machine_103030": FrontCue.CONTROLS,
+         "extra/coffee_machine_102145": FrontCue.CONTROLS, "switch_100952": FrontCue.CONTROLS, "extra/safe_101612": FrontCue.CONTROLS,
+         "microwave_7119": FrontCue.PARTS}
 UNSHOWN = ["bucket_100454", "kitchen_pot_100038", "extra/toaster_103473"]  # round, or levers on two opposite ends
 
 
-@pytest.mark.parametrize("name", SHOWN)
-def test_a_front_shown_by_a_spout_or_controls(name: str) -> None:
+@pytest.mark.parametrize(("name", "cue"), SHOWN.items())
+def test_a_front_shown_by_a_spout_or_controls(name: str, cue: FrontCue) -> None:
     geometry = analyse(asset(name))
     assert not geometry.front_by_convention
+    assert geometry.front_cue is cue
     np.testing.assert_allclose(geometry.front, MINUS_X, atol=1e-9)
+
+
+def test_inspect_says_what_showed_the_front(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["inspect", str(asset_dir("faucet_148"))]) == 0
+    assert "front faces -X, shown by its spout" in capsys.readouterr().out
+    assert main(["inspect", str(asset_dir("bucket_100454"))]) == 0
+    assert "front faces -X by convention: nothing on it shows where it faces" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("name", ["faucet_148", "toaster_103477", "extra/safe_101612"])
@@ -42,5 +53,5 @@ def test_the_front_turns_with_the_object(name: str, tmp_path: Path) -> None:
 @pytest.mark.parametrize("name", UNSHOWN)
 def test_no_cue_is_the_convention_and_said(name: str) -> None:
     geometry = analyse(asset(name))
-    assert geometry.front_by_convention
+    assert geometry.front_by_convention and geometry.front_cue is FrontCue.CONVENTION
     np.testing.assert_allclose(geometry.front, MINUS_X, atol=1e-9)
