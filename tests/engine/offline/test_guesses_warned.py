@@ -52,3 +52,14 @@ def test_sides_read_from_a_conventional_front_are_said(name: str, prompt: str) -
                                               ("extra/faucet_1343", "swing the lever to the left")])  # its spout shows its front
 def test_no_convention_warning_without_a_side_or_with_a_shown_front(name: str, prompt: str) -> None:
     assert not any(CONVENTION in n for n in _notes(name, prompt))
+
+
+@pytest.mark.parametrize(("prompt", "note"), [("pull the top drawer out a few centimetres", "read 'a few' as '3'"),
+                                              ("pull the top drawer out a couple of inches", "read 'a couple of' as '2'"),
+                                              ("pull the top drawer out several centimetres", "read 'several' as '4'")])
+def test_a_vague_count_of_a_unit_says_the_number_taken(prompt: str, note: str) -> None:
+    assert note in _notes("storage_19179", prompt)
+
+
+def test_a_plain_count_of_a_unit_is_no_guess() -> None:
+    assert not any("as '1'" in n for n in _notes("storage_19179", "pull the top drawer out an inch"))

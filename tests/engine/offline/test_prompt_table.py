@@ -64,6 +64,13 @@ ROWS: list[Row] = [
     R("switch_100952", "tilt the rocker a full degree", joints={"joint_0": E(end=PI / 180)}),
     R("switch_100952", "Tilt the rocker a full radian.", refuse=True),
     R("storage_19179", "pull the top drawer out an inch", joints={"joint_1": E(end=0.0254), "joint_0": E(still=True)}),
+    R("storage_19179", "pull the top drawer out an inch and a half", joints={"joint_1": E(end=0.0381)}),
+    R("storage_19179", "pull the top drawer out a half inch", joints={"joint_1": E(end=0.0127)}),
+    R("storage_19179", "pull the top drawer out a couple of inches", joints={"joint_1": E(end=0.0508)}),
+    R("storage_19179", "slide the top drawer out a few centimetres", joints={"joint_1": E(end=0.03)}),
+    R("storage_19179", "pull the top drawer out several centimetres", joints={"joint_1": E(end=0.04)}),
+    R("bucket_102352", "Hoist the bucket half a metre into the air.", base=(0.0, 0.0, 0.5)),
+    R("storage_19179", "pull the top drawer a quarter of an inch out", joints={"joint_1": E(end=0.00635)}),
     R("extra/faucet_1343", "swing the lever a single degree to the left", joints={"joint_0": E(end=PI / 180)}),
     # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
     # amount measured from a closed end that is the limit the state named ---

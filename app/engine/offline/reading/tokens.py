@@ -17,6 +17,7 @@ from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
+from app.engine.offline.reading.counts import counted_unit
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.framing import drop_framing
 from app.engine.offline.reading.part_words import kind_of_word
@@ -191,29 +192,16 @@ def _counts(tokens: list[Token], i: int) -> bool:
     return i < len(tokens) and (tokens[i].text in _COUNTED or tokens[i].number is not None)
 
 
-_ONE_MEASURE = frozenset({"degree", "deg", "radian", "rad", "cm", "mm", "centimeter", "centimetre", "millimeter", "millimetre", "meter", "metre",
-                          "inch", "°"})
-"""Units "a" counts as one ("a degree", "an inch"); not "foot" ("press it with a foot") nor turns (read as fractions of a turn)."""
-_ONE_INTENSIFIERS = frozenset({"full", "whole", "single", "good", "mere", "bare", "solid"})
-
-
-def _a_unit(tokens: list[Token], i: int) -> int:
-    """Tokens "a (full) radian" spends before its unit, as the number one (0 when it is no such phrase)."""
-    if tokens[i].text not in ("a", "an") or (i > 0 and (tokens[i - 1].text in ("half", "of") or tokens[i - 1].text in DENOMINATORS)):
-        return 0  # "half a metre", "a quarter of an inch": a fraction of the unit
-    j = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text in _ONE_INTENSIFIERS)
-    return j - i if j < len(tokens) and tokens[j].text in _ONE_MEASURE else 0
-
-
 def _join_numbers(tokens: list[Token]) -> list[Token]:
-    """Spelled-out numbers to one numeric token: "a hundred and twenty", "forty five", "one and a half", "a full radian"."""
+    """Spelled-out numbers to one numeric token: "a hundred and twenty", "forty five", "one and a half", "a full radian"
+    (:mod:`.counts`)."""
     out: list[Token] = []
     i = 0
     while i < len(tokens):
-        spent = _a_unit(tokens, i)
-        if spent:
-            out.append(Token("1", "1", tokens[i].start, tokens[i + spent - 1].end, number=1.0))
-            i += spent
+        counted = counted_unit(tokens, i)
+        if counted is not None:  # "a couple of inches", "an inch and a half": the count, then its unit
+            out += counted[0]
+            i += counted[1]
             continue
         value = _number_word(tokens[i].text) if tokens[i].number is None and tokens[i].text not in AMOUNTS else None  # "three-quarters": an amount
         after_qualifier = i > 0 and tokens[i - 1].text in _QUALIFIERS

@@ -1,0 +1,52 @@
+"""Counts in words before a unit of measure: "a degree", "a full radian", "an inch and a half", "a half inch", "a couple of
+inches", "a few degrees", "several centimetres". The vague ones ("a few") keep what was typed, so the reading notes the
+number taken."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.words import DENOMINATORS
+from app.engine.offline.reading.token import Token
+
+_SINGULAR_MEASURES = ("degree", "deg", "radian", "rad", "cm", "mm", "centimeter", "centimetre", "millimeter", "millimetre", "meter", "metre", "°")
+_MEASURES = frozenset({*_SINGULAR_MEASURES, *(f"{unit}s" for unit in _SINGULAR_MEASURES), "inch", "inches"})
+"""Units a count in words can measure ("a degree", "a couple of inches"); not "foot" ("press it with a foot") nor turns
+(read as fractions of a turn)."""
+_ONE_INTENSIFIERS = frozenset({"full", "whole", "single", "good", "mere", "bare", "solid"})
+_VAGUE_COUNTS = {"a_couple_of": 2.0, "couple": 2.0, "a_couple": 2.0, "a_few": 3.0, "few": 3.0, "several": 4.0}
+"""Counts in words a unit follows ("a few degrees"): read with a note that says the number taken."""
+
+
+def _count(tokens: list[Token], i: int) -> tuple[float, int, bool]:
+    """(count, tokens spent before its unit, vague) for "a (full) radian", "an inch and a half", "a couple of inches", "a
+    few degrees"; (0, 0, False) when the tokens at ``i`` are no such phrase."""
+    word = tokens[i].text
+    if i > 0 and (tokens[i - 1].text in ("half", "of") or tokens[i - 1].text in DENOMINATORS):
+        return 0.0, 0, False  # "half a metre", "a quarter of an inch": a fraction of the unit
+    j, count, vague = i + 1, 1.0, False
+    if word in ("a", "an") and j < len(tokens) and tokens[j].text in ("couple", "half"):
+        count, vague, j = (2.0, True, j + 1 + (j + 1 < len(tokens) and tokens[j + 1].text == "of")) if tokens[j].text == "couple" else (0.5, False, j + 1)
+    elif word in ("a", "an"):
+        j += j < len(tokens) and tokens[j].text in _ONE_INTENSIFIERS
+    elif word in _VAGUE_COUNTS:
+        count, vague = _VAGUE_COUNTS[word], True
+        j += word in ("couple", "few") and j < len(tokens) and tokens[j].text == "of"
+    else:
+        return 0.0, 0, False
+    return (count, j - i, vague) if j < len(tokens) and tokens[j].text in _MEASURES else (0.0, 0, False)
+
+
+def _and_a_half(tokens: list[Token], j: int) -> bool:
+    return j + 2 < len(tokens) and (tokens[j].text, tokens[j + 1].text, tokens[j + 2].text) == ("and", "a", "half")
+
+
+def counted_unit(tokens: list[Token], i: int) -> tuple[list[Token], int] | None:
+    """The count at ``i`` as a number token followed by its unit, and how many tokens that replaces (None when the
+    tokens at ``i`` are no such phrase)."""
+    count, spent, vague = _count(tokens, i)
+    if not spent:
+        return None
+    half = count == 1.0 and _and_a_half(tokens, i + spent + 1)
+    count += 0.5 * half
+    said = " ".join(t.text.replace("_", " ") for t in tokens[i:i + spent])
+    number = Token(f"{count:g}", f"{count:g}", tokens[i].start, tokens[i + spent - 1].end, number=count, corrected_from=said if vague else None)
+    return [number, tokens[i + spent]], spent + 1 + 3 * half
