@@ -71,6 +71,11 @@ ROWS: list[Row] = [
     R("storage_19179", "pull the top drawer out several centimetres", joints={"joint_1": E(end=0.04)}),
     R("bucket_102352", "Hoist the bucket half a metre into the air.", base=(0.0, 0.0, 0.5)),
     R("storage_19179", "pull the top drawer a quarter of an inch out", joints={"joint_1": E(end=0.00635)}),
+    R("storage_19179", "pull the top drawer out 2 and a half inches", joints={"joint_1": E(end=0.0635)}),
+    R("storage_19179", "pull the top drawer out two inches and a half", joints={"joint_1": E(end=0.0635)}),
+    R("storage_19179", "pull the top drawer out 5 cm, then 2 more centimetres", joints={"joint_1": E(end=0.07)}),
+    R("storage_19179", "pull the top drawer out 5 cm, then a couple more centimetres", joints={"joint_1": E(end=0.07)}),
+    R("microwave_7119", "open the door a dozen degrees", joints={"joint_0": E(end=PI / 15)}),
     R("extra/faucet_1343", "swing the lever a single degree to the left", joints={"joint_0": E(end=PI / 180)}),
     # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
     # amount measured from a closed end that is the limit the state named ---

@@ -1,6 +1,7 @@
-"""Counts in words before a unit of measure: "a degree", "a full radian", "an inch and a half", "a half inch", "a couple of
-inches", "a few degrees", "several centimetres". The vague ones ("a few") keep what was typed, so the reading notes the
-number taken."""
+"""Counts in words before a unit of measure: "a degree", "a full radian", "an inch and a half", "a half inch", "a dozen
+degrees", "a couple of inches", "a few degrees", "several centimetres". The vague ones ("a few") keep what was typed, so
+the reading notes the number taken. And numbers said around their unit: "2 and a half inches", "2 inches and a half",
+"2 more centimetres" (the number, then its unit, then "more")."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ _MEASURES = frozenset({*_SINGULAR_MEASURES, *(f"{unit}s" for unit in _SINGULAR_M
 """Units a count in words can measure ("a degree", "a couple of inches"); not "foot" ("press it with a foot") nor turns
 (read as fractions of a turn)."""
 _ONE_INTENSIFIERS = frozenset({"full", "whole", "single", "good", "mere", "bare", "solid"})
+_MORE = frozenset({"more", "extra", "further", "additional"})
 _VAGUE_COUNTS = {"a_couple_of": 2.0, "couple": 2.0, "a_couple": 2.0, "a_few": 3.0, "few": 3.0, "several": 4.0}
 """Counts in words a unit follows ("a few degrees"): read with a note that says the number taken."""
 
@@ -20,11 +22,12 @@ def _count(tokens: list[Token], i: int) -> tuple[float, int, bool]:
     """(count, tokens spent before its unit, vague) for "a (full) radian", "an inch and a half", "a couple of inches", "a
     few degrees"; (0, 0, False) when the tokens at ``i`` are no such phrase."""
     word = tokens[i].text
-    if i > 0 and (tokens[i - 1].text in ("half", "of") or tokens[i - 1].text in DENOMINATORS):
-        return 0.0, 0, False  # "half a metre", "a quarter of an inch": a fraction of the unit
+    if i > 0 and (tokens[i - 1].text in ("half", "of", "and") or tokens[i - 1].text in DENOMINATORS):
+        return 0.0, 0, False  # "half a metre", "a quarter of an inch": a fraction of the unit; "2 and a half inches"
     j, count, vague = i + 1, 1.0, False
-    if word in ("a", "an") and j < len(tokens) and tokens[j].text in ("couple", "half"):
-        count, vague, j = (2.0, True, j + 1 + (j + 1 < len(tokens) and tokens[j + 1].text == "of")) if tokens[j].text == "couple" else (0.5, False, j + 1)
+    if word in ("a", "an") and j < len(tokens) and tokens[j].text in ("couple", "half", "dozen"):
+        count, vague = {"couple": (2.0, True), "half": (0.5, False), "dozen": (12.0, False)}[tokens[j].text]
+        j += 1 + (tokens[j].text == "couple" and j + 1 < len(tokens) and tokens[j + 1].text == "of")
     elif word in ("a", "an"):
         j += j < len(tokens) and tokens[j].text in _ONE_INTENSIFIERS
     elif word in _VAGUE_COUNTS:
@@ -32,6 +35,8 @@ def _count(tokens: list[Token], i: int) -> tuple[float, int, bool]:
         j += word in ("couple", "few") and j < len(tokens) and tokens[j].text == "of"
     else:
         return 0.0, 0, False
+    if j + 1 < len(tokens) and tokens[j].text in _MORE and vague:
+        j += 1  # "a couple more centimetres"
     return (count, j - i, vague) if j < len(tokens) and tokens[j].text in _MEASURES else (0.0, 0, False)
 
 
@@ -47,6 +52,30 @@ def counted_unit(tokens: list[Token], i: int) -> tuple[list[Token], int] | None:
         return None
     half = count == 1.0 and _and_a_half(tokens, i + spent + 1)
     count += 0.5 * half
-    said = " ".join(t.text.replace("_", " ") for t in tokens[i:i + spent])
+    more = [tokens[i + spent - 1]] if tokens[i + spent - 1].text in _MORE else []
+    said = " ".join(t.text.replace("_", " ") for t in tokens[i:i + spent - len(more)])
     number = Token(f"{count:g}", f"{count:g}", tokens[i].start, tokens[i + spent - 1].end, number=count, corrected_from=said if vague else None)
-    return [number, tokens[i + spent]], spent + 1 + 3 * half
+    return [number, tokens[i + spent], *more], spent + 1 + 3 * half
+
+
+
+def tidy_counts(tokens: list[Token]) -> list[Token]:
+    """Numbers said around their unit, put as the amount reader takes them: "2 and a half inches" and "2 inches and a
+    half" are 2.5 inches; "2 more centimetres" is "2 centimetres more"."""
+    out: list[Token] = []
+    i = 0
+    while i < len(tokens):
+        t = tokens[i]
+        if t.number is not None and _and_a_half(tokens, i + 1):
+            out.append(Token(f"{t.number + 0.5:g}", f"{t.number + 0.5:g}", t.start, tokens[i + 3].end, number=t.number + 0.5))
+            i += 4
+        elif t.number is not None and i + 1 < len(tokens) and tokens[i + 1].text in _MEASURES and _and_a_half(tokens, i + 2):
+            out += [Token(f"{t.number + 0.5:g}", f"{t.number + 0.5:g}", t.start, t.end, number=t.number + 0.5), tokens[i + 1]]
+            i += 5
+        elif t.number is not None and i + 2 < len(tokens) and tokens[i + 1].text in _MORE and tokens[i + 2].text in _MEASURES:
+            out += [t, tokens[i + 2], tokens[i + 1]]
+            i += 3
+        else:
+            out.append(t)
+            i += 1
+    return out

@@ -17,7 +17,7 @@ from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
-from app.engine.offline.reading.counts import counted_unit
+from app.engine.offline.reading.counts import counted_unit, tidy_counts
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.framing import drop_framing
 from app.engine.offline.reading.part_words import kind_of_word
@@ -232,7 +232,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
         text = f"{value:g}"
         out.append(Token(text, text, start, tokens[j - 1].end, number=value))
         i = j
-    return out
+    return tidy_counts(out)
 
 
 _SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode", "keys", "buttons", "digits", "numbers"})
