@@ -115,16 +115,19 @@ def comparable(row: dict[str, Any], transforms: tuple[str, ...]) -> bool:
 SWAPPED = {"left": "right", "right": "left", "leftmost": "rightmost", "rightmost": "leftmost", "left-hand": "right-hand",
            "right-hand": "left-hand", "lefthand": "righthand", "righthand": "lefthand", "clockwise": "counterclockwise",
            "counterclockwise": "clockwise", "counter-clockwise": "clockwise", "anticlockwise": "clockwise", "anti-clockwise": "clockwise",
-           "cw": "ccw", "ccw": "cw"}
+           "cw": "ccw", "ccw": "cw", "counter clockwise": "clockwise", "anti clockwise": "clockwise", "rigth": "left", "rihgt": "left",
+           "lefft": "right", "clockwsie": "counterclockwise", "anticlokwise": "clockwise"}
 SIDE_WORDS = re.compile(r"\b(" + "|".join(sorted(map(re.escape, SWAPPED), key=len, reverse=True)) + r")\b", re.IGNORECASE)
-NOT_A_SIDE = re.compile(r"\bright (away|now|after|before|there|here|then|up to|at the|on|into|in|back|through)\b|\ball right\b|\bthat's right\b"
+NOT_A_SIDE = re.compile(r"\bright (away|now|after|before|there|here|then|up to|at the|on|into|in|back|through|angle|below|above|under|over|"
+                        r"next|beside|by|behind|against|this|the|that|it)\b|\bright-angle|\ball right\b|\bthat's right\b"
                         r"|\b(is|was|be|been|are|were|it|them|gets?|got|stays?|remains?|keep|kept) left\b|\bleft (open|ajar|shut|closed|alone|as|in place|"
-                        r"where|untouched|over|behind)\b|\bleft[-_ ]?over", re.IGNORECASE)
+                        r"where|untouched|over|behind|there|standing|sitting|hanging|sticking|resting)\b|\bleft[-_ ]?over", re.IGNORECASE)
 """'right' and 'left' that are no side ("right away", "the lid left open"): such rows are left out under ``mirror``."""
-HANDED = re.compile(r"\b(hot|cold|warm|warmer|colder|hotter|tighten\w*|loosen\w*|unscrew\w*|screw\w*|unlock\w*|lock\w*)\b"
+HANDED = re.compile(r"\b(hot|cold|warm|warmer|colder|hotter|hottest|coldest|tighten\w*|loosen\w*|unscrew\w*|screw\w*|unlock\w*|lock\w*|"
+                    r"cap|bottle|o'?\s?clock|keypad|key pad|number pad|code|digits?|keys?)\b|\d\s*[-,]\s*\d"
                     r"|\b(turn|switch|twist|crank|dial|rotate|put)\b[^.,;:]*\b(on|off|open|shut|closed)\b", re.IGNORECASE)
 """Conventions a mirror image does not keep: a mixer's hot side, a thread's hand, the way a knob or valve turns on, off,
-open or shut. The variant's true answer keeps the convention, not the reflection, so such rows are left out."""
+open or shut, a clock face, a keypad's layout. The variant's true answer keeps the convention, not the reflection, so such rows are left out."""
 
 
 def mirror_words(prompt: str) -> str:

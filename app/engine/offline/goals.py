@@ -132,6 +132,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "closed"  # a latch whose shut end is known (from the lid it holds)
     if state == "rest" and sense in (VerbSense.LOCK, VerbSense.CLOSE) and geometry.closed_value is not None:
         return "closed"  # a latch whose shut end is known (from the lid it holds)
+    if sense in (VerbSense.OPEN, VerbSense.UNLATCH) and part_class_ is not PartClass.OPENABLE and geometry.open_value is not None and (
+            geometry.closed_value is not None and quantities.sense is None):
+        return "open"  # a latch whose open end is known: "the other stays open" is that end, not a turn of the URDF's sense
     if state == "open" and geometry.open_value is None and part_class_ is PartClass.OPENABLE and geometry.up_value is not None and sense is VerbSense.RAISE:
         return "up"
     if sense is VerbSense.RAISE and part_class_ is not PartClass.OPENABLE and geometry.up_value is None:

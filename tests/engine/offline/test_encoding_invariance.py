@@ -15,7 +15,7 @@ import pytest
 from app.engine.asset.loader import load_asset
 from app.engine.errors import GroundingError
 from app.engine.execute.trajectory import Trajectory
-from benchmark.metamorphic import Mapping, make_variant
+from benchmark.metamorphic import Mapping, make_variant, mirror_words
 from tests.engine.offline.conftest import animate, animate_model, asset_dir
 
 ROWS = [
@@ -120,3 +120,26 @@ def test_an_object_with_a_front_turned_on_the_table_moves_alike(name: str, promp
     assert np.allclose(variant.q, original.q, atol=1e-6)
     turn = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
     assert np.allclose(variant.base_translation, original.base_translation @ turn.T, atol=1e-6)
+
+
+MIRROR_ROWS = [
+    ("coffee_machine_103030", "Turn the speed dial a quarter turn counterclockwise, and then another 45 degrees the same way."),
+    ("coffee_machine_103030", "Turn the speed dial a quarter turn counterclockwise, then do the same again."),
+    ("extra/box_100214", "Close the lid. Once it's down, fasten the left-hand latch - only that one, the other stays open."),
+    ("refrigerator_11178", "open the left door halfway, then the right one all the way"),
+    ("extra/faucet_1343", "swing the lever 30 degrees to the right"),
+    ("washing_machine_103508", "turn the rightmost knob 45 degrees clockwise"),
+    ("microwave_7304", "Scoot the microwave 20 cm to the left."),
+]
+
+
+@pytest.mark.parametrize(("name", "prompt"), MIRROR_ROWS, ids=[f"{n}: {p}" for n, p in MIRROR_ROWS])
+def test_the_mirror_image_said_with_its_sides_swapped_moves_alike(name: str, prompt: str, tmp_path: Path) -> None:
+    """The object's mirror image (``mirror``), asked with left/right and clockwise/counterclockwise swapped, moves the
+    same joints to the same values (a reflection keeps each joint's values), and a whole-object motion is mirrored."""
+    make_variant(asset_dir(name), tmp_path / name, ("mirror",))
+    original = animate(name, prompt).trajectory
+    variant = animate_model(load_asset(tmp_path / name), mirror_words(prompt)).trajectory
+    assert np.allclose(variant.q, original.q, atol=1e-6)
+    assert np.allclose(variant.base_translation, original.base_translation * [1.0, -1.0, 1.0], atol=1e-6)
+    assert float(np.ptp(original.q)) > 1e-3 or original.has_base_motion(), "the row moves nothing: it tests nothing"

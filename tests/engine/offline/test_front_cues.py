@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from app.engine.asset.loader import load_asset
 from app.cli.main import main
+from app.engine.asset.loader import load_asset
 from app.engine.offline.front import FrontCue
 from app.engine.offline.geometry import analyse
 from benchmark.variants import make_variant

@@ -54,6 +54,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         source = previous if previous.quantities.amount is not None or measured is None else measured  # "the same amount": the last one said
         quantities = replace(frame.quantities, amount=frame.quantities.amount or source.quantities.amount)
         if frame.verb is None or frame.verb == "do" or frame.guessed_verb is not None:  # "give the other one the same"
+            quantities = replace(quantities, sense=quantities.sense or previous.quantities.sense,  # "... counterclockwise, then do the same"
+                                 direction=quantities.direction or previous.quantities.direction)
             themes = frame.themes or frame.instruments  # "do the same with the other one": the other one is the theme
             return replace(frame, verb=previous.verb, sense=previous.sense, particle=previous.particle, quantities=quantities,
                            themes=themes or previous.themes, instruments=() if not frame.themes else frame.instruments)

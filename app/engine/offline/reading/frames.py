@@ -264,6 +264,8 @@ def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
     return None, tokens
 
 
+_SAME_WAY = frozenset({"in_the_same_direction", "the_same_way"})
+""""another 45 degrees the same way": the direction and sense of turning of the clause before."""
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
@@ -377,7 +379,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
-        guessed_verb=guessed, same_direction="in_the_same_direction" in words,
+        guessed_verb=guessed, same_direction=bool(words & _SAME_WAY),
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
