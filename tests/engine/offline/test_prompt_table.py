@@ -76,6 +76,10 @@ ROWS: list[Row] = [
     R("storage_19179", "pull the top drawer out 5 cm, then 2 more centimetres", joints={"joint_1": E(end=0.07)}),
     R("storage_19179", "pull the top drawer out 5 cm, then a couple more centimetres", joints={"joint_1": E(end=0.07)}),
     R("microwave_7119", "open the door a dozen degrees", joints={"joint_0": E(end=PI / 15)}),
+    R("storage_27044", "could u open teh drawer by a quarter metre (25 cm)?", joints={"joint_0": E(end=0.25)}),
+    R("storage_27044", "open the drawer three quarters inch", joints={"joint_0": E(end=0.01905)}),
+    R("storage_27044", "open the drawer an eighth inch", joints={"joint_0": E(end=0.003175)}),
+    R("storage_27044", "open the drawer a quarter", joints={"joint_0": E(end=0.25 * 0.684)}),
     R("extra/faucet_1343", "swing the lever a single degree to the left", joints={"joint_0": E(end=PI / 180)}),
     # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
     # amount measured from a closed end that is the limit the state named ---

@@ -14,6 +14,8 @@ _MEASURES = frozenset({*_SINGULAR_MEASURES, *(f"{unit}s" for unit in _SINGULAR_M
 (read as fractions of a turn)."""
 _ONE_INTENSIFIERS = frozenset({"full", "whole", "single", "good", "mere", "bare", "solid"})
 _MORE = frozenset({"more", "extra", "further", "additional"})
+_FRACTIONS = {"a_quarter": 0.25, "a_third": 1 / 3, "three_quarters": 0.75, "three-quarters": 0.75, "two_thirds": 2 / 3, "two-thirds": 2 / 3}
+"""Fractions said straight before a unit ("a quarter metre", "three quarters inch"): that share of one unit."""
 _VAGUE_COUNTS = {"a_couple_of": 2.0, "couple": 2.0, "a_couple": 2.0, "a_few": 3.0, "few": 3.0, "several": 4.0}
 """Counts in words a unit follows ("a few degrees"): read with a note that says the number taken."""
 
@@ -28,8 +30,12 @@ def _count(tokens: list[Token], i: int) -> tuple[float, int, bool]:
     if word in ("a", "an") and j < len(tokens) and tokens[j].text in ("couple", "half", "dozen"):
         count, vague = {"couple": (2.0, True), "half": (0.5, False), "dozen": (12.0, False)}[tokens[j].text]
         j += 1 + (tokens[j].text == "couple" and j + 1 < len(tokens) and tokens[j + 1].text == "of")
+    elif word in ("a", "an") and j < len(tokens) and tokens[j].text in DENOMINATORS and tokens[j].text not in ("half", "quarter", "third"):
+        count, j = 1.0 / DENOMINATORS[tokens[j].text], j + 1  # "an eighth inch"
     elif word in ("a", "an"):
         j += j < len(tokens) and tokens[j].text in _ONE_INTENSIFIERS
+    elif word in _FRACTIONS:
+        count = _FRACTIONS[word]
     elif word in _VAGUE_COUNTS:
         count, vague = _VAGUE_COUNTS[word], True
         j += word in ("couple", "few") and j < len(tokens) and tokens[j].text == "of"
