@@ -108,7 +108,7 @@ DIRECTIONS: Mapping[str, str] = MappingProxyType({
 })
 LENGTH_UNITS: Mapping[str, float] = MappingProxyType({
     "mm": 1e-3, "millimeter": 1e-3, "millimetre": 1e-3, "cm": 1e-2, "centimeter": 1e-2, "centimetre": 1e-2,
-    "m": 1.0, "meter": 1.0, "metre": 1.0, "in": 0.0254, "inch": 0.0254, "ft": 0.3048, "foot": 0.3048, "feet": 0.3048,
+    "dm": 0.1, "decimeter": 0.1, "decimetre": 0.1, "m": 1.0, "meter": 1.0, "metre": 1.0, "in": 0.0254, "inch": 0.0254, "ft": 0.3048, "foot": 0.3048, "feet": 0.3048,
 })
 ANGLE_UNITS: Mapping[str, float] = MappingProxyType({"degree": 0.017453292519943295, "deg": 0.017453292519943295, "°": 0.017453292519943295,
                                                       "radian": 1.0, "rad": 1.0})

@@ -80,6 +80,10 @@ ROWS: list[Row] = [
     R("storage_27044", "open the drawer three quarters inch", joints={"joint_0": E(end=0.01905)}),
     R("storage_27044", "open the drawer an eighth inch", joints={"joint_0": E(end=0.003175)}),
     R("storage_27044", "open the drawer a quarter", joints={"joint_0": E(end=0.25 * 0.684)}),
+    R("storage_27044", 'pull the drawer out 4"', joints={"joint_0": E(end=0.1016)}),
+    R("storage_27044", 'pull the drawer out "4" inches', joints={"joint_0": E(end=0.1016)}),
+    R("storage_27044", "pull the drawer out a decimetre", joints={"joint_0": E(end=0.1)}),
+    R("storage_27044", "pull the drawer out 2 dm", joints={"joint_0": E(end=0.2)}),
     R("extra/faucet_1343", "swing the lever a single degree to the left", joints={"joint_0": E(end=PI / 180)}),
     # --- found by the metamorphic probe (benchmark/metamorphic.py; 2026-11-29): a side said after an amount, an
     # amount measured from a closed end that is the limit the state named ---

@@ -8,7 +8,8 @@ from __future__ import annotations
 from app.engine.lexicon.words import DENOMINATORS
 from app.engine.offline.reading.token import Token
 
-_SINGULAR_MEASURES = ("degree", "deg", "radian", "rad", "cm", "mm", "centimeter", "centimetre", "millimeter", "millimetre", "meter", "metre", "°")
+_SINGULAR_MEASURES = ("degree", "deg", "radian", "rad", "cm", "mm", "centimeter", "centimetre", "millimeter", "millimetre", "meter", "metre", "°",
+                      "decimeter", "decimetre")
 _MEASURES = frozenset({*_SINGULAR_MEASURES, *(f"{unit}s" for unit in _SINGULAR_MEASURES), "inch", "inches"})
 """Units a count in words can measure ("a degree", "a couple of inches"); not "foot" ("press it with a foot") nor turns
 (read as fractions of a turn)."""

@@ -37,6 +37,7 @@ _TOKEN = re.compile(
     r"|(?P<rate>rad/s|m/s|cm/s|deg/s|rad/sec)"
     r"|(?P<word>[a-z]+(?:['’][a-z]+)?(?:-[a-z]+)*)"
     r"|(?P<deg>°)"
+    r"|(?P<inch>(?<=\d)[\"”″]|(?<=\d )[\"”″])"
     r"|(?P<pct>%)"
     r"|(?P<punct>[.,;:!?])"
     r"|(?P<dash>[—–]|(?<=\s)--?(?=\s))"
@@ -51,6 +52,7 @@ _ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
 """"e.g.": same length, read as a comma; "i.e.": "ie", a restatement dropped by :mod:`.framing` (offsets stay put)."""
 _BULLET = re.compile(r"(?m)^([ \t]*)[-*•](?=[ \t])")
 """A list item's bullet at the start of a line ("- top drawer out 40 cm"): the end of the item before (same length)."""
+_QUOTED_NUMBER = re.compile(r"[\"“”](\d+(?:\.\d+)?)[\"“”]")
 _UNITS_AFTER_DIGITS = re.compile(r"(\d)(?!(?:st|nd|rd|th)(?![a-z]))([a-z°%])")
 
 
@@ -70,6 +72,7 @@ def _raw_tokens(prompt: str) -> list[Token]:
     lowered = _ABBREVIATIONS.sub(lambda m: ("ie" if m.group(0).startswith("i") else ",").ljust(len(m.group(0))), prompt.lower().replace("’", "'").replace("‘", "'"))
     lowered = _unbracket(lowered)
     lowered = _BULLET.sub(lambda m: m.group(1) + ".", lowered)
+    lowered = _QUOTED_NUMBER.sub(lambda m: f" {m.group(1)} ", lowered)  # 'set it to "3"': a number, not 3 inches
     text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
     # the substitution above only inserts spaces: map offsets back to the original prompt
     offsets = _offset_map(lowered, text)
@@ -116,6 +119,8 @@ def _raw_tokens(prompt: str) -> list[Token]:
             tokens.append(Token(word, word, start, end, number=value))
         elif kind == "deg":
             tokens.append(Token("degree", "degree", start, end))
+        elif kind == "inch":  # 4" (a double prime after a number)
+            tokens.append(Token("inch", "inch", start, end))
         elif kind == "pct":
             tokens.append(Token("percent", "percent", start, end))
         elif kind == "axis":
