@@ -84,6 +84,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:
         return "open"  # "let it fall back to 60 degrees": a position measured from closed
+    if quantities.onto_body and geometry.closed_value is not None and quantities.amount is None:
+        return "closed"  # "flip the latch up flat against the box": it ends lying on the body, whatever way the verb says
     if sense is VerbSense.SWITCH_OFF:
         return "rest"
     if sense is VerbSense.SWITCH_ON and rotates:

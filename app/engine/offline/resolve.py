@@ -125,10 +125,11 @@ def _toward(geometry: JointGeometry, start: float, end: float, goal: Goal) -> fl
     return clamp(geometry, start + direction * goal.amount)
 
 
-def _far_end(geometry: JointGeometry, sign: float, goal: Goal) -> float:
-    """The limit in direction ``sign`` (or, unbounded, an amount / a quarter turn that way)."""
+def _far_end(geometry: JointGeometry, sign: float, goal: Goal, now: float | None = None) -> float:
+    """The limit in direction ``sign`` (or, unbounded, an amount / a quarter turn that way from where it is: a wheel the
+    object rolled on has turned)."""
     if geometry.lower is None or geometry.upper is None:
-        return geometry.rest + sign * (goal.amount if goal.unit == "rad" and goal.amount is not None else DEFAULT_TURN_RAD)
+        return (geometry.rest if now is None else now) + sign * (goal.amount if goal.unit == "rad" and goal.amount is not None else DEFAULT_TURN_RAD)
     return geometry.upper if sign > 0 else geometry.lower
 
 
@@ -147,10 +148,10 @@ def end_value(goal: Goal, geometry: JointGeometry, obj: ObjectGeometry, asset: A
     if state in table:
         return table[state]
     if state in ("cw", "ccw"):
-        return _far_end(geometry, rotation_sign(geometry, state, obj), goal)
+        return _far_end(geometry, rotation_sign(geometry, state, obj), goal, now)
     if state in _DIRECTIONS or state == "toward":
         vector = np.asarray(goal.direction_world, dtype=np.float64) if state == "toward" and goal.direction_world else direction_vector(state, obj)
-        return _far_end(geometry, _moving_sign(geometry, vector, obj), goal)
+        return _far_end(geometry, _moving_sign(geometry, vector, obj), goal, now)
     if state in ("vertical", "flat"):
         way = _moving_sign(geometry, np.asarray(goal.direction_world, dtype=np.float64), obj) if goal.direction_world else None
         return orientation_value(asset, geometry, state, opening=True, way=way, start=now)

@@ -88,6 +88,8 @@ class Tracker:
             axis = np.asarray(motion.axis_world if motion.axis_world is not None else (1.0, 0.0, 0.0), dtype=np.float64)
             base = BaseGoal(axis=axis, distance_m=motion.distance_m, speed_mps=motion.speed_mps, coast=motion.coast,
                             wheels=tuple((w.joint, w.rad_per_m) for w in motion.wheels), yaw_rad=motion.yaw_rad, pivot=motion.pivot_world)
+            for wheel in motion.wheels if motion.distance_m is not None else ():
+                self.now[wheel.joint] = self.value(wheel.joint) + wheel.rad_per_m * motion.distance_m  # rolled along: where it ends
         coupling = tuple(f"{c.joint} drives {e.joint}" for c in controls for e in effects)
         return Step(primitive=step.op, controls=controls, effects=effects, base=base, parallel=step.start == "with_previous",
                     speed_factor=step.speed_factor, duration_s=step.duration_s, coupling=coupling, pause_before_s=step.wait_before_s,

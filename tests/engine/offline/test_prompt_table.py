@@ -59,6 +59,21 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 30 (mirrored and turned dev assets): a side before an amount, wheels the object rolled on ---
+    R("trash_can_102155", "Give the wheel on the right a full spin.", joints={"joint_0": E(end=2 * PI)}),
+    R("trash_can_102155", "give the wheel on the left a full turn", joints={"joint_1": E(end=2 * PI)}),
+    R("trash_can_102155", "Roll the bin 1 metre forward - the wheels should turn as it goes.",
+      joints={"joint_0": E(end=9.0888), "joint_1": E(end=9.0888)}, base=(-1.0, 0.0, 0.0)),
+    R("trash_can_102155", "roll the bin 1 m forward, then turn the left wheel a full turn",
+      joints={"joint_0": E(end=9.0888), "joint_1": E(end=9.0888 + 2 * PI)}, base=(-1.0, 0.0, 0.0)),
+    R("trash_can_102155", "turn the left wheel a full turn forward, then another full turn forward", joints={"joint_1": E(end=4 * PI)}),
+    R("extra/box_100214", "flip the left-hand latch up flat against the box", joints={"joint_1": E(end=0.4363)}),
+    R("extra/box_100214", "Open the lid all the way back, close it again, then flip both latches up so they sit flat against the front.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("safe_101593", "Turning the big knob a quarter turn clockwise releases the bolt, and that lets the door swing open about 90 degrees.",
+      joints={"joint_1": E(end=-PI / 2), "joint_0": E(end=PI / 2)}),
+    R("safe_101593", "Dial it like a combination lock: turn the big dial right one full turn, then back left half a turn.",
+      joints={"joint_1": E(end=-PI)}),
     # --- a bare "tilt" rocks a rocker over (it names no way of its own); "a (full) <unit>" is one unit ---
     R("switch_100952", "Tilt the wall switch 10 degrees.", joints={"joint_0": E(end=0.1745)}),
     R("switch_100952", "tilt the rocker a full degree", joints={"joint_0": E(end=PI / 180)}),

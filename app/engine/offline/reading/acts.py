@@ -98,6 +98,17 @@ def _is_event(frame: Frame) -> bool:
         frame.let and frame.text.split()[0] in ("watch", "see"))
 
 
+_ROLLING = frozenset({VerbSense.TURN, VerbSense.SPIN, VerbSense.MOVE, VerbSense.OPERATE})
+
+
+def _rolls_along(frame: Frame, previous: Frame | None) -> bool:
+    """Wheels said to turn, with no amount or way of their own, right after the whole object moves: how it moves."""
+    q = frame.quantities
+    return (previous is not None and bool(previous.themes) and all(m.is_object for m in previous.themes) and bool(frame.themes)
+            and all(m.kind is not None and info(m.kind).rolls for m in frame.themes) and q.amount is None and q.direction is None
+            and q.sense is None and q.omega_radps is None and (frame.verb is None or frame.sense in _ROLLING))
+
+
 def _progressive_of(frame: Frame, before: Frame) -> bool:
     """"(the door opens, and while) it is opening": the -ing form of the verb before, said again, or of another motion
     verb on "it" ("lower it flat, and while it's opening, ..."): the motion before, told as it goes."""
@@ -204,6 +215,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             goal = acts[-1].goal  # "dial - one and a quarter revolutions, going clockwise": which way the step before goes
             acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, sense=frame.quantities.sense)))
             continue
+        if acts and not acts[-1].condition and _rolls_along(frame, acts[-1].goal):
+            continue  # "roll the bin 1 m forward - the wheels should turn as it goes": they roll with it already
         if acts and _appositive_amount(acts[-1], frame):
             goal = acts[-1].goal  # "roll the wheel around once, a full revolution": how far the step before goes
             acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, amount=frame.quantities.amount)))

@@ -383,7 +383,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
-        brief=(verb in _BRIEF_VERBS and quantities.direction is None) or bool(words & _BRIEF_WORDS),  # "flick it across to the left": stays
+        brief=(verb in _BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & _BRIEF_WORDS),  # "flick it across to the left": stays
     )
 
 

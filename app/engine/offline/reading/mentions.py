@@ -363,7 +363,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
         return replace(mention, sides=(*mention.sides, *run), end=end, words=_words(tokens, mention.start, end))
     if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
         return _lined(mention, nxt, _line_index(word), j + 2, tokens)
-    if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one")):
+    if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one") and (
+            nxt not in DETERMINERS)):  # "the wheel on the right a full turn": "a" opens the amount, it is no noun of the side
         end = j + 1 + (1 if nxt in ("side", "hand", "end") else 0)
         if prep == "from" and mention.ordinal is not None:
             return replace(mention, ordinal_from=SPATIAL[word][0], end=end, words=_words(tokens, mention.start, end))

@@ -96,6 +96,8 @@ class Quantities:
     """A world axis named in the prompt ("+X", "along negative y")."""
     orientation: str | None = None
     """vertical or flat (an end orientation: "until the lid is upright")."""
+    onto_body: bool = False
+    """The part ends lying on the body ("flat against the box", "flush with the front"): its shut end."""
     times: int = 1
     """"twice", "three times"."""
     used: frozenset[int] = field(default_factory=frozenset)
@@ -181,6 +183,13 @@ def _on_the_body(tokens: list[Token], i: int) -> bool:
     words = [t.text for t in tokens[i:i + 4]]
     lower_half = bool({"lower", "bottom"} & set(words[1:])) and bool({"half", "part", "section"} & set(words[1:]))  # "on the lower half"
     return bool(words) and words[0] in ("on", "onto", "against", "down_on") and (any(w in _BODY_NOUNS for w in words[1:]) or lower_half)
+
+
+def _against_a_face(tokens: list[Token], i: int) -> bool:
+    """"(flat) against the front", "flush with the frame", "flush in its frame": lying on a face of the body."""
+    words = [t.text for t in tokens[i:i + 4]]
+    return bool(words) and words[0] in ("against", "with", "in", "into", "on", "onto", "toward", "towards") and bool(
+        {"front", "frame", "face", "side"} & set(words[1:]))
 
 
 def _region_noun(tokens: list[Token], i: int) -> bool:
@@ -297,6 +306,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             if j < len(tokens) and tokens[j].lemma in TURN_UNITS and (j > i + 1 or token.text in ("quarter", "half", "full")):
                 amount = Amount(fraction * 2 * math.pi, "rad", words=" ".join(t.text for t in tokens[i:j + 1]))
                 used.update(range(i, j + 1))
+                used.update(_markers(tokens, i, j + 1))  # "then another full turn": more of the same, not the other part
                 i = j + 1
                 continue
         if token.text.replace("_", " ") in AMOUNTS and nxt is not None:
@@ -364,8 +374,9 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text in ("to_the_left", "to_the_right"):
             values["direction"] = token.text.rsplit("_", 1)[1]
             used.add(i)
-        elif token.text == "flat" and _on_the_body(tokens, i + 1):
+        elif token.text in ("flat", "flush") and (_on_the_body(tokens, i + 1) or _against_a_face(tokens, i + 1)):
             used.add(i)  # "down flat on the box": shut on the body, not the other flat pose
+            values["onto_body"] = True
         elif (token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up":
             values["orientation"] = STATES.get(token.text, "vertical")
             used.add(i)

@@ -192,6 +192,15 @@ _QUALIFIERS = frozenset({"the", "this", "that", "other", "another", "left", "rig
                          "middle", "first", "second", "third", "last", "same", "rear", "inner", "outer", *SIZES})
 
 
+_TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations"})
+
+
+def _turns_after(tokens: list[Token], i: int) -> bool:
+    """"right one full turn": "one" counts the turn after it, though a side word comes before it."""
+    j = i + (i < len(tokens) and tokens[i].text in ("full", "complete", "whole"))
+    return j < len(tokens) and tokens[j].text in _TURN_WORDS
+
+
 def _counts(tokens: list[Token], i: int) -> bool:
     """A number word followed by what it counts ("one full turn", "one and a half", "one second")."""
     return i < len(tokens) and (tokens[i].text in _COUNTED or tokens[i].number is not None)
@@ -210,7 +219,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
             continue
         value = _number_word(tokens[i].text) if tokens[i].number is None and tokens[i].text not in AMOUNTS else None  # "three-quarters": an amount
         after_qualifier = i > 0 and tokens[i - 1].text in _QUALIFIERS
-        if tokens[i].text == "one" and (not _counts(tokens, i + 1) or after_qualifier):
+        if tokens[i].text == "one" and (not _counts(tokens, i + 1) or (after_qualifier and not _turns_after(tokens, i + 1))):
             value = None  # "the left one", "one of the doors", "the bottom one half a turn": a pronoun, not a number
         hundreds = tokens[i].text == "hundred" and out and out[-1].text in ("a", "one")
         if hundreds:

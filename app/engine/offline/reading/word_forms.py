@@ -37,6 +37,7 @@ _AFTER_SIDE = frozenset({"as_far_as_it_goes", "as_far_as_possible", "as_far_as_i
                          "slightly", "by", "hard", "again"})
 _INTRANSITIVE_ENDS = frozenset({"open", "down", "up", "out", "shut", "closed", "away", "back", "forward", "free", "ajar", ".", ",", "!"})
 _CATCHES = frozenset({"catches", "clicks", "latches", "locks", "engages", "bottoms", "stops", "snaps", "seats", "detents"})
+_ENABLING = frozenset({"lets", "allows", "enables", "permits", "frees", "causes", "makes"})
 _DESCRIBING = frozenset({"carries", "features", "sports", "bears", "houses", "holds", "includes", "contains"})
 _PLACED = frozenset({"is", "sits", "sitting", "mounted", "placed", "located", "set", "that's", "which's"})
 _END_STATES = frozenset({"open", "opened", "closed", "shut", "down", "up", "out", "done", "finished", "there", "clear", "in"})
@@ -226,6 +227,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text in ("that", "this") and out and out[-1].text in (";", ".") and len(after) >= 2 and _finite(tokens[i + 1]) and after[1] != "is":
         out[-1] = replace(out[-1], text=",", lemma=",")
         out += [Token("so", "so", t.start, t.end), Token("it", "it", t.start, t.end)]  # "hit the button; that unlatches the door"
+        return i + 1
+    if t.text in ("that", "this") and out and out[-1].text in (",", ";", ".", "and") and after[:1] and after[0] in _ENABLING:
+        which = Token("which", "which", t.start, t.end)  # "..., and that lets the door swing open": what the step before allows
+        out[-1:] = [replace(out[-1], text=",", lemma=","), which] if out[-1].text != "," else [out[-1], which]
         return i + 1
     if (named := _which_then(tokens, i, out)) is not None:
         out[-1:] = [Token("and", "and", t.start, t.end), Token("the", "the", t.start, t.end), named]
