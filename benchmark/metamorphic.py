@@ -120,7 +120,7 @@ SWAPPED = {"left": "right", "right": "left", "leftmost": "rightmost", "rightmost
 SIDE_WORDS = re.compile(r"\b(" + "|".join(sorted(map(re.escape, SWAPPED), key=len, reverse=True)) + r")\b", re.IGNORECASE)
 NOT_A_SIDE = re.compile(r"\bright (away|now|after|before|there|here|then|up to|at the|on|into|in|back|through|angle|below|above|under|over|"
                         r"next|beside|by|behind|against|this|the|that|it)\b|\bright-angle|\ball right\b|\bthat's right\b"
-                        r"|\b(is|was|be|been|are|were|it|them|gets?|got|stays?|remains?|keep|kept) left\b|\bleft (open|ajar|shut|closed|alone|as|in place|"
+                        r"|\b(is|was|be|been|are|were|it|them|gets?|got|stays?|remains?|keep|kept|someone|somebody|i|you|we|they|he|she|who) left\b|\bleft (open|ajar|shut|closed|alone|as|in place|"
                         r"where|untouched|over|behind|there|standing|sitting|hanging|sticking|resting)\b|\bleft[-_ ]?over", re.IGNORECASE)
 """'right' and 'left' that are no side ("right away", "the lid left open"): such rows are left out under ``mirror``."""
 HANDED = re.compile(r"\b(hot|cold|warm|warmer|colder|hotter|hottest|coldest|tighten\w*|loosen\w*|unscrew\w*|screw\w*|unlock\w*|lock\w*|"
