@@ -68,6 +68,8 @@ ROWS: list[Row] = [
       joints={"joint_0": E(end=9.0888), "joint_1": E(end=9.0888 + 2 * PI)}, base=(-1.0, 0.0, 0.0)),
     R("trash_can_102155", "turn the left wheel a full turn forward, then another full turn forward", joints={"joint_1": E(end=4 * PI)}),
     R("extra/box_100214", "flip the left-hand latch up flat against the box", joints={"joint_1": E(end=0.4363)}),
+    R("extra/safe_101623", "Open the safe door about 45 degrees.", joints={"joint_1": E(end=-0.3958)}),  # it rests 75 degrees open
+    R("extra/safe_101623", "Open the safe door 45 degrees more.", joints={"joint_1": E(end=PI / 4)}),
     R("extra/box_100214", "Open the lid all the way back, close it again, then flip both latches up so they sit flat against the front.",
       joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
     R("safe_101593", "Turning the big knob a quarter turn clockwise releases the bolt, and that lets the door swing open about 90 degrees.",
@@ -594,7 +596,7 @@ ROWS: list[Row] = [
       joints={"joint_1": E(peak=0.20, end=0.0), "joint_0": E(peak=0.20, end=0.0)}),
     R("storage_19179", "top drawer out 10 cm and bottom drawer out 30 cm at the same time", joints={"joint_1": E(end=0.10), "joint_0": E(end=0.30)}),
     R("refrigerator_11178", "opne both fridge dors", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
-    R("extra/storage_20279", "pul the drawr out 10 cm thnx", joints={"joint_0": E(end=0.10)}),
+    R("extra/storage_20279", "pul the drawr out 10 cm thnx", joints={"joint_0": E(end=-0.088)}),  # 10 cm out from closed (it rests 18.8 cm out)
     R("oven_7138", "Door down to 30 degrees, stays there for 2 s while the music plays, then shuts.", joints={"joint_0": E(peak=0.5236, end=0.0)}),
     R("trash_can_102181", "Tread on the pedal, keep your foot down for 2 s, then step off.", joints={"joint_0": E(moves=True, end=0.0), "joint_1": E(moves=True, end=0.0)}),
     R("laptop_10697", "Shut the laptop, then put it back how it was.", joints={"joint_1": E(peak="lower", end=0.0)}),

@@ -155,6 +155,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
     if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
         return "closed"  # "30 degrees, measured from where it sits shut"
+    if since is not None and {"where", "now", "current", "currently", "here", "present"} & set(later[since + 1:since + 5]):
+        return "current"  # "raise the lid 30 degrees from where it is"
     return None
 
 
