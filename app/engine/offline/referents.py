@@ -30,7 +30,7 @@ from app.engine.offline.grounding import (
 from app.engine.offline.lone_side import lone_side_refusal
 from app.engine.offline.naming import link_words
 from app.engine.offline.reading.mentions import Mention
-from app.engine.offline.tiebreak import tie_break
+from app.engine.offline.tiebreak import carried_alike, tie_break
 
 EXTREME_GAP_M = 0.01
 """A part at least this much further toward the named side than the next one is "the bottom one"."""
@@ -138,7 +138,7 @@ class Referents:
         if not kept:
             return Grounding()
         if mention.plural or mention.collective or len(kept) == 1:
-            return Grounding(parts=tuple(kept), how=how, notes=tuple(notes))
+            return Grounding(parts=tuple(kept), how=how, notes=(*notes, *carried_alike(mention, kept, candidates, self.asset)))
         if self.assigned.get(mention.head) in kept:
             return Grounding(parts=(self.assigned[mention.head],), how=how, notes=tuple(notes))
         if mention.one_of:

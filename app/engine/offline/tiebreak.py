@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import PartKind, info
+from app.engine.lexicon.words import GENERIC_PART_NOUNS
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import Part, by_name, position, similar
 from app.engine.offline.reading.mentions import Mention
@@ -28,3 +29,15 @@ def tie_break(mention: Mention, kind: PartKind | None, kept: list[Part], obj: Ob
     if not similar(kept):
         return max(kept, key=lambda p: p.geometry.size), f"the largest {kind.value if kind is not None else mention.head}"
     return None
+
+
+def carried_alike(mention: Mention, kept: list[Part], candidates: list[Part], asset: ArticulatedAsset) -> tuple[str, ...]:
+    """A note when a part named only by place ("the top part") is carried by another movable part that moves it too (a
+    jug carrying its lid): which of the two the words mean is a guess."""
+    if mention.kind is not None or mention.head not in GENERIC_PART_NOUNS or len(kept) != 1:
+        return ()
+    carriers = [p for p in candidates if p.joint != kept[0].joint and kept[0].link in asset.descendants(p.link)]
+    if not carriers:
+        return ()
+    return (f"'{mention.words or mention.head}' may mean {kept[0].link} ({kept[0].joint}) or {carriers[-1].link} ({carriers[-1].joint}), "
+            f"which carries it: took {kept[0].link}; name the part to choose",)

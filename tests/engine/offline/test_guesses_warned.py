@@ -63,3 +63,9 @@ def test_a_vague_count_of_a_unit_says_the_number_taken(prompt: str, note: str) -
 
 def test_a_plain_count_of_a_unit_is_no_guess() -> None:
     assert not any("as '1'" in n for n in _notes("storage_19179", "pull the top drawer out an inch"))
+
+
+def test_a_part_named_by_place_that_another_carries_is_a_named_guess() -> None:
+    """"the top half of the machine" on a coffee maker whose jug carries its lid: either could be meant."""
+    notes = _notes("coffee_machine_103030", "Twist the knob on the front to make the top half of the machine rise up.")
+    assert any("which carries it" in n for n in notes), notes
