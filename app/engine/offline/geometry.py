@@ -258,12 +258,34 @@ def _latches_follow_hosts(asset: ArticulatedAsset, joints: dict[str, JointGeomet
     return out
 
 
+def _resting_open(joints: dict[str, JointGeometry]) -> dict[str, float]:
+    """Doors, lids and drawers resting away from their closed end: joint -> its closed value."""
+    return {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9 and (
+        g.category is not None and info(g.category).openable)}
+
+
+def _body_controls_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
+                        rest: dict[str, FloatArray]) -> dict[str, JointGeometry]:
+    """A control on the body (a microwave's door-release button) is read against the body with its doors shut: a door
+    resting ajar sticks out past the face the button sits on and would turn its press the wrong way."""
+    shut = _resting_open(joints)
+    if not shut:
+        return joints
+    carried = {link for j in shut for link in asset.descendants(joints[j].child)}
+    body = [j for j, g in joints.items() if g.child not in carried and g.category is not None and info(g.category).control and not (
+        info(g.category).latches_host)]
+    if not body:
+        return joints
+    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
+    layout = RestPoints.of(asset, {n: _posed(points, poses, [n]) for n in asset.visual_links if n in points})
+    return {**joints, **{j: _joint_geometry(asset, j, points, rest, layout) for j in body}}
+
+
 def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray]) -> dict[str, JointGeometry]:
     """Where a part sits is where it sits with the object shut: a knob on a safe door that rests open is placed with the
     door closed (the viewer's left knob stays the left one). Only parts carried by a door, lid or drawer that rests away
     from its closed end change; every other part's closed-state centre is already right."""
-    shut = {j: g.closed_value for j, g in joints.items() if g.closed_value is not None and abs(g.closed_value - g.rest) > 1e-9 and (
-        g.category is not None and info(g.category).openable)}  # doors, lids, drawers resting open
+    shut = _resting_open(joints)
     carried = {link for j in shut for link in asset.descendants(joints[j].child) if link != joints[j].child}
     riders = [name for name, g in joints.items() if g.child in carried]
     if not riders:
@@ -284,8 +306,8 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     laid_out = RestPoints.of(asset, {n: _posed(points, rest, [n]) for n in asset.visual_links if n in points})
     low, high = laid_out.box()
     center = (low + high) / 2.0
-    joints = _closed_layout(asset, _latches_follow_hosts(asset, {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}),
-                            points)
+    first = {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}
+    joints = _closed_layout(asset, _latches_follow_hosts(asset, _body_controls_shut(asset, first, points, rest)), points)
     vote, cue = front_votes(joints, center, asset, points, rest, object_category(asset))
     front = front_of(vote)
     right = np.cross(-front, UP)

@@ -188,6 +188,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
             state = "ccw" if state == "cw" else "cw"  # it only turns the other way
     reference = quantities.amount.reference if quantities.amount is not None else None
     measured: MeasuredFrom = reference or _default_from(state, sense)
+    if reference is None and unit == "m" and sense in (VerbSense.RAISE, VerbSense.LOWER):
+        measured = "current"  # "raise the lid 20 cm": a distance raised is from where it is (a lid resting ajar goes 20 cm higher)
     if state == "closed" and unit == "fraction" and value is not None and value >= 1.0:
         value, unit = None, None
     if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):

@@ -87,6 +87,7 @@ AJAR_ROWS = [
     ("microwave_7119", "open the door"),
     ("storage_19179", "pull the top drawer all the way out"),
     ("dishwasher_11700", "open the dishwasher door"),
+    ("extra/microwave_7128", "press the button on the control panel"),  # the door ajar sticks out past the button's face
 ]
 
 
@@ -143,3 +144,11 @@ def test_the_mirror_image_said_with_its_sides_swapped_moves_alike(name: str, pro
     assert np.allclose(variant.q, original.q, atol=1e-6)
     assert np.allclose(variant.base_translation, original.base_translation * [1.0, -1.0, 1.0], atol=1e-6)
     assert float(np.ptp(original.q)) > 1e-3 or original.has_base_motion(), "the row moves nothing: it tests nothing"
+
+
+def test_a_distance_raised_is_from_where_the_part_rests(tmp_path: Path) -> None:
+    """"raise the lid 20 cm" on a pot whose lid rests ajar (15 cm up): 20 cm higher than it rests, not 20 cm off the rim."""
+    mapping = make_variant(asset_dir("kitchen_pot_100038"), tmp_path / "kitchen_pot_100038", ("ajar",))
+    assert mapping.offsets, "the lid does not rest ajar: the test tests nothing"
+    track = animate_model(load_asset(tmp_path / "kitchen_pot_100038"), "raise the lid 20 cm").trajectory.joint("joint_0")
+    assert track[-1] - track[0] == pytest.approx(0.2, abs=1e-6)

@@ -13,6 +13,7 @@ _SINGULAR_MEASURES = ("degree", "deg", "radian", "rad", "cm", "mm", "centimeter"
 _MEASURES = frozenset({*_SINGULAR_MEASURES, *(f"{unit}s" for unit in _SINGULAR_MEASURES), "inch", "inches"})
 """Units a count in words can measure ("a degree", "a couple of inches"); not "foot" ("press it with a foot") nor turns
 (read as fractions of a turn)."""
+_TURNS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations"})
 _ONE_INTENSIFIERS = frozenset({"full", "whole", "single", "good", "mere", "bare", "solid"})
 _MORE = frozenset({"more", "extra", "further", "additional"})
 _FRACTIONS = {"a_quarter": 0.25, "a_third": 1 / 3, "three_quarters": 0.75, "three-quarters": 0.75, "two_thirds": 2 / 3, "two-thirds": 2 / 3}
@@ -44,7 +45,9 @@ def _count(tokens: list[Token], i: int) -> tuple[float, int, bool]:
         return 0.0, 0, False
     if j + 1 < len(tokens) and tokens[j].text in _MORE and vague:
         j += 1  # "a couple more centimetres"
-    return (count, j - i, vague) if j < len(tokens) and tokens[j].text in _MEASURES else (0.0, 0, False)
+    unit = tokens[j].text if j < len(tokens) else ""
+    turns = unit in _TURNS and (vague or count > 1.0)  # "a couple of turns", "a dozen turns" ("a turn" is read with the fractions)
+    return (count, j - i, vague) if unit in _MEASURES or turns else (0.0, 0, False)
 
 
 def _and_a_half(tokens: list[Token], j: int) -> bool:

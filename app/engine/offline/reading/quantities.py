@@ -35,6 +35,8 @@ from app.engine.offline.reading.tokens import Token
 
 Reference = Literal["closed", "current"]
 _TO = frozenset({"to", "until"})
+_TO_THE_END = frozenset({"as_far_as_it_will_go", "as_far_as_it_goes", "as_far_as_possible", "all_the_way", "fully", "to_the_limit", "to_the_stop",
+                         "to_the_max", "to_its_limit"})
 _RELATIVE_BEFORE = frozenset({"another", "additional", "extra", "further", "by"})
 _ABOUT = frozenset({"about", "around", "roughly", "approximately", "exactly", "just", "nearly", "almost", "some", "only"})
 _DURATION_BEFORE = frozenset({"for", "over", "during", "in", "within", "taking", "lasting"})
@@ -367,6 +369,9 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text.replace("_", "-") in ROTATION_SENSE or token.text in ROTATION_SENSE:
             values["sense"] = ROTATION_SENSE.get(token.text, ROTATION_SENSE.get(token.text.replace("_", "-"), None))
             used.add(i)
+        elif token.text == "back" and nxt is not None and nxt.text in _TO_THE_END and "direction" not in values and i > 0 and (
+                tokens[i - 1].text not in ("it", "them", "bring", "put", "go", "come", "get", "move", "set")):
+            values["direction"] = "backward"  # "push the screen back as far as it'll go": that way to its end (a drawer: shut)
         elif token.text == "back" and i > 0 and tokens[i - 1].text in ("further", "farther", "more") and "direction" not in values:
             values["direction"] = "backward"  # "5 cm further back"
             used.update((i - 1, i))

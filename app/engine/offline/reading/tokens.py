@@ -262,7 +262,8 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
             n = len(phrase)
             if tuple(t.text for t in tokens[i:i + n]) == phrase:
                 joined = "_".join(phrase)
-                typed = " ".join(t.corrected_from or t.text for t in tokens[i:i + n])  # "all teh way", not just "teh"
+                said = [t.corrected_from or t.text for t in tokens[i:i + n]]  # "all teh way", not just "teh"
+                typed = " ".join(w for k, w in enumerate(said) if k == 0 or not (w == said[k - 1] and tokens[i + k].corrected_from))  # "it'll"
                 out.append(Token(joined, joined, tokens[i].start, tokens[i + n - 1].end,
                                  corrected_from=typed if any(t.corrected_from for t in tokens[i:i + n]) else None))
                 i += n

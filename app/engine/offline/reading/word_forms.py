@@ -220,6 +220,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if chosen := _one_of_counted(tokens, i, out):
         out.extend(chosen[1])
         return i + chosen[0]  # "the middle one of the three (knobs)": the middle knob
+    if t.text == "to" and after[:2] in (["its", "left"], ["its", "right"]):
+        side = after[1]  # "shift the cabinet half a metre to its left": read as the viewer's left, with a note that says so
+        out.append(Token(f"to_the_{side}", f"to_the_{side}", t.start, tokens[i + 2].end, corrected_from=f"to its {side}"))
+        return i + 3
     if t.text in ("left", "right") and out and out[-1].text.isalpha() and out[-1].text not in _NOT_BEFORE_SIDE and (
             not after or after[0] in _AFTER_SIDE):
         out.append(Token(f"to_the_{t.text}", f"to_the_{t.text}", t.start, t.end))  # "swing the lever right as far as it goes"
