@@ -317,3 +317,10 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})
 """A part resting midway ("the tap lever") goes back to rest: "then back to the middle"."""
+BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
+BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
+"""A brief press ("tap the button", "press it briefly"): a control that would hold is let go at once."""
+POSTURES = frozenset({"sitting", "standing", "hanging", "resting", "lying", "sticking", "poking", "propped", "left"})
+"""How a part is said to rest ("the door is sitting slightly open"): the clause says how things are, not a step."""
+SAME_WAY = frozenset({"in_the_same_direction", "the_same_way"})
+""""another 45 degrees the same way": the direction and sense of turning of the clause before."""

@@ -66,10 +66,25 @@ def condition(builder: Builder, act: Act) -> None:
     if wanted is None or not parts:
         builder.refs.remember(parts, [])
         return
-    moves = [m for m in builder.moves(frame, wanted, parts, words, None) if not builder.reached(m)]
+    amount = frame.quantities.amount
+    said = not frame.wish and (amount is None or amount.loose)  # the scene told, not a pose asked for ("I need it at 90 degrees")
+    moves = [m for m in builder.moves(frame, wanted, parts, words, None) if not builder.reached(m) and not (said and _already(builder, m.part, wanted))]
     if moves:
         builder.complete(replace(act, goal=replace(frame, sense=wanted)), wanted, [], moves, why="prerequisite")
     builder.refs.remember(parts, [])
+
+
+_AJAR_SHARE = 0.02
+"""A part this far (a share of its travel) from its closed end is already open, as a scene says ("the door's sitting open")."""
+
+
+def _already(builder: Builder, part: Part, wanted: VerbSense) -> bool:
+    """The scene a clause states holds already: "both doors are hanging open" on doors resting ajar moves nothing."""
+    geometry = part.geometry
+    if geometry.closed_value is None or geometry.span is None or wanted not in (VerbSense.OPEN, VerbSense.CLOSE):
+        return False
+    away = abs(builder.tracker.value(part.joint) - geometry.closed_value) > _AJAR_SHARE * geometry.span
+    return away if wanted is VerbSense.OPEN else not away
 
 
 def _each_alone(builder: Builder, frame: Frame) -> list[Part] | None:

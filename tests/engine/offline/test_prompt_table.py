@@ -69,6 +69,9 @@ ROWS: list[Row] = [
     R("trash_can_102155", "turn the left wheel a full turn forward, then another full turn forward", joints={"joint_1": E(end=4 * PI)}),
     R("extra/box_100214", "flip the left-hand latch up flat against the box", joints={"joint_1": E(end=0.4363)}),
     R("extra/safe_101623", "Open the safe door about 45 degrees.", joints={"joint_1": E(end=-0.3958)}),  # it rests 75 degrees open
+    # --- blind round 32 (dev assets resting ajar, flipped, mirrored or turned) ---
+    R("refrigerator_11178", "open both doors, then shut the right one first, then the left one",
+      joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),  # "the right one first" is no list's first: it is read
     # --- blind round 31 (dev assets resting ajar, turned, flipped, mirrored) ---
     R("laptop_10697", "push the screen back as far as it'll go, then bring it back to its original angle", joints={"joint_1": E(peak=1.0744)}),
     R("extra/storage_25308", "Shift the whole cabinet half a metre to its left.", base=(0.0, 0.5, 0.0)),

@@ -12,6 +12,8 @@ from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
 from app.engine.lexicon.words import (
     ASPECT_VERBS,
+    BRIEF_VERBS,
+    BRIEF_WORDS,
     CAUSATIVES,
     CENTRE_WORDS,
     DETERMINERS,
@@ -19,6 +21,8 @@ from app.engine.lexicon.words import (
     LIGHT_VERBS,
     OBJECT_NOUNS,
     PLACES,
+    POSTURES,
+    SAME_WAY,
     SIMULTANEOUS,
     SPATIAL,
     STATIVE_VERBS,
@@ -26,6 +30,7 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
+from app.engine.offline.reading.first_one import first_of
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.part_words import kind_of_word
@@ -35,8 +40,6 @@ from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
 from app.engine.offline.reading.wishes import wished_state
 
-_BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
-_BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
@@ -252,20 +255,6 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
     return themes[len(prior):], instruments
 
 
-def _first_of(tokens: list[Token]) -> tuple[Mention | None, list[Token]]:
-    """"..., left one first": a qualified "one" followed by "first" at the end of the clause."""
-    if len(tokens) >= 3 and tokens[-1].text == "first" and tokens[-2].text in ("one", "ones"):
-        j = len(tokens) - 2
-        while j > 0 and (tokens[j - 1].text in SPATIAL or tokens[j - 1].text in ("the",) or "-" in tokens[j - 1].text):
-            j -= 1
-        found = parse_mentions(tokens[j:-1], 0)
-        if found and found[0].anaphor:
-            return found[0], tokens[:j]
-    return None, tokens
-
-
-_SAME_WAY = frozenset({"in_the_same_direction", "the_same_way"})
-""""another 45 degrees the same way": the direction and sense of turning of the clause before."""
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
@@ -277,7 +266,7 @@ _STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": Ve
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
     correction = bool(clause.tokens) and clause.tokens[0].text == "instead"
     wish, wished = wished_state(list(clause.tokens[1:] if correction else clause.tokens))
-    first, tokens = _first_of(_light_verb(wished))
+    first, tokens = first_of(_light_verb(wished))
     quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
     named_side = (clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL) or side_of_part(tokens)
@@ -303,6 +292,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
     progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
         tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
+    progressive = progressive or (verb_index is not None and not wish and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION) and any(
+        tokens[k].text in ("is", "are") and tokens[k + 1].text in POSTURES for k in range(verb_index - 1)))  # "the door is sitting ... open"
     if progressive:
         verb_index, verb = None, None  # "the screen is leaning back too far": how things are, not a step
     causative = verb_index is not None and (tokens[verb_index].text in CAUSATIVES or (tokens[verb_index].lemma in TOLD_CAUSATIVES and any(
@@ -379,11 +370,11 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
-        guessed_verb=guessed, same_direction=bool(words & _SAME_WAY),
+        guessed_verb=guessed, same_direction=bool(words & SAME_WAY),
         codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
-        brief=(verb in _BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & _BRIEF_WORDS),  # "flick it across to the left": stays
+        brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays
     )
 
 
