@@ -32,6 +32,7 @@ from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release
 from app.engine.offline.tracker import resolve_steps
+from app.engine.offline.whole_object import whole_named
 
 
 @dataclass(frozen=True)
@@ -90,7 +91,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     """
     words = tokenize(prompt, asset_words(asset))
     clauses = split_clauses(words)
-    frames = read_frames(clauses)
+    frames = [whole_named(f, object_category(asset)) for f in read_frames(clauses)]
     acts = build_acts(frames)
     builder = Builder(asset)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])

@@ -10,9 +10,10 @@ displaces ("push the box", not "squeeze the bottle").
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from app.engine.contracts.steps import BaseMotion, WheelRoll
+from app.engine.lexicon.objects import OBJECT_FAMILIES
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline.base_motion import DEFAULT_SPEED_MPS, default_distance, heading, is_vehicle, wheel_rates
 from app.engine.offline.geometry import ObjectGeometry
@@ -137,3 +138,15 @@ def object_motion(frame: Frame, obj: ObjectGeometry, yaw: float = 0.0) -> Object
     motion = BaseMotion(axis_world=axis, distance_m=round(abs(distance), 9), speed_mps=quantities.speed_mps, coast=coast and not is_vertical,
                         wheels=[WheelRoll(joint=j, rad_per_m=round(r, 9)) for j, r in wheels])
     return ObjectMotion(motion, tuple(notes))
+
+
+_WHOLE = frozenset({"whole", "entire"})
+
+
+def whole_named(frame: Frame, category: str | None) -> Frame:
+    """"raise the whole door, frame and all" on a door asset: "whole" with the object's own name is the object, not
+    its part of that name."""
+    family = OBJECT_FAMILIES.get(category or "", frozenset())
+    themes = tuple(replace(m, is_object=True, kind=None) if _WHOLE & set(m.modifiers) and (m.head == category or m.head in family) else m
+                   for m in frame.themes)
+    return frame if themes == frame.themes else replace(frame, themes=themes)

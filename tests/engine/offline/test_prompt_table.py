@@ -72,6 +72,11 @@ ROWS: list[Row] = [
     # --- blind round 32 (dev assets resting ajar, flipped, mirrored or turned) ---
     R("refrigerator_11178", "open both doors, then shut the right one first, then the left one",
       joints={"joint_0": E(peak="upper"), "joint_1": E(peak="upper")}),  # "the right one first" is no list's first: it is read
+    R("safe_101564", "tap the three keys across the top row of the keypad, left to right",
+      joints={"joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_2": E(peak=0.004), "joint_3": E(still=True), "joint_11": E(still=True)}),
+    R("door_8877", "raise the whole door, frame and all, 5 cm straight up", base=(0.0, 0.0, 0.05)),
+    R("storage_23472", "Close the cabinet door — don't touch the drawer, it stays out like it is.",
+      joints={"joint_0": E(end=-0.3267), "joint_1": E(still=True)}),
     # --- blind round 31 (dev assets resting ajar, turned, flipped, mirrored) ---
     R("laptop_10697", "push the screen back as far as it'll go, then bring it back to its original angle", joints={"joint_1": E(peak=1.0744)}),
     R("extra/storage_25308", "Shift the whole cabinet half a metre to its left.", base=(0.0, 0.5, 0.0)),

@@ -5,6 +5,7 @@ negations as exclusions, verbs carried into verbless clauses ("then the right do
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
@@ -98,6 +99,7 @@ def _is_event(frame: Frame) -> bool:
         frame.let and frame.text.split()[0] in ("watch", "see"))
 
 
+_AS_IT_IS = re.compile(r" (like|as|where) (it|they) (is|are|was|were|sits|sit|stands) | as_is | as it is ")
 _ROLLING = frozenset({VerbSense.TURN, VerbSense.SPIN, VerbSense.MOVE, VerbSense.OPERATE})
 
 
@@ -300,6 +302,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "..., while the narrator talks": what else happens meanwhile, not a part's motion
         if frame.stative and COUPLING_WORDS & set(frame.text.split()):
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
+        if (frame.stative or frame.verb is None) and _AS_IT_IS.search(f" {frame.text} "):
+            continue  # "don't touch the drawer, it stays out like it is": nothing to do
         frame = carry(frame, previous_goal, measured)
         if frame.quantities.amount is not None:
             measured = frame

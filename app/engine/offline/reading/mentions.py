@@ -348,7 +348,7 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
         return replace(mention, sides=(SPATIAL[tokens[i].text],), end=i + 1, words=_words(tokens, mention.start, i + 1))
     if i + 1 < len(tokens) and tokens[i].text == "on_top_of" and not mention.sides:  # "the lever on top of the machine": its top one
         return replace(mention, sides=(SPATIAL["top"],), end=i + 1, words=_words(tokens, mention.start, i + 1))
-    if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of"}:
+    if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of", "across", "along"}:
         return mention
     prep = tokens[i].text
     j = i + 1
@@ -361,6 +361,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     run, end = side_run(tokens, j)
     if run and prep in ("on", "at", "in"):  # "the key in the bottom-left corner", "the knob at the top right"
         return replace(mention, sides=(*mention.sides, *run), end=end, words=_words(tokens, mention.start, end))
+    if prep in ("across", "along") and not ((word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS):
+        return mention  # "across the top row" places keys; "across the room" says nothing of which part
     if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
         return _lined(mention, nxt, _line_index(word), j + 2, tokens)
     if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one") and (
