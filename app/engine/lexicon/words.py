@@ -324,3 +324,8 @@ POSTURES = frozenset({"sitting", "standing", "hanging", "resting", "lying", "sti
 """How a part is said to rest ("the door is sitting slightly open"): the clause says how things are, not a step."""
 SAME_WAY = frozenset({"in_the_same_direction", "the_same_way"})
 """"another 45 degrees the same way": the direction and sense of turning of the clause before."""
+TO_THE_END = frozenset({"as_far_as_it_will_go", "as_far_as_it_goes", "as_far_as_possible", "all_the_way", "fully", "to_the_limit", "to_the_stop",
+                        "to_the_max", "to_its_limit"})
+"""Amounts that take a part to the end of its travel ("push the screen back as far as it'll go")."""
+COMPARATIVES = frozenset({"higher", "lower", "wider", "deeper"})
+"""After an amount, it is counted from where the part is ("20 degrees higher")."""

@@ -75,6 +75,9 @@ ROWS: list[Row] = [
     R("safe_101564", "tap the three keys across the top row of the keypad, left to right",
       joints={"joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_2": E(peak=0.004), "joint_3": E(still=True), "joint_11": E(still=True)}),
     R("door_8877", "raise the whole door, frame and all, 5 cm straight up", base=(0.0, 0.0, 0.05)),
+    R("box_102456", "Lift the toy box lid 20 degrees higher than it is now, then let it settle back where it was.", joints={"joint_0": E(peak=0.3491)}),
+    R("bucket_100454", "Let the bucket's handle fall flat on the side that faces me.", joints={"joint_0": E(end=-PI / 2)}),
+    R("door_8877", "Somebody left this door sticking straight out. Swing it back so it sits flush in its frame.", joints={"joint_1": E(end=-PI / 2)}),
     R("storage_23472", "Close the cabinet door — don't touch the drawer, it stays out like it is.",
       joints={"joint_0": E(end=-0.3267), "joint_1": E(still=True)}),
     # --- blind round 31 (dev assets resting ajar, turned, flipped, mirrored) ---

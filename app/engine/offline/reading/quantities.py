@@ -16,6 +16,7 @@ from app.engine.lexicon.relations import VIEWER_WORDS as _VIEWER_WORDS
 from app.engine.lexicon.words import (
     AMOUNTS,
     ANGLE_UNITS,
+    COMPARATIVES,
     DIRECTIONS,
     LENGTH_UNITS,
     LOOSE_AMOUNTS,
@@ -27,6 +28,7 @@ from app.engine.lexicon.words import (
     SPEEDS,
     STATES,
     TIME_UNITS,
+    TO_THE_END,
     TURN_UNITS,
 )
 from app.engine.offline.reading.numbers import RELATIVE_AFTER as _RELATIVE_AFTER
@@ -35,8 +37,6 @@ from app.engine.offline.reading.tokens import Token
 
 Reference = Literal["closed", "current"]
 _TO = frozenset({"to", "until"})
-_TO_THE_END = frozenset({"as_far_as_it_will_go", "as_far_as_it_goes", "as_far_as_possible", "all_the_way", "fully", "to_the_limit", "to_the_stop",
-                         "to_the_max", "to_its_limit"})
 _RELATIVE_BEFORE = frozenset({"another", "additional", "extra", "further", "by"})
 _ABOUT = frozenset({"about", "around", "roughly", "approximately", "exactly", "just", "nearly", "almost", "some", "only"})
 _DURATION_BEFORE = frozenset({"for", "over", "during", "in", "within", "taking", "lasting"})
@@ -159,6 +159,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "30 degrees, measured from where it sits shut"
     if since is not None and {"where", "now", "current", "currently", "here", "present"} & set(later[since + 1:since + 5]):
         return "current"  # "raise the lid 30 degrees from where it is"
+    if (after[:1] and after[0] in COMPARATIVES) or ("than" in later[:4] and {"now", "is", "currently"} & set(later[:7])):
+        return "current"  # "lift the lid 20 degrees higher than it is now"
     return None
 
 
@@ -192,8 +194,7 @@ def _on_the_body(tokens: list[Token], i: int) -> bool:
 def _against_a_face(tokens: list[Token], i: int) -> bool:
     """"(flat) against the front", "flush with the frame", "flush in its frame": lying on a face of the body."""
     words = [t.text for t in tokens[i:i + 4]]
-    return bool(words) and words[0] in ("against", "with", "in", "into", "on", "onto", "toward", "towards") and bool(
-        {"front", "frame", "face", "side"} & set(words[1:]))
+    return bool(words) and words[0] in ("against", "with", "in", "into", "on", "onto", "toward", "towards") and bool({"front", "frame", "face"} & set(words))
 
 
 def _region_noun(tokens: list[Token], i: int) -> bool:
@@ -369,7 +370,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text.replace("_", "-") in ROTATION_SENSE or token.text in ROTATION_SENSE:
             values["sense"] = ROTATION_SENSE.get(token.text, ROTATION_SENSE.get(token.text.replace("_", "-"), None))
             used.add(i)
-        elif token.text == "back" and nxt is not None and nxt.text in _TO_THE_END and "direction" not in values and i > 0 and (
+        elif token.text == "back" and nxt is not None and nxt.text in TO_THE_END and "direction" not in values and i > 0 and (
                 tokens[i - 1].text not in ("it", "them", "bring", "put", "go", "come", "get", "move", "set")):
             values["direction"] = "backward"  # "push the screen back as far as it'll go": that way to its end (a drawer: shut)
         elif token.text == "back" and i > 0 and tokens[i - 1].text in ("further", "farther", "more") and "direction" not in values:

@@ -57,7 +57,9 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
         square = Amount(math.pi / 2, "rad", reference="closed", words="perpendicular")
         return replace(act, goal=replace(goal, quantities=replace(q, amount=square, orientation=None)))
     if r.onto_body and q.amount is None:  # "flip both latches up so they sit flat against the front": shut on the body
-        return replace(act, goal=replace(goal, brief=False, quantities=replace(q, onto_body=True, orientation=None, direction=None)))
+        shut = VerbSense.CLOSE if goal.sense in (VerbSense.RETURN, VerbSense.MOVE, None) else goal.sense  # "swing it back so it sits flush"
+        return replace(act, goal=replace(goal, brief=False, sense=shut, returning=False, quantities=replace(q, onto_body=True, orientation=None,
+                                                                                                             direction=None)))
     if r.direction is not None and q.direction is None and not FACE_RELATIONS & set(frame.text.split()):
         # "drop the handle so it lies flat along the back side": which way the part itself goes
         return replace(act, goal=replace(goal, quantities=replace(q, direction=r.direction, orientation=r.orientation or q.orientation,
