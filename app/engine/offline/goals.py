@@ -145,6 +145,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "pressed"
     if state == "cw" and not rotates:
         return "pressed"
+    if state in ("open", "closed") and geometry.type == "continuous" and geometry.open_value is None and (
+            quantities.amount is not None and quantities.amount.unit == "rad"):
+        return "cw"  # "show about half a turn of the plate": a turn, by the amount, of a part that only turns
     return state
 
 

@@ -137,12 +137,14 @@ def _find_verb(tokens: list[Token]) -> int | None:
     for i in range(len(tokens)):
         if tokens[i].text in CAUSATIVES and i == 0:
             return i
-        if i > 0 and tokens[i - 1].text in ("is", "are", "was", "were", "be", "stays", "remains") and tokens[i].text in _STATE_WORDS:
-            continue  # "the door is open": a state, not a verb
+        if i > 0 and tokens[i - 1].text in ("is", "are", "was", "were", "be", "stays", "remains", "from", "since") and tokens[i].text in _STATE_WORDS:
+            continue  # "the door is open", "100 degrees from closed": a state, not a verb
         if verb_at(tokens, i, strict=True):
             return i
     for i in range(1, len(tokens)):
         token = tokens[i]
+        if tokens[i - 1].text in ("from", "since"):
+            continue  # "100 degrees from closed": where it is counted from
         progressive = token.text.endswith("ing") and tokens[i - 1].text in ("is", "are", "was", "were", *ASPECT_VERBS)
         if token.lemma in VERBS and token.text != token.lemma and verb_at(tokens, i) and (not token.text.endswith("ing") or progressive):
             return i  # "the lid opens", "the door swings open", "the plate starts turning" (not "its vent setting")

@@ -70,10 +70,12 @@ def _viewpoint(tokens: list[Token], i: int) -> int:
 
 
 def _simile(tokens: list[Token], i: int) -> int:
-    """The length of a comparison at ``i`` ("like you're starting a batch", "the way you'd hold it", "as if ..."), else 0."""
+    """The length of a comparison at ``i`` ("like you're starting a batch", "the way you'd hold it", "as if ...", ", like
+    folding it all the way around"), else 0."""
     words = [t.text for t in tokens[i:i + 4]]
     person = next((k for k, w in enumerate(words) if w in _SIMILE_PEOPLE), None)
-    if words[:2] in (["as", "if"], ["as", "though"]) or (words[:1] == ["like"] and person == 1) or (
+    gerund = words[:1] == ["like"] and len(words) > 1 and words[1].endswith("ing") and i > 0 and tokens[i - 1].text == ","
+    if words[:2] in (["as", "if"], ["as", "though"]) or (words[:1] == ["like"] and person == 1) or gerund or (
             words[:2] == ["the", "way"] and person == 2) or (words[:2] == ["as", "you"] and len(words) > 2 and words[2] in ("would", "do", "might")):
         if i == 0 or tokens[i - 1].is_sentence_end:
             return 0  # "Like you're ...": a sentence of its own may set a scene that names parts; keep it

@@ -67,7 +67,8 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
     if r.amount is not None and q.amount is None and r.amount.unit != "fraction":
         # "ease it back up until it's sitting at 45 degrees": the angle says where it stops, not the way back
         return replace(act, goal=replace(goal, returning=False, quantities=replace(q, amount=r.amount, target=r.target)))
-    ends = {STATES[w] for w in frame.text.split() if STATES.get(w) in ("open", "closed")}
+    said = frame.text.split()
+    ends = {STATES[w] for k, w in enumerate(said) if STATES.get(w) in ("open", "closed") and (k == 0 or said[k - 1] not in ("from", "since"))}
     said_end = q.amount is None and not _NEGATIONS & set(frame.text.split()) and goal.sense in (VerbSense.OPEN, VerbSense.RAISE, VerbSense.LOWER)
     if len(ends) == 1 and (goal.sense in (VerbSense.RETURN, VerbSense.MOVE) or said_end):
         # "swing it back so it sits flush": back to where it shuts; "flip the latch up so it's closed": the end it names

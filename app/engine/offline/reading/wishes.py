@@ -36,9 +36,11 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
 
 
 def _done_to(tokens: list[Token]) -> list[Token]:
-    """"the cupboard at the bottom opened": what is wished done, told as a command ("open the cupboard at the bottom")
+    """"the cupboard at the bottom opened", "the door closing": what is wished done, told as a command ("open the cupboard ...")
     when the done word ends the clause after a longer phrase (a short one, "the door opened", is read as it stands)."""
+    while tokens and tokens[0].text in _WISH_ADVERBS:
+        tokens = tokens[1:]  # "I need just the microwave door closing"
     last = tokens[-1] if len(tokens) > 3 and tokens[0].text in DETERMINERS else None
-    if last is None or last.lemma not in VERBS or last.lemma == last.text or not last.text.endswith("ed"):
+    if last is None or last.lemma not in VERBS or last.lemma == last.text or not last.text.endswith(("ed", "ing")):
         return tokens
-    return [replace(last, text=last.lemma), *tokens[:-1]]
+    return [replace(last, text=last.lemma), *tokens[:-1]]  # "... the door closing": close the door
