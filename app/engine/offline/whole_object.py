@@ -147,6 +147,6 @@ def whole_named(frame: Frame, category: str | None) -> Frame:
     """"raise the whole door, frame and all" on a door asset: "whole" with the object's own name is the object, not
     its part of that name."""
     family = OBJECT_FAMILIES.get(category or "", frozenset())
-    themes = tuple(replace(m, is_object=True, kind=None) if _WHOLE & set(m.modifiers) and (m.head == category or m.head in family) else m
+    themes = tuple(replace(m, is_object=True, kind=None) if _WHOLE & set(m.modifiers) and (m.head == category or (m.head in family and m.kind is None)) else m
                    for m in frame.themes)
     return frame if themes == frame.themes else replace(frame, themes=themes)

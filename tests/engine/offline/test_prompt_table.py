@@ -78,6 +78,9 @@ ROWS: list[Row] = [
     R("laptop_10101", "Open the laptop screen until it's 270 degrees from closed, like folding it all the way around.", refuse=True),
     R("laptop_10101", "Open the laptop screen until it's 100 degrees from closed.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED + math.radians(100))}),
     R("microwave_7119", "I need just the microwave door closing.", joints={"joint_0": E(still=True)}),
+    R("laptop_10697", "Fold the screen down to 45 degrees, then back to where it was.", joints={"joint_1": E(peak=-1.1687)}),
+    R("coffee_machine_103030", "Two steps, one after the other: first the lid comes up off the jug, then - once the lid is up - the whole jug lifts "
+      "out of the base.", joints={"joint_2": E(end=0.5), "joint_1": E(end=0.05)}),
     R("microwave_7119", "Shut the microwave door — once it's shut the turntable starts going round. Show about half a turn of the plate after the door closes.",
       joints={"joint_1": E(abs_end=PI)}),
     R("box_102456", "Lift the toy box lid 20 degrees higher than it is now, then let it settle back where it was.", joints={"joint_0": E(peak=0.3491)}),

@@ -99,7 +99,7 @@ def _is_event(frame: Frame) -> bool:
         frame.let and frame.text.split()[0] in ("watch", "see"))
 
 
-_AS_IT_IS = re.compile(r" (like|as|where) (it|they) (is|are|was|were|sits|sit|stands) | as_is | as it is ")
+_AS_IT_IS = re.compile(r" (like|as) (it|they) (is|are|sits|sit|stands) | as_is ")
 _ROLLING = frozenset({VerbSense.TURN, VerbSense.SPIN, VerbSense.MOVE, VerbSense.OPERATE})
 
 
