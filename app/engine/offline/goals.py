@@ -11,6 +11,8 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
 from app.engine.contracts.steps import Goal, GoalState, MeasuredFrom
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
@@ -20,6 +22,7 @@ from app.engine.lexicon.words import CENTRE_WORDS
 from app.engine.offline.geometry import JointGeometry
 from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.quantities import Amount, Quantities
 from app.engine.offline.resolve import closed_of, direction_vector, resolve, spin_velocity
 from app.engine.offline.tracker import Tracker
@@ -197,8 +200,10 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         value, unit = None, None
     if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):
         measured = "current"
+    if state == "down" and value is None and part.geometry.type == "revolute" and _toward_part(frame, part, tracker) is not None:
+        state = "flat"  # "fold the handle down on the side away from the lid": down flat, on that side
     goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
-                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker))
+                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker, frame, part))
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)
@@ -231,11 +236,38 @@ def _either_way(goal: Goal, part: Part, tracker: Tracker) -> list[str]:
             f"to take it: took it toward its {end} limit; say which way (e.g. 'to the left', 'clockwise') to choose"]
 
 
-def _tipping(state: GoalState, direction: str | None, tracker: Tracker) -> tuple[float, float, float] | None:
-    """"fold the handle forward until it lies flat": the way it moves to the orientation."""
-    if state not in ("vertical", "flat") or direction not in _DIRECTIONAL:
+def _tipping(state: GoalState, direction: str | None, tracker: Tracker, frame: Frame | None = None,
+             part: Part | None = None) -> tuple[float, float, float] | None:
+    """"fold the handle forward until it lies flat": the way it moves to the orientation ("toward the lid side": the way
+    to another part)."""
+    if state not in ("vertical", "flat"):
         return None
+    toward = _toward_part(frame, part, tracker) if frame is not None and part is not None and direction in (None, "down", "up") else None
+    if toward is not None or direction not in _DIRECTIONAL:
+        return toward  # "fold it down on the side away from the lid": down, and that way
     x, y, z = (round(float(v), 6) + 0.0 for v in direction_vector(direction, tracker.obj))  # no -0.0
+    return (x, y, z)
+
+
+def _toward_part(frame: Frame, part: Part, tracker: Tracker) -> tuple[float, float, float] | None:
+    """"fold the handle down toward the lid side" / "on the side away from the lid": the side another movable part of the
+    kind named closes on (else the way to it), horizontal (None when no one such part)."""
+    words = frame.text.split()
+    lead = next((k for k, w in enumerate(words) if w in ("toward", "towards", "away")), None)
+    if lead is None:
+        return None
+    kinds = [kind_of_word(w) for w in words[lead + 1:lead + 5] if w not in ("from", "the", "its", "side")]
+    kind = next((k for k in kinds if k is not None), None)
+    others = [g for g in tracker.obj.joints.values() if kind is not None and g.category is kind and g.joint != part.joint]
+    if len(others) != 1:
+        return None
+    face = others[0].home_face - (others[0].home_face @ tracker.obj.up) * tracker.obj.up  # the side it closes on (a case's lid: its front)
+    way = face if float(np.linalg.norm(face)) > 0.5 else others[0].home_centroid - part.geometry.home_centroid
+    way = way - (way @ tracker.obj.up) * tracker.obj.up
+    if float(np.linalg.norm(way)) < 1e-9:
+        return None
+    way = (-1.0 if words[lead] == "away" else 1.0) * way / float(np.linalg.norm(way))
+    x, y, z = (round(float(v), 6) + 0.0 for v in way)
     return (x, y, z)
 
 
