@@ -200,10 +200,11 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         value, unit = None, None
     if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):
         measured = "current"
-    if state == "down" and value is None and part.geometry.type == "revolute" and _toward_part(frame, part, tracker) is not None:
+    toward = _toward_part(frame, part, tracker) if state in ("down", "vertical", "flat") and quantities.direction in (None, "down", "up") else None
+    if state == "down" and value is None and part.geometry.type == "revolute" and toward is not None:
         state = "flat"  # "fold the handle down on the side away from the lid": down flat, on that side
     goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
-                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker, frame, part))
+                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker, toward))
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)
@@ -236,13 +237,12 @@ def _either_way(goal: Goal, part: Part, tracker: Tracker) -> list[str]:
             f"to take it: took it toward its {end} limit; say which way (e.g. 'to the left', 'clockwise') to choose"]
 
 
-def _tipping(state: GoalState, direction: str | None, tracker: Tracker, frame: Frame | None = None,
-             part: Part | None = None) -> tuple[float, float, float] | None:
-    """"fold the handle forward until it lies flat": the way it moves to the orientation ("toward the lid side": the way
-    to another part)."""
+def _tipping(state: GoalState, direction: str | None, tracker: Tracker,
+             toward: tuple[float, float, float] | None = None) -> tuple[float, float, float] | None:
+    """"fold the handle forward until it lies flat": the way it moves to the orientation (``toward``, the way to another
+    part the prompt names, "toward the lid side", wins over a bare up/down)."""
     if state not in ("vertical", "flat"):
         return None
-    toward = _toward_part(frame, part, tracker) if frame is not None and part is not None and direction in (None, "down", "up") else None
     if toward is not None or direction not in _DIRECTIONAL:
         return toward  # "fold it down on the side away from the lid": down, and that way
     x, y, z = (round(float(v), 6) + 0.0 for v in direction_vector(direction, tracker.obj))  # no -0.0

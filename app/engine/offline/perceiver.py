@@ -91,7 +91,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     """
     words = tokenize(prompt, asset_words(asset))
     clauses = split_clauses(words)
-    frames = [whole_named(f, object_category(asset)) for f in read_frames(clauses)]
+    category = object_category(asset)
+    frames = [whole_named(f, category) for f in read_frames(clauses)]
     acts = build_acts(frames)
     builder = Builder(asset)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
