@@ -329,3 +329,5 @@ TO_THE_END = frozenset({"as_far_as_it_will_go", "as_far_as_it_goes", "as_far_as_
 """Amounts that take a part to the end of its travel ("push the screen back as far as it'll go")."""
 COMPARATIVES = frozenset({"higher", "lower", "wider", "deeper"})
 """After an amount, it is counted from where the part is ("20 degrees higher")."""
+OBJECT_TILTS = frozenset({"tilt", "tip", "lean", "rock"})
+"""Verbs that would tilt the whole object ("tilt the bin back and wheel it"): not animated; a step of its own is noted and left."""

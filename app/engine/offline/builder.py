@@ -1,11 +1,9 @@
 """Stages 5-6 — grounded acts -> contract steps, with causal completion.
 
-Each act's themes are grounded (:mod:`.referents`), each part gets a goal (:mod:`.goals`),
-and the mechanism rules (:mod:`.mechanisms`) add what the object needs: the pedal under a
-pedal bin's lid, the latch holding a door, the door in front of a tray. Every step records
-why it is there (asked, mechanism, latch, prerequisite, release), and every clause what was
-understood (:mod:`.explain`). The tracker resolves goals as the steps accumulate, so later
-clauses see the state earlier ones left.
+Each act's themes are grounded (:mod:`.referents`), each part gets a goal (:mod:`.goals`), and the mechanism rules
+(:mod:`.mechanisms`) add what the object needs: the pedal under a pedal bin's lid, the latch holding a door, the door in
+front of a tray. Every step records why it is there (asked, mechanism, latch, prerequisite, release), and every clause
+what was understood (:mod:`.explain`). The tracker resolves goals as the steps accumulate (later clauses see the state).
 """
 
 from __future__ import annotations
@@ -34,7 +32,7 @@ from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
-from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means
+from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means, take_hold
 from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
@@ -193,14 +191,7 @@ class Builder:
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
             return self.add(replace(act, goal=act.means, means=None))
-        if sense is VerbSense.GRASP:
-            try:
-                parts, _ = self.ground(goal, sense, goal.themes) if goal.themes else ([], [])
-            except GroundingError:
-                self.notes.append(f"ignored '{goal.text}': it names no part of {self.asset.name}")  # "while grabbing the milk"
-                return
-            self.refs.remember(parts, [])
-            self.notes.append(f"'{goal.text}': taking hold moves nothing by itself")
+        if take_hold(self, goal, sense):
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
@@ -323,9 +314,11 @@ class Builder:
                    for m in frame.themes)
 
     def _aimless(self, frame: Frame) -> bool:
-        """"... to start the wash", "... to make toast": a purpose that names no part (only what the object does)."""
-        themes = [m for m in frame.themes if not m.pronoun and not m.is_object]
-        return bool(themes) and all(m.kind is None and not self.refs.ground(m).parts for m in themes)
+        """"... to start the wash", "... to make toast": a purpose that names no part (only what the object does), or
+        only a control standing in for a kind the asset lacks ("crank the handle to pull the bolts": a safe has no latch)."""
+        themes = [(m, self.refs.ground(m)) for m in frame.themes if not m.pronoun and not m.is_object]
+        return bool(themes) and all(not f.parts if m.kind is None else f.how == "related" and all(
+            p.kind is not None and info(p.kind).control for p in f.parts) for m, f in themes)
 
     def _described(self, frame: Frame) -> list[Part] | None:
         """"the door with the handle", "the one with the knob": parts whose own (mesh) names contain a word of

@@ -82,8 +82,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         effects = effects + _let_fall(builder, controls)
     original_controls = list(controls)
     for move in controls:
-        if builder.reached(move) and move.release != "held" and why == "asked" and move.goal.state not in ("previous", "rest") and (
-                sense is not VerbSense.HOLD):
+        if builder.reached(move) and move.release != "held" and why == "asked" and (move.goal.state not in ("previous", "rest") or (
+                move.part.joint not in builder.tracker.before and sense is not VerbSense.RELEASE)) and sense is not VerbSense.HOLD:
             builder.notes.append(f"{move.part.link} ({move.part.joint}) is already {_as_far(move.goal.state)}: it did not move")
     controls = [m for m in controls if not builder.reached(m) or m.release == "held"]
     kept = []
@@ -315,4 +315,6 @@ def _as_far(state: str) -> str:
     """"already closed", "already as far left as it goes"."""
     directions = {"left": "left", "right": "right", "forward": "forward", "backward": "back", "up": "up", "down": "down", "toward": "that way",
                   "cw": "clockwise", "ccw": "counter-clockwise"}
-    return f"as far {directions[state]} as it goes" if state in directions else state
+    if state in directions:
+        return f"as far {directions[state]} as it goes"
+    return {"rest": "where it rests", "previous": "where it was"}.get(state, state)

@@ -106,14 +106,19 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     clause that places something on one part makes that part what "it" means next (when nothing else does yet)."""
     places = [*frame.instruments, *(m.owner for m in frame.themes if m.kind is None and not m.is_object and m.owner is not None)]
     places = [m for m in places if m.kind is not None]
-    if builder.refs.last or len(places) != 1:
+    told = [m for m in frame.themes if m.kind is not None and not m.pronoun and m.plural] if frame.verb is None or frame.stative else []
+    if len(told) == 1:
+        places = told  # "The clasps on this box are spring-loaded, so both of them snap shut": what "them" means next
+    elif builder.refs.last or len(places) != 1:
         return
     try:
         found, _ = builder.refs.resolve(places[0])
     except GroundingError:
         return
-    if len(found) == 1:
+    if len(found) == 1 or (told and found):
         builder.refs.last, builder.refs.last_kind = list(found), found[0].kind
+        if places[0].region and not builder.refs.scene:
+            builder.refs.scene = places[0].region  # "check what's on the bottom rack of the lower oven. Drop that door open": its door
 
 
 def exclude(builder: Builder, frame: Frame) -> None:

@@ -84,6 +84,9 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
                                                   or frame.explicit_return):
+        shuts = set(frame.text.split()) & {"in", "shut", "closed"} or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE)
+        if part.joint not in tracker.before and shuts and geometry.closed_value is not None and _class(part) is PartClass.OPENABLE:
+            return "closed"  # "slide the drawer back in" on a drawer resting open: back where it belongs, shut
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:
         return "open"  # "let it fall back to 60 degrees": a position measured from closed
@@ -200,11 +203,14 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         value, unit = None, None
     if value is not None and unit == "fraction" and state == "open" and sense in (VerbSense.CLOSE,):
         measured = "current"
-    toward = _toward_part(frame, part, tracker) if state in ("down", "vertical", "flat") and quantities.direction in (None, "down", "up") else None
+    toward = _toward_part(frame, part, tracker) if state in ("down", "vertical", "flat", "rest", "previous") and quantities.direction in (
+        None, "down", "up", "backward") else None
+    if state in ("rest", "previous") and toward is not None and geometry.type == "revolute":
+        state = "toward"  # "fold the handle (back) away from the lid": toward the side away from that part, not back to rest
     if state == "down" and value is None and part.geometry.type == "revolute" and toward is not None:
         state = "flat"  # "fold the handle down on the side away from the lid": down flat, on that side
     goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
-                direction_world=quantities.axis if state == "toward" else _tipping(state, quantities.direction, tracker, toward))
+                direction_world=(quantities.axis or toward) if state == "toward" else _tipping(state, quantities.direction, tracker, toward))
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)

@@ -19,7 +19,7 @@ from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import AGENT_NOUNS, PERSONS, Side
+from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.conditions import set_topic
@@ -111,6 +111,12 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
                 builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
                 act = replace(act, goal=act.means, means=None)
+            if act.goal.verb in OBJECT_TILTS and act.goal.themes and all(m.is_object for m in act.goal.themes) and not act.means:
+                if len(acts) == 1:
+                    raise builder.refs.refuse(f"'{act.goal.text}': tilting the whole {asset.name} is not animated (it can be moved and "
+                                              "turned, or its parts worked)")
+                builder.notes.append(f"did not animate '{act.goal.text}': tilting the whole {asset.name} is not animated, only moving and turning it")
+                continue  # "tilt the bin back and wheel it backwards": the wheeling is animated
             if act is not acts[-1] and record_release(builder, act):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:

@@ -366,7 +366,8 @@ class Referents:
             return list(self.group)
         if plural and len(self.last) == 1 and self.earlier:  # "left drawer out, then the right one, then both back in"
             before = [p for parts in reversed(self.earlier) for p in parts if p.kind is self.last[0].kind and p not in self.last]
-            return list(dict.fromkeys([*before[:1], *self.last]))
+            group = next((list(parts) for parts in reversed(self.earlier) if len(parts) > 1), None)  # "... the clasps ...; once the lid
+            return list(dict.fromkeys([*before[:1], *self.last])) if before or group is None else group  # is down they snap shut"
         if shuts and self.last and not any(_shuts(p) for p in self.last):
             return next((list(parts) for parts in reversed(self.earlier) if all(_shuts(p) for p in parts)), list(self.last))
         return list(self.last)

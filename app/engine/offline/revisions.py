@@ -181,3 +181,21 @@ def same_as_last(builder: Builder, frame: Frame) -> bool:
         return False
     moved = {m.joint for m in (*builder.steps[-1].controls, *builder.steps[-1].effects)} if builder.steps else set()
     return bool(parts) and all(p.joint in moved for p in parts)
+
+
+def take_hold(builder: Builder, goal: Frame, sense: VerbSense) -> bool:
+    """"grab the bucket by its handle", "take hold of the lid": nothing moves; what is held becomes what "it" means next
+    (the whole object when the object is named). False when ``goal`` is no taking hold."""
+    if (sense is VerbSense.GRASP or (sense is VerbSense.HOLD and goal.instruments)) and goal.themes and goal.themes[0].is_object:
+        builder.refs.last_object = True  # "grab the bucket by its handle and lift it": "it" is the bucket
+    elif sense is VerbSense.GRASP:
+        try:
+            parts, _ = builder.ground(goal, sense, goal.themes) if goal.themes else ([], [])
+        except GroundingError:
+            builder.notes.append(f"ignored '{goal.text}': it names no part of {builder.asset.name}")  # "while grabbing the milk"
+            return True
+        builder.refs.remember(parts, [])
+    else:
+        return False
+    builder.notes.append(f"'{goal.text}': taking hold moves nothing by itself")
+    return True

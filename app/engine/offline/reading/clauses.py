@@ -1,11 +1,9 @@
 """Stage 2 — clauses: tokens -> :class:`Clause` list, each with how it links to its neighbours.
 
-Boundaries are sentence marks, sequence words ("then", "after that", "finally"), "and" or a
-comma before a new verb, parallel words ("while", "at the same time as"), ordering words
-("after ...ing", "before ...", "once ..."), purpose ("to <verb>", "in order to"), means
-("by ...ing", "using the X, ..."), results ("so the lid opens", "which swings open",
-"and the lid lifts"), conditions ("while the door is open") and negations ("without
-touching the knob", "don't move the drawer").
+Boundaries are sentence marks, sequence words ("then", "after that", "finally"), "and" or a comma before a new verb,
+parallel words ("while", "at the same time as"), ordering words ("after ...ing", "before ...", "once ..."), purpose ("to
+<verb>", "in order to"), means ("by ...ing", "using the X, ..."), results ("so the lid opens", "which swings open", "and
+the lid lifts"), conditions ("while the door is open") and negations ("without touching the knob", "don't move it").
 """
 
 from __future__ import annotations
@@ -139,6 +137,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
             tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and (tokens[j + 1].lemma in VERBS or inflected_verb(tokens[j + 1].text)))):
         return True  # "so I can put my plate in", "so they can air-dry"
+    if tokens[j].text == "they" and j + 1 < len(tokens) and tokens[j + 1].lemma in VERBS and tokens[j + 1].text == tokens[j + 1].lemma:
+        return True  # "so they snap shut": a plural subject and its verb
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:

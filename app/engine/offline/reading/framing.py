@@ -31,6 +31,7 @@ _BOUNDS = frozenset({"all_the_way", "fully", "completely", "entirely", "too", "t
 _SIDE_WORDS = frozenset({"left", "right", "and", "or", "/", ",", "left-hand", "right-hand"})
 _HEDGES = frozenset({"think", "guess", "suppose", "believe", "reckon", "figure", "imagine"})
 _CARRIED = frozenset({"rides", "ride", "riding", "comes", "come", "goes", "go", "travels", "travel", "moves", "move", "up", "along"})
+_REASON_SUBJECTS = frozenset({"it's", "it'll", "it'd", "they're", "they'll", "they'd", "that's", "that'll", "that'd"})
 _CLAUSE_ENDS = frozenset({".", ";", "!", "?", ",", "so", "and", "so_that"})
 _RESTING_WORDS = frozenset({"sitting", "resting", "lying", "perched", "seated", "loose", "attached"})
 _HANDS = frozenset({"gripper", "arm", "hand", "robot", "effector", "manipulator", "finger"})
@@ -126,7 +127,7 @@ def _resting_part(tokens: list[Token], i: int) -> int:
         return 0
     k += 2 if words[k + 1] in ("is", "are") else 1
     k += words[k] == "just"
-    if words[k - 1] not in ("sits", "rests") and words[k] not in _RESTING_WORDS:
+    if words[k] not in ("sits", "rests") and words[k] not in _RESTING_WORDS:
         return 0
     end = until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "so", "and"}))
     return end - i + (end < len(tokens) and tokens[end].text == ",")
@@ -194,6 +195,21 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         while out and out[-1].text in ("so", "and", ","):
             out.pop()
         return until_break(tokens, i, frozenset({".", ";", "!", "?"}))
+    if t.text in ("rides", "ride", "comes", "goes", "travels") and after[:1] == ["along"] and (len(after) < 2 or after[1] in _CLAUSE_ENDS) and (
+            out and (out[-1].text in ("it", "they", "just") or kind_of_word(out[-1].text) is not None)):
+        since = max((k for k, w in enumerate(out) if w.text in _CLAUSE_ENDS), default=-1)
+        del out[since + 1:]  # "..., so it just rides along": carried, no motion of its own
+        while out and out[-1].text in ("so", "and", ","):
+            out.pop()
+        since = max((k for k, w in enumerate(out) if w.text in _CLAUSE_ENDS), default=-1)
+        if since >= 0 and _resting_part(out, since + 1) == len(out) - since - 1:
+            del out[since:]  # "..., the lid's sitting on it, so it just rides along": the scene, then that it is carried
+        return i + 2
+    if t.text == "otherwise" and after[:1] and (after[0] in _REASON_SUBJECTS or (after[:1] in (["it"], ["they"], ["that"]) and after[1:2] and (
+            after[1] in ("is", "will", "would", "might", "could", "can", "gets", "get", "blocks", "block", "hits", "hit")))):
+        while out and out[-1].text == ",":
+            out.pop()  # "fold the handle back first, otherwise it's in the way, then ...": why, not a step
+        return until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "then", "and_then"}))
     if (not out or out[-1].is_sentence_end) and (told := _resting_part(tokens, i)):
         return i + told  # "The lid is (just) sitting on the jug, so ...": how the scene is, no step
     if t.text in ("i'm", "we're") and after[:2] in (["interested", "in"], ["talking", "about"], ["thinking", "of"], ["looking", "at"]):

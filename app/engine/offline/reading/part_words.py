@@ -37,12 +37,18 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
 _PLACE_NOUNS = frozenset({"corner", "side", "end", "edge"})
 
 
+_AFTER_PARTICLE = frozenset({"away", "toward", "towards", "down", "up", "over", "out", "in", "to", "against", "onto", "into", "flat", ",",
+                             "and", "then", "so"})
+
+
 def side_run(tokens: list[Token], j: int) -> tuple[tuple[tuple[Side, bool], ...], int]:
     """Two or more side words from ``j`` ("bottom left", "bottom-left", "top right corner"): (the sides, where the run
     ends, past a closing "corner"/"side"); one side word alone is not a run (``((), j)``)."""
     sides: list[tuple[Side, bool]] = []
     k = j
     while k < len(tokens) and all(part in SPATIAL for part in tokens[k].text.split("-")):
+        if sides and tokens[k].text == "back" and k + 1 < len(tokens) and tokens[k + 1].text in _AFTER_PARTICLE:
+            break  # "fold the handle on top back away from the lid": the way it goes, not a side
         sides.extend(SPATIAL[part] for part in tokens[k].text.split("-"))
         k += 1
     if len(sides) < 2:

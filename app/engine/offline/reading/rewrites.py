@@ -110,9 +110,16 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text == "'s" and after in _JOINT_WORDS and out and out[-1].text.isalpha() and not any(t.text in _NEAR_WORDS for t in out[-4:]):
             skip = 1  # "drive the pail handle's hinge to its far limit": the part on that hinge
             continue
+        if token.text == "by" and after in ("itself", "themselves"):
+            skip = 1  # "both of them snap shut by themselves": on their own, no step of the user's
+            continue
+        if [t.text for t in tokens[i:i + 3]] in (["both", "of", "them"], ["all", "of", "them"]) and (not out or out[-1].text in _SUBJECT_BEFORE) and (
+                i + 3 < len(tokens) and tokens[i + 3].lemma in VERBS and tokens[i + 3].text == tokens[i + 3].lemma):
+            token, skip = replace(token, text="they", lemma="they"), 2  # "so both of them snap shut": they snap shut
         if token.text in ("itself", "themselves") and out and out[-1].lemma not in VERBS and out[-1].text.isalpha():
             continue  # "lift the jug itself": emphasis, the jug
-        if token.text == "its" and i + 1 < len(tokens) and tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS and (
+        if token.text == "its" and i + 1 < len(tokens) and ((tokens[i + 1].text.endswith("ing") and tokens[i + 1].text not in _KNOWN_NOUNS) or (
+                tokens[i + 1].text in _STATE_AFTER_ITS)) and (
                 i + 2 >= len(tokens) or tokens[i + 2].is_punct or tokens[i + 2].text in ("and", "so", "then", "outside", "again", "now", "hard")):
             token = replace(token, text="it's", lemma="it's")  # "its raining": the apostrophe left out
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
@@ -235,6 +242,10 @@ def corrections(tokens: list[Token]) -> list[Token]:
 
 _LIMITS = frozenset({"top", "bottom", "limit", "stop", "end", "max", "maximum", "min", "minimum"})
 _ALL_THE_WAY = frozenset({"back", "up", "down", "open", "out", "over", "round", "around"})
+_SUBJECT_BEFORE = frozenset({"so", ",", "and", ".", ";", "then", "once", "when", "until"})
+_STATE_AFTER_ITS = frozenset({"shut", "closed", "open", "opened", "done", "flush", "flat", "level", "upright", "vertical", "horizontal",
+                              "halfway", "all_the_way", "fully", "straight"})
+"""After "its" with nothing after: the apostrophe left out ("slide it in till its shut")."""
 _TO = frozenset({"the", "its", "a", "an", "their", "my", "your", "left", "right", "middle", "centre", "center"})
 _ARRANGED = frozenset({"above", "below", "over", "under", "beneath", "behind", "beside", "atop", "next_to", "on_top_of", "alongside"})
 """Relations of "one ... the other" that say how parts are arranged ("one after the other" is an order, not one of them)."""

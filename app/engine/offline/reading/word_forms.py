@@ -124,17 +124,27 @@ def _code_heading(tokens: list[Token], i: int) -> int:
     return colon - i + 1 if told and words[0] in _ENTERING else 0
 
 
-def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[Token]] | None:
-    """At "in" of "the rack in that upper compartment" / "out of the upper oven compartment": (tokens read, the tokens for
-    "the upper compartment 's rack"), else None."""
-    words = [t.text for t in tokens[i:i + 5]] + [""]
-    if len(words) < 5 or words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this") or words[3] not in _COMPARTMENTS:
+def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, int, list[Token]] | None:
+    """At "in" of "the (upper) rack in that upper compartment" / "out of the upper oven compartment": (tokens read, where
+    the phrase starts in ``out``, its tokens: "the upper compartment 's (upper) rack"); "the rack in that compartment": "its
+    rack" (the compartment last opened). Else None."""
+    words = [t.text for t in tokens[i:i + 5]] + ["", ""]
+    the = len(out) - 2
+    while the >= 0 and out[the].text in _SIDE_OF | {"middle"}:
+        the -= 1  # "the upper rack in the bottom compartment"
+    if the < 0 or out[the].text != "the":
         return None
-    if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or len(out) < 2 or out[-2].text != "the":
+    if words[0] in ("inside", "within") and kind_of_word(out[-1].text) is not None and "out" in words[1:4]:
+        return 1, the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]  # "open the door and slide the rack inside (all the
+        # way) out": the rack behind that door
+    if words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this"):
+        return None
+    if words[2] in _COMPARTMENTS and words[1] != "the":  # "in that compartment": the one just opened
+        return 3 + (words[3] in _COMPARTMENTS), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]
+    if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or words[3] not in _COMPARTMENTS:
         return None
     last = i + 3 + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
-    noun = out[-1]
-    return last + 1 - i, [tokens[i + 2], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), noun]
+    return last + 1 - i, the + 1, [tokens[i + 2], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:]]
 
 
 def _of_the_object(tokens: list[Token], j: int) -> int:
@@ -280,7 +290,7 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(replace(t, text="part", lemma="part"))  # "the upper half of the laptop": the upper part
         return i + (1 + whole)
     if (moved := _in_compartment(tokens, i, out)) is not None:
-        out[-1:] = moved[1]  # "the rack (that sits) in that upper compartment": the upper compartment's rack
+        out[moved[1]:] = moved[2]  # "the rack (that sits) in that upper compartment": the upper compartment's rack
         return i + moved[0]
     if t.text in _END_STATES and after[:1] and after[0] in ("the", "its", "a", "an") and _condition_open(out):
         out += [t, Token(",", ",", t.end, t.end)]  # "once it is open the left drawer follows": the condition ends here
