@@ -84,9 +84,11 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
                                                   or frame.explicit_return):
-        shuts = set(frame.text.split()) & {"in", "shut", "closed"} or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE)
+        said = set(frame.text.split())  # "slide the drawer back in", "put the lid back down on the pot": where it belongs, shut
+        shuts = said & {"in", "shut", "closed"} or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
+            said & {"down", "on"} and part.kind is not None and info(part.kind).lid_like)
         if part.joint not in tracker.before and shuts and geometry.closed_value is not None and _class(part) is PartClass.OPENABLE:
-            return "closed"  # "slide the drawer back in" on a drawer resting open: back where it belongs, shut
+            return "closed"
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:
         return "open"  # "let it fall back to 60 degrees": a position measured from closed

@@ -116,7 +116,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     raise builder.refs.refuse(f"'{act.goal.text}': tilting the whole {asset.name} is not animated (it can be moved and "
                                               "turned, or its parts worked)")
                 builder.notes.append(f"did not animate '{act.goal.text}': tilting the whole {asset.name} is not animated, only moving and turning it")
-                continue  # "tilt the bin back and wheel it backwards": the wheeling is animated
+                builder.refs.last_object = True
+                continue  # "tilt the bin back and wheel it backwards": the wheeling is animated, and "it" is the bin
             if act is not acts[-1] and record_release(builder, act):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:

@@ -152,3 +152,24 @@ def test_a_distance_raised_is_from_where_the_part_rests(tmp_path: Path) -> None:
     assert mapping.offsets, "the lid does not rest ajar: the test tests nothing"
     track = animate_model(load_asset(tmp_path / "kitchen_pot_100038"), "raise the lid 20 cm").trajectory.joint("joint_0")
     assert track[-1] - track[0] == pytest.approx(0.2, abs=1e-6)
+
+
+BACK_HOME_ROWS = [
+    ("storage_20453", "slide the drawer back in", "close the drawer"),
+    ("storage_20453", "slide that drawer back in till its shut", "close the drawer"),
+    ("kitchen_pot_100038", "Put the lid back down on the pot.", "close the lid"),
+]
+
+
+@pytest.mark.parametrize(("name", "prompt", "plain"), BACK_HOME_ROWS, ids=[f"{n}: {p}" for n, p, _ in BACK_HOME_ROWS])
+def test_back_in_on_a_part_resting_open_is_shut(name: str, prompt: str, plain: str, tmp_path: Path) -> None:
+    """"slide the drawer back in" on a drawer resting open (nothing moved it yet): back where it belongs, shut — not "back to
+    where it rests", which moves nothing."""
+    mapping = make_variant(asset_dir(name), tmp_path / name, ("ajar",))
+    assert mapping.offsets, "nothing rests ajar: the row tests nothing"
+    asset = load_asset(tmp_path / name)
+    said, shut = animate_model(asset, prompt).trajectory, animate_model(asset, plain).trajectory
+    moved = [j for j in shut.joint_names if float(np.ptp(shut.joint(j))) > 1e-6]
+    assert moved, "the plain prompt moves nothing: the row tests nothing"
+    for joint in said.joint_names:
+        assert said.joint(joint)[-1] == pytest.approx(shut.joint(joint)[-1], abs=1e-6), joint

@@ -69,3 +69,20 @@ def test_a_part_named_by_place_that_another_carries_is_a_named_guess() -> None:
     """"the top half of the machine" on a coffee maker whose jug carries its lid: either could be meant."""
     notes = _notes("coffee_machine_103030", "Twist the knob on the front to make the top half of the machine rise up.")
     assert any("which carries it" in n for n in notes), notes
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("extra/suitcase_100550", "put the handle back"), ("extra/bucket_100432", "put the handle back")])
+def test_a_part_asked_back_where_it_already_rests_is_said(name: str, prompt: str) -> None:
+    """Nothing moved the part yet and it rests there: the animation is still, and the note says why (never a silent no-op)."""
+    assert any("is already where it rests: it did not move" in n for n in _notes(name, prompt)), _notes(name, prompt)
+
+
+def test_a_purpose_naming_a_kind_the_asset_lacks_moves_nothing_else() -> None:
+    """"crank the handle to pull the bolts": a safe has no latch, and its other knob is no stand-in for one."""
+    notes = _notes("safe_101593", "crank the big spoked handle a quarter turn clockwise to pull the bolts")
+    assert any("ignored the purpose 'pull the bolts'" in n for n in notes), notes
+
+
+def test_a_tilt_of_the_whole_object_among_other_steps_is_said() -> None:
+    notes = _notes("trash_can_102155", "tilt the bin back and wheel it backwards 40 cm")
+    assert any("tilting the whole trash_can_102155 is not animated" in n for n in notes), notes

@@ -59,6 +59,37 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 33 (cases and prompts on dev assets turned, moved, mirrored, flipped or resting ajar) ---
+    R("safe_101593", "crank the big spoked handle a quarter turn clockwise to pull the bolts, then swing the door all the way open",
+      joints={"joint_1": E(end=-PI / 2), "joint_0": E(end="upper"), "joint_2": E(still=True)}),  # "the bolts" are no knob
+    R("coffee_machine_103030", "lift the jug up as far as it goes — the lid's sitting on it, so it just rides along",
+      joints={"joint_1": E(end=0.05), "joint_2": E(still=True)}),
+    R("coffee_machine_103030", "lift the jug up as far as it goes; the lid rides along", joints={"joint_1": E(end=0.05), "joint_2": E(still=True)}),
+    R("extra/oven_7179", "open the bottom oven door fully, then pull the upper rack in that compartment out halfway",
+      joints={"joint_3": E(end="upper"), "joint_1": E(end=0.264), "joint_0": E(still=True), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "open the bottom oven door, then pull the upper rack in the bottom compartment out halfway",
+      joints={"joint_3": E(end="upper"), "joint_1": E(end=0.264), "joint_0": E(still=True), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "Open the top oven door and slide the rack inside all the way out.",
+      joints={"joint_4": E(end="upper"), "joint_0": E(end=0.528), "joint_1": E(still=True), "joint_3": E(still=True)}),
+    R("extra/oven_7179", "Open the bottom oven door and slide the rack inside all the way out.", refuse=True),  # two racks behind it
+    R("extra/oven_7179", "I need to check what's on the very bottom rack of the lower oven. Drop that door open and pull the rack out about "
+      "halfway.", joints={"joint_3": E(end="upper"), "joint_2": E(end=0.264), "joint_1": E(still=True), "joint_4": E(still=True)}),
+    R("extra/bucket_100432", "Grab the bucket by its handle and lift it about half a metre off the floor.", base=(0.0, 0.0, 0.5)),
+    R("extra/bucket_100432", "Hold the bucket by the handle, then raise it 50 cm", base=(0.0, 0.0, 0.5)),
+    R("extra/suitcase_100550", "Fold the carry handle on top back away from the lid first, otherwise it's in the way, then flop the lid open all "
+      "the way.", joints={"joint_1": E(end=1.2217), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("extra/suitcase_100550", "fold the handle toward the lid", joints={"joint_1": E(end=-1.2217)}),
+    R("trash_can_102155", "flip the lid all the way open, then tilt the bin back and wheel it backwards about 40cm",
+      joints={"joint_2": E(end="upper"), "joint_0": E(end=-3.6355), "joint_1": E(end=-3.6355)}, base=(0.4, 0.0, 0.0)),
+    R("trash_can_102155", "tilt the bin back", refuse=True),  # tilting the whole object is not animated: said, not guessed
+    R("extra/box_100214", "Press the lid down until it closes. The clasps on this box are spring-loaded, so both of them snap shut by themselves "
+      "once the lid is down.", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("laptop_10697", "Tilt the screen so it sits at a right angle to the keyboard, like 90°.", joints={"joint_1": E(end=-0.3833)}),
+    R("switch_100952", "Press the lower half of the rocker switch in.", joints={"joint_0": E(end=0.3142)}),
+    R("microwave_7236", "I need to put a bowl of soup in there, get the door out of the way.", joints={"joint_0": E(end="upper")}),
+    R("microwave_7236", "swing the door out of the way", joints={"joint_0": E(end="upper")}),
+    R("trash_can_102181", "Give the foot pedal a quick tap and let it spring back.", joints={"joint_0": E(peak=0.5718)}),
+    R("window_103135", "Crack the window open, something like 45 degrees.", joints={"joint_0": E(end=WINDOW_103135_CLOSED + PI / 4)}),
     # --- blind round 30 (mirrored and turned dev assets): a side before an amount, wheels the object rolled on ---
     R("trash_can_102155", "Give the wheel on the right a full spin.", joints={"joint_0": E(end=2 * PI)}),
     R("trash_can_102155", "give the wheel on the left a full turn", joints={"joint_1": E(end=2 * PI)}),

@@ -137,7 +137,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     if j + 1 < len(tokens) and (tokens[j].text in PERSONS or tokens[j].text in ("it", "they")) and (
             tokens[j + 1].text in MODALS or (tokens[j].text in PERSONS and (tokens[j + 1].lemma in VERBS or inflected_verb(tokens[j + 1].text)))):
         return True  # "so I can put my plate in", "so they can air-dry"
-    if tokens[j].text == "they" and j + 1 < len(tokens) and tokens[j + 1].lemma in VERBS and tokens[j + 1].text == tokens[j + 1].lemma:
+    if j + 1 < len(tokens) and tokens[j].text == "they" and tokens[j + 1].lemma in VERBS and tokens[j + 1].text == tokens[j + 1].lemma:
         return True  # "so they snap shut": a plural subject and its verb
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j

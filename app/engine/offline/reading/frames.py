@@ -111,6 +111,7 @@ class Frame:
     """Said in words ("to where it was", "its original angle"), not only a "back" particle."""
 
 
+_MANNER_ADJECTIVES = frozenset({"quick", "gentle", "little", "good", "hard", "firm", "slight", "small", "short", "light", "brief", "sharp"})
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
                                  "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3", "degree", "degrees",
                                  "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise", "counter-clockwise"})
@@ -126,6 +127,9 @@ def _light_verb(tokens: list[Token]) -> list[Token]:
             return [tokens[i], *tokens[i + 2:]]  # "give a quick tap to the top key": tap the top key
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
             bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
+            if tokens[i - 1].text in _MANNER_ADJECTIVES and tokens[i - 2].text in ("a", "an"):
+                return [tokens[i], *tokens[1:i - 2], *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal ("a quick tap" names
+                # no tap of a sink)
             return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
     return tokens
 

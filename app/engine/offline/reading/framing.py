@@ -31,6 +31,8 @@ _BOUNDS = frozenset({"all_the_way", "fully", "completely", "entirely", "too", "t
 _SIDE_WORDS = frozenset({"left", "right", "and", "or", "/", ",", "left-hand", "right-hand"})
 _HEDGES = frozenset({"think", "guess", "suppose", "believe", "reckon", "figure", "imagine"})
 _CARRIED = frozenset({"rides", "ride", "riding", "comes", "come", "goes", "go", "travels", "travel", "moves", "move", "up", "along"})
+_LEAVING = frozenset({"stepping", "walking", "heading", "leaving", "running", "popping", "nipping"})
+_AWAY_WORDS = frozenset({"away", "out", "off", "home", "to", "from", "for", "into"})
 _REASON_SUBJECTS = frozenset({"it's", "it'll", "it'd", "they're", "they'll", "they'd", "that's", "that'll", "that'd"})
 _CLAUSE_ENDS = frozenset({".", ";", "!", "?", ",", "so", "and", "so_that"})
 _RESTING_WORDS = frozenset({"sitting", "resting", "lying", "perched", "seated", "loose", "attached"})
@@ -205,6 +207,9 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         if since >= 0 and _resting_part(out, since + 1) == len(out) - since - 1:
             del out[since:]  # "..., the lid's sitting on it, so it just rides along": the scene, then that it is carried
         return i + 2
+    if t.text in ("i'm", "we're") and (not out or out[-1].is_sentence_end) and after[:2] and after[0] in _LEAVING and after[1] in _AWAY_WORDS:
+        end = until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "so", "and"}))
+        return end + (end < len(tokens) and tokens[end].text == ",")  # "I'm stepping away from my desk, ...": about the user
     if t.text == "otherwise" and after[:1] and (after[0] in _REASON_SUBJECTS or (after[:1] in (["it"], ["they"], ["that"]) and after[1:2] and (
             after[1] in ("is", "will", "would", "might", "could", "can", "gets", "get", "blocks", "block", "hits", "hit")))):
         while out and out[-1].text == ",":

@@ -11,9 +11,11 @@ from __future__ import annotations
 from dataclasses import replace
 from functools import lru_cache
 
+from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     ADVERB_PARTICLES,
+    ANGLE_UNITS,
     ASIDE_PHRASES,
     ASIDE_WORDS,
     CORRECTION_LEADS,
@@ -110,6 +112,17 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text == "'s" and after in _JOINT_WORDS and out and out[-1].text.isalpha() and not any(t.text in _NEAR_WORDS for t in out[-4:]):
             skip = 1  # "drive the pail handle's hinge to its far limit": the part on that hinge
             continue
+        if token.text == "out_of" and [t.text for t in tokens[i + 1:i + 3]] == ["the", "way"] and any(
+                (kind := kind_of_word(t.text)) is not None and info(kind).hinged for t in out[-3:]):
+            token, skip = replace(token, text="open", lemma="open"), 2  # "get the door out of the way": open it
+        if token.text == "like" and i + 1 < len(tokens) and tokens[i + 1].number is not None:
+            if out and out[-1].text == "," and any(t.text == "right_angle" for t in out) and i + 2 < len(tokens) and tokens[i + 2].text in ANGLE_UNITS:
+                out.pop()  # "so it sits at a right angle to the keyboard, like 90°": the right angle said again
+                skip = 2
+                continue
+            token = replace(token, text="about", lemma="about")  # "..., like 90°", "something like 45 degrees": about 90 degrees
+            if out and out[-1].text in ("something", "somewhere"):
+                out.pop()
         if token.text == "by" and after in ("itself", "themselves"):
             skip = 1  # "both of them snap shut by themselves": on their own, no step of the user's
             continue

@@ -18,6 +18,7 @@ from __future__ import annotations
 import itertools
 from dataclasses import replace
 
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, LENGTH_UNITS, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
@@ -189,8 +190,9 @@ def _stowed(tokens: list[Token], i: int) -> int:
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
-    if tokens[k].text in ("inside", "in") and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in ("to", "for", "and", "so")):
-        return k + 1 if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
+    there = k + 1 < len(tokens) and tokens[k + 1].text in ("there", "here")  # "put a bowl of soup in there": in the object
+    if tokens[k].text in ("inside", "in") and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in ("to", "for", "and", "so") or there):
+        return k + 1 + there if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
     k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
     holder = [t.text for t in tokens[k + 1:k + 4]]
     if holder and holder[0] not in ("the", "this", "that", "its", "my"):
@@ -289,6 +291,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text in _REGION_OF and out and out[-1].text in _SIDE_OF and (whole := _of_the_object(tokens, i + 1)):
         out.append(replace(t, text="part", lemma="part"))  # "the upper half of the laptop": the upper part
         return i + (1 + whole)
+    if t.text in _REGION_OF and out and out[-1].text in _SIDE_OF and after[:2] == ["of", "the"] and any(
+            kind_of_word(w) is PartKind.SWITCH for w in after[2:4]):
+        out.append(replace(t, text="end", lemma="end"))  # "press the lower half of the rocker switch": its lower end
+        return i + 1
     if (moved := _in_compartment(tokens, i, out)) is not None:
         out[moved[1]:] = moved[2]  # "the rack (that sits) in that upper compartment": the upper compartment's rack
         return i + moved[0]
