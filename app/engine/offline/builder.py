@@ -105,7 +105,9 @@ class Builder:
     def _only_part(self, frame: Frame, mention: Mention) -> list[Part]:
         """A part name we do not know, tied to the object ("the stapler's magazine") on an object with one
         movable part, with a verb that part can do: that part, with a warning; never a bare guess."""
-        if mention.whose is None or mention.kind is not None or len(self.parts) != 1 or self.refs.ground(mention).parts:
+        category = self.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
+        tied = mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)
+        if not tied or mention.kind is not None or len(self.parts) != 1 or self.refs.ground(mention).parts:
             return []
         part = self.parts[0]
         sense = frame.sense

@@ -62,6 +62,10 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
             if mech.named_for_another_job(worked.words):
                 continue  # "hit the start button": it starts the oven, it releases nothing
             for effect in mech.effects_of(worked.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
+                if mech.release_by_guess(worked.part, worked.words, builder.asset):
+                    builder.notes.append(f"pressed the {_kind(worked.part)} ({worked.part.joint}) only: it may release the {_kind(effect)} "
+                                         f"({effect.joint}); say 'so the {_kind(effect)} opens' to open it too")
+                    continue  # "press the microwave's button": the door opening is not asked, and the button may start it
                 effects.append(Move(effect, "effect", goal_for(_NOTHING, VerbSense.OPEN, effect, builder.tracker).goal, words=""))
                 notes[effect.joint] = f"the {_kind(worked.part)} ({worked.part.joint}) drives it"
                 builder.mentioned.add(effect.joint)

@@ -15,7 +15,7 @@ import numpy as np
 
 from app.engine.asset.kinematics import drives_mimics, subtree_poses
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.lexicon.kinds import CONTROL_KINDS
+from app.engine.lexicon.kinds import CONTROL_KINDS, PartKind, info
 from app.engine.lexicon.objects import SPOUTED
 from app.engine.offline.naming import tokens
 from app.engine.offline.rest_points import posed
@@ -104,6 +104,7 @@ class FrontCue(StrEnum):
     PARTS = "its doors, drawers, lids or control panel"
     SPOUT = "its spout"
     CONTROLS = "the side its controls sit on"
+    SCREEN = "its fixed screen (the base in front of it)"
     CONVENTION = "nothing: PartNet-Mobility's convention"
 
 
@@ -120,7 +121,23 @@ def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
     if category in SPOUTED and not by_convention(vote := _reach(asset, joints, points, rest)):
         return vote, FrontCue.SPOUT
     vote = _control_faces(joints)
+    if by_convention(vote) and not by_convention(screen := _fixed_screen(asset, joints, points, rest)):
+        return screen, FrontCue.SCREEN
     return vote, FrontCue.CONVENTION if by_convention(vote) else FrontCue.CONTROLS
+
+
+def _fixed_screen(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
+                  rest: dict[str, FloatArray]) -> FloatArray:
+    """A screen the URDF fixed (a laptop that cannot fold): the user sits on the far side of the base from it."""
+    moving = {link for geometry in joints.values() for link in geometry.moving_links}
+    still = [link for link in asset.visual_links if link not in moving]
+    screens = [link for link in still if asset.links[link].semantics.label in info(PartKind.SCREEN).labels]
+    if not screens or len(screens) == len(still):
+        return np.zeros(3)
+    base = posed(points, rest, [link for link in still if link not in screens])
+    away = _flat(base.mean(axis=0) - posed(points, rest, screens).mean(axis=0))
+    span = float(np.linalg.norm(base.max(axis=0) - base.min(axis=0))) if base.shape[0] else 0.0
+    return _horizontal(away) if span > 0 and float(np.linalg.norm(away)) > MIN_REACH * span else np.zeros(3)
 
 
 def _reach(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],

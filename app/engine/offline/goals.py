@@ -85,9 +85,10 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
                                                   or frame.explicit_return):
         said = set(frame.text.split())  # "slide the drawer back in", "put the lid back down on the pot": where it belongs, shut
-        shuts = said & {"in", "shut", "closed"} or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
+        home = bool(said & {"in", "into", "shut", "closed"})  # "tuck the magazine back up into the cover", "slide it back in": shut
+        shuts = home or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
             said & {"down", "on"} and part.kind is not None and info(part.kind).lid_like)
-        if part.joint not in tracker.before and shuts and geometry.closed_value is not None and _class(part) is PartClass.OPENABLE:
+        if (home or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:
             return "closed"
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:
@@ -199,6 +200,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
             state = "ccw" if state == "cw" else "cw"  # it only turns the other way
     reference = quantities.amount.reference if quantities.amount is not None else None
     measured: MeasuredFrom = reference or _default_from(state, sense)
+    if reference is None and unit == "fraction" and state == "open" and quantities.amount is not None and quantities.amount.loose:
+        measured = "current"  # "pull the drawer out a little (more)": a little further than it is, never back toward closed
     if reference is None and unit == "m" and sense in (VerbSense.RAISE, VerbSense.LOWER):
         measured = "current"  # "raise the lid 20 cm": a distance raised is from where it is (a lid resting ajar goes 20 cm higher)
     if state == "closed" and unit == "fraction" and value is not None and value >= 1.0:

@@ -33,6 +33,13 @@ def _named_release(part: Part, asset: ArticulatedAsset) -> bool:
     return bool(link_words(asset, part.link, visuals=False) & RELEASE_NAME_WORDS)
 
 
+def release_by_guess(control: Part, words: str, asset: ArticulatedAsset) -> bool:
+    """Working ``control`` releases something only because of what the object is (any button on a microwave): neither its
+    name in the asset nor the user's words call it a release."""
+    named = _named_release(control, asset) or bool(set(words.lower().replace("-", " ").split()) & RELEASE_NAME_WORDS)
+    return control.kind is not None and info(control.kind).operates_needs_name and not named
+
+
 def named_for_another_job(words: str) -> bool:
     """What the user called a control gives it a job other than releasing ("the start button", "the timer knob"); only the
     words before its noun count ("the button on the microwave" names no job)."""

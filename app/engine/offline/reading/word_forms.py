@@ -213,7 +213,11 @@ def _let_through(tokens: list[Token], i: int) -> int:
         return 0
     if i and tokens[i - 1].text in ("to", "and", "so"):
         return 0  # "hold the lid up to let the steam out": why, the motion is said
-    end = k + 1 + (k + 1 < len(tokens) and tokens[k + 1].text in ("please", "pls", "plz"))  # "let some fresh air in please"
+    end = k + 1
+    if [t.text for t in tokens[end:end + 2]] in (["from", "the"], ["out_of", "the"], ["from", "its"]) and end + 2 < len(tokens) and (
+            tokens[end + 2].text in OBJECT_NOUNS):
+        end += 3  # "let a bit of steam escape from the pot"
+    end += end < len(tokens) and tokens[end].text in ("please", "pls", "plz")  # "let some fresh air in please"
     return end if end == len(tokens) or tokens[end].is_sentence_end else 0  # "let some steam out - crack the lid 3 cm": the how follows
 
 
