@@ -33,7 +33,7 @@ from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means, take_hold
-from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act
+from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, object_motion_act, object_result
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
@@ -85,6 +85,8 @@ class Builder:
                 self._same_object(mention)
                 found = self._object_parts(frame, sense)
             else:
+                if mention.relation is not None and mention.relation[1].pronoun and parts:
+                    self.refs.last, self.refs.last_kind = [parts[-1]], parts[-1].kind  # "top-left key, the one right under it"
                 found = self._only_part(frame, mention)
                 if not found:
                     try:
@@ -193,7 +195,7 @@ class Builder:
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
             return self.add(replace(act, goal=act.means, means=None))
-        if take_hold(self, goal, sense):
+        if object_result(self, act) or take_hold(self, goal, sense):
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
@@ -203,7 +205,7 @@ class Builder:
         if goal.codes and act.means is None and goal.verb in CODE_VERBS and is_code(self, goal):
             enter_code(self, act)
             return
-        if act.means is None and self._is_object_motion(goal):
+        if act.means is None and self.is_object_motion(goal):
             object_motion_act(self, act)
             return
         if goal.first is not None and act.means is None:
@@ -244,7 +246,7 @@ class Builder:
         effects = self.moves(goal, sense, effects_parts, effect_words, role)
         self.complete(act, sense, controls, effects)
 
-    def _is_object_motion(self, frame: Frame) -> bool:
+    def is_object_motion(self, frame: Frame) -> bool:
         targets = list(frame.themes)
         if not targets:
             return (not self.parts and frame.verb is not None) or (self.refs.last_object and frame.verb in VERBS and frame.sense is not None

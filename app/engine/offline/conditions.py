@@ -48,6 +48,9 @@ def condition(builder: Builder, act: Act) -> None:
         return
     if any(m.is_object for m in frame.themes) and not all(m.is_object for m in frame.themes):
         frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))  # "the safe has two dials": the dials
+    copula = next((k for k, word in enumerate(frame.text.split()) if word in ("is", "are")), None)
+    if copula is not None and frame.verb is None and any(m.start < copula for m in frame.themes) and any(m.start > copula for m in frame.themes):
+        frame = replace(frame, themes=tuple(m for m in frame.themes if m.start < copula))  # "the little knob is the lid release": the knob
     having = next((k for k, word in enumerate(frame.text.split()) if word in _HAVING), None)
     if having is not None and frame.verb is None and any(m.start > having for m in frame.themes):
         frame = replace(frame, themes=tuple(m for m in frame.themes if m.start > having))  # "the door has two knobs on it": the knobs
@@ -106,16 +109,17 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     clause that places something on one part makes that part what "it" means next (when nothing else does yet)."""
     places = [*frame.instruments, *(m.owner for m in frame.themes if m.kind is None and not m.is_object and m.owner is not None)]
     places = [m for m in places if m.kind is not None]
-    told = [m for m in frame.themes if m.kind is not None and not m.pronoun and m.plural] if frame.verb is None or frame.stative else []
+    told = [m for m in frame.themes[:1] if m.kind is not None and not m.pronoun] if frame.verb is None or frame.stative else []
     if len(told) == 1:
-        places = told  # "The clasps on this box are spring-loaded, so both of them snap shut": what "them" means next
+        places = told  # "The clasps on this box are spring-loaded, so both of them snap shut", "The little knob on the far right is
+        # the lid release. Give it a quarter turn": the subject of a description is what "it" / "them" means next
     elif builder.refs.last or len(places) != 1:
         return
     try:
         found, _ = builder.refs.resolve(places[0])
     except GroundingError:
         return
-    if len(found) == 1 or (told and found):
+    if len(found) == 1 or (told and found and told[0].plural):
         builder.refs.last, builder.refs.last_kind = list(found), found[0].kind
         if places[0].region and not builder.refs.scene:
             builder.refs.scene = places[0].region  # "check what's on the bottom rack of the lower oven. Drop that door open": its door

@@ -113,7 +113,7 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if quantities.axis is not None and sense is not VerbSense.SPIN and (part_class_ is not PartClass.OPENABLE or geometry.open_value is None):
         return "toward"  # "swing the handle down onto the rim on the -X side"
     if (frame.particle == "back" and quantities.direction is None and rotates and part_class_ is not PartClass.OPENABLE and not frame.returning
-            and geometry.open_value is None):
+            and geometry.open_value is None and sense is not VerbSense.RELEASE):  # "let the knob spring back": it returns
         return "backward"  # "flip the handle back" (from where it rests): toward the back of the object
     rolls = part.kind is not None and info(part.kind).rolls
     rocker = VERBS[frame.verb].rocker_sense if frame.verb is not None and frame.verb in VERBS and frame.particle is None and frame.sense is sense else None

@@ -38,6 +38,8 @@ def with_result_quantities(frame: Frame, results: tuple[Frame, ...]) -> Frame:
 def object_motion_act(builder: Builder, act: Act) -> None:
     goal = act.goal
     previous = builder.steps[-1].base if builder.steps else None
+    if goal.quantities.direction == "down" or "down" in goal.text.split():  # "lift it, carry it right and put it back down": the lift, undone
+        previous = next((s.base for s in reversed(builder.steps) if s.base is not None and s.base.axis_world and s.base.axis_world[2] > 0.5), previous)
     motion = returning_motion(goal, previous) if goal.returning or goal.sense in (VerbSense.RETURN,) else None
     if motion is None:
         goal = with_result_quantities(goal, act.results)
@@ -117,3 +119,16 @@ def in_turn(builder: Builder, act: Act) -> None:
     for index, part in enumerate(ordered):
         moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
         builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
+
+
+def object_result(builder: Builder, act: Act) -> bool:
+    """"(pull the drawer out,) then keep pulling so the whole cabinet drags 20 cm toward you": a step that names no part,
+    whose result moves the whole object, is that motion of the object (True when it was added)."""
+    if act.means is not None or (act.goal.themes and act.goal.sense is not VerbSense.HOLD):
+        return False  # "keep pulling (it)": the step before, carried on
+    moved = next((r for r in act.results if r.themes and r.themes[0].is_object and r.verb is not None), None)
+    if moved is None or not builder.is_object_motion(moved):
+        return False
+    builder.notes.append(f"read '{act.goal.text}' as '{moved.text}': the whole {builder.asset.name} moves")
+    object_motion_act(builder, replace(act, goal=moved, results=()))
+    return True

@@ -254,7 +254,8 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue  # "lift the lid off the box": a place, not another theme
         elif preposition in ("onto", "into", "against") and mention.kind is None and not mention.pronoun:
             continue  # "(and) shut onto the keyboard", "comes back down onto the pot": where it ends, not what moves
-        elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes:
+        elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes and not (
+                mention.relation is not None and mention.relation[1].pronoun):  # "top-left key, the one right under it": the next
             continue  # "the left door, the one with the handle,": an apposition describing the door
         else:
             themes.append(mention)

@@ -63,8 +63,14 @@ _SAID_IN_PARENS = re.compile(r"^(\s*)\(([^()]*)\)|\((\s*(?:anti-?clockwise|count
 -> ..."), a bare sense or side ("half a turn (anticlockwise)"). Other parentheses are asides and dropped."""
 
 
+_VAGUE_THEN_SAID = re.compile(r"\b(?:a few|a couple(?: of)?|several|some|a bit|a little|a tad|a touch)\s+(?:[a-z]+\s*)?\((\s*(?:about |around |roughly |like |~)?\d[^()]*)\)")
+"""A loose amount with the number said in parentheses after it ("lift it a few inches (10 cm or so)"): the number."""
+
+
 def _unbracket(text: str) -> str:
-    """``text`` with the parentheses of :data:`_SAID_IN_PARENS` turned into commas (same length: offsets stay put)."""
+    """``text`` with the parentheses of :data:`_SAID_IN_PARENS` turned into commas, and a loose amount followed by its number
+    in parentheses turned into that number (same length: offsets stay put)."""
+    text = _VAGUE_THEN_SAID.sub(lambda m: " " * (m.start(1) - m.start(0)) + m.group(1) + " ", text)
     return _SAID_IN_PARENS.sub(lambda m: m.group(0).replace("(", " ").replace(")", ","), text)
 
 

@@ -136,7 +136,7 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     if the < 0 or out[the].text != "the":
         return None
     if words[0] in ("inside", "within") and kind_of_word(out[-1].text) is not None and "out" in words[1:4]:
-        return 1, the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]  # "open the door and slide the rack inside (all the
+        return 1 + (words[1] in ("it", "there")), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]  # "open the door and slide the rack inside (all the
         # way) out": the rack behind that door
     if words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this"):
         return None
@@ -273,7 +273,7 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text in ("low", "high") and out and out[-1].text in _PLACED and after[:1] and after[0] in ("on", "down", "up", "in"):
         out.append(replace(t, text="lower" if t.text == "low" else "upper", lemma="lower" if t.text == "low" else "upper"))
         return i + (1 + (after[0] in ("down", "up")))  # "the knob which is low on the front": the lower knob
-    if (not out or out[-1].is_sentence_end) and (told := _code_heading(tokens, i)):
+    if (not out or out[-1].is_sentence_end or out[-1].text in ("then", "and_then", ",", "and")) and (told := _code_heading(tokens, i)):
         out.append(Token("press", "press", t.start, tokens[i + told - 1].end))  # "Enter a code on the keypad: top-left key, then ..."
         return i + told
     if t.text in ("give", "gives") and any(w.text.rstrip("s") in ("revolution", "rotation") for w in tokens[i + 1:i + 7]):
