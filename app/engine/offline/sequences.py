@@ -107,13 +107,15 @@ def in_turn(builder: Builder, act: Act) -> None:
     goal = act.goal
     sense = builder.frame_sense(goal)
     parts, words = builder.ground(goal, sense, goal.themes)
-    order = goal.in_turn or "reading"
+    order = goal.in_turn or ("said" if keys_listed(goal) else "reading")
     if order == "reverse":  # "close them in the reverse order": the last one worked goes first
         worked = [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
         ordered = sorted(parts, key=lambda p: -max((i for i, j in enumerate(worked) if j == p.joint), default=-1))
     elif order in _ORDER_KEYS:
         axis, descending = _ORDER_KEYS[order]
         ordered = sorted(parts, key=lambda p: -position(p, builder.tracker.obj)[axis] if descending else position(p, builder.tracker.obj)[axis])
+    elif order == "said":
+        ordered = parts  # "key in the code: top-left button, the one right under it, then the bottom-right one"
     else:
         ordered = reading_order(parts, builder.tracker.obj)
     for index, part in enumerate(ordered):
@@ -132,3 +134,11 @@ def object_result(builder: Builder, act: Act) -> bool:
     builder.notes.append(f"read '{act.goal.text}' as '{moved.text}': the whole {builder.asset.name} moves")
     object_motion_act(builder, replace(act, goal=moved, results=()))
     return True
+
+
+def keys_listed(frame: Frame) -> bool:
+    """Keys (buttons) named one by one in a list to press: pressed in the order said, one after another (nobody presses
+    "the top-left button, the one under it" together unless told to)."""
+    keys = [m for m in frame.themes if (m.kind is PartKind.BUTTON or (m.anaphor and m.kind is None)) and not m.plural and not m.collective]
+    return frame.sense is VerbSense.PRESS and len(keys) > 1 and len(keys) == len(frame.themes) and keys[0].kind is PartKind.BUTTON and not (
+        set(frame.text.split()) & {"together", "simultaneously", "at_once", "at_the_same_time", "both"})

@@ -59,6 +59,26 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 34 (cases and prompts on dev assets flipped, mirrored, turned, moved or resting ajar) ---
+    R("extra/microwave_7128", "Press the microwave's button in and hold it there for about two seconds before letting go.",
+      joints={"joint_1": E(peak=0.012), "joint_0": E(still=True)}),  # a button that may release the door, said only as a button
+    R("extra/microwave_7128", "press the door-release button", joints={"joint_1": E(peak=0.012), "joint_0": E(end="upper")}),
+    R("extra/microwave_7128", "press the button so the door pops open", joints={"joint_1": E(peak=0.012), "joint_0": E(end="upper")}),
+    R("extra/box_100214", "Close the box lid first, then do up the left clasp, and after that the right one.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("extra/kitchen_pot_100015", "The soup's about to boil over, let a bit of steam escape from the pot.", joints={"joint_0": E(end=0.06)}),
+    R("washing_machine_103508", "The little knob on the far right is the lid release. Give it a quarter turn clockwise so the lid pops all the "
+      "way open, then let the knob spring back.", joints={"joint_0": E(end="upper"), "joint_1": E(peak=PI / 2), "joint_2": E(still=True)}),
+    R("safe_101564", "Close the safe, then key in the lock code: top-left button, the one right under it, then the bottom-right one.",
+      joints={"joint_0": E(peak=0.004), "joint_5": E(peak=0.004), "joint_9": E(peak=0.004), "joint_1": E(still=True)},
+      order=(("joint_0", "joint_5"), ("joint_5", "joint_9"))),
+    R("suitcase_103762", "Grab the suitcase by its top handle, lift it a few inches (10 cm or so), carry it half a metre to the right and put "
+      "it back down.", base=(0.0, -0.5, 0.0)),
+    R("storage_27044", "Pull the drawer out till it stops, then keep pulling so the whole little cabinet drags about 20 cm toward you.",
+      joints={"joint_0": E(end="upper")}, base=(-0.2, 0.0, 0.0)),
+    R("stapler_103099", "Close up the stapler - tuck the staple magazine back up into the top cover.", joints={"joint_0": E(end="lower")}),
+    R("stapler_103099", "open the staple magazine", joints={"joint_0": E(end="upper")}),
+    R("extra/laptop_11395", "Slide the laptop 30 cm to the left.", base=(0.0, 0.3, 0.0)),  # its screen is fixed: the base lies in front of it
     # --- blind round 33 (cases and prompts on dev assets turned, moved, mirrored, flipped or resting ajar) ---
     R("safe_101593", "crank the big spoked handle a quarter turn clockwise to pull the bolts, then swing the door all the way open",
       joints={"joint_1": E(end=-PI / 2), "joint_0": E(end="upper"), "joint_2": E(still=True)}),  # "the bolts" are no knob
