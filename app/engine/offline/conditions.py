@@ -64,6 +64,8 @@ def condition(builder: Builder, act: Act) -> None:
     if words_in & {"starts", "begins", "started", "already"} or ("left" in words_in and words_in & {"was", "were", "been", "got"}):
         builder.refs.remember(parts, [])  # "the door starts partly open", "it was left half open": how the scene begins, not a step
         return
+    if words_in & {"locked", "latched"} and parts and not any(p.joint in builder.tracker.releases for p in parts):
+        builder.notes.append(f"'{frame.text}': found no part that releases it; it is worked directly")  # "the door is latched until ..."
     wanted = frame.sense if frame.sense is not None else (
         VerbSense.OPEN if words_in & {"open", "opened"} else VerbSense.CLOSE if words_in & {"closed", "shut"} else None)
     if wanted is None or not parts:

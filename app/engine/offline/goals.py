@@ -59,6 +59,16 @@ def _class(part: Part) -> PartClass:
     return part_class(info(part.kind))
 
 
+def _back_home(words: list[str]) -> bool:
+    """"back in", "back shut", "back up into the cover": "back" said with the way in (not "back to where it is in now")."""
+    for k, word in enumerate(words[:-1]):
+        if word == "back":
+            nxt = words[k + 2] if words[k + 1] in ("up", "down") and k + 2 < len(words) else words[k + 1]
+            if nxt in ("in", "into", "shut", "closed"):
+                return True
+    return False
+
+
 def _amount(amount: Amount | None) -> tuple[float | None, str | None]:
     if amount is None:
         return None, None
@@ -85,7 +95,7 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
                                                   or frame.explicit_return):
         said = set(frame.text.split())  # "slide the drawer back in", "put the lid back down on the pot": where it belongs, shut
-        home = bool(said & {"in", "into", "shut", "closed"})  # "tuck the magazine back up into the cover", "slide it back in": shut
+        home = _back_home(frame.text.split())  # "tuck the magazine back up into the cover", "slide it back in": shut
         shuts = home or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
             said & {"down", "on"} and part.kind is not None and info(part.kind).lid_like)
         if (home or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:

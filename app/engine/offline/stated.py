@@ -32,7 +32,7 @@ def _released_by(act: Act) -> tuple[Mention, Mention | None] | None:
         result = act.results[0]
         if result.sense in _FREEING and result.themes and all(m.kind is PartKind.LATCH for m in result.themes):
             return goal.themes[0], None  # "Turning the handle pulls back the locking bolts"
-    if _HELD & set(words) and {"stays", "stay", "remains", "remain"} & set(words) and goal.themes and act.results:
+    if _HELD & set(words) and {"stays", "stay", "remains", "remain", "is", "are"} & set(words) and goal.themes and act.results:
         result = act.results[0]
         if result.themes and result.sense in _WORKED:
             return result.themes[0], goal.themes[0]  # "The lid stays locked until the dial is turned"

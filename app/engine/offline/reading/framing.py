@@ -207,6 +207,8 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         if since >= 0 and _resting_part(out, since + 1) == len(out) - since - 1:
             del out[since:]  # "..., the lid's sitting on it, so it just rides along": the scene, then that it is carried
         return i + 2
+    if t.text in ("i'm", "we're") and (after[:2] == ["going", "to"] or after[:1] == ["gonna"]) and len(after) > 2:
+        return i + (3 if after[0] == "going" else 2)  # "I'm going to open the screen": open the screen
     if t.text in ("i'm", "we're") and (not out or out[-1].is_sentence_end) and after[:2] and after[0] in _LEAVING and after[1] in _AWAY_WORDS:
         end = until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "so", "and"}))
         return end + (end < len(tokens) and tokens[end].text == ",")  # "I'm stepping away from my desk, ...": about the user
