@@ -33,7 +33,15 @@ from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means, take_hold
-from app.engine.offline.sequences import enter_code, first_then_rest, in_turn, is_code, keys_listed, object_motion_act, object_result
+from app.engine.offline.sequences import (
+    enter_code,
+    first_then_rest,
+    in_turn,
+    is_code,
+    keys_listed,
+    object_motion_act,
+    object_result,
+)
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
