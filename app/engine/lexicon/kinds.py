@@ -124,7 +124,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
                  related=(PartKind.HANDLE, PartKind.LATCH, PartKind.SWITCH, PartKind.LEVER), control=True, press="turn", turns_only=True,
                  actuation_s=None, affordances=("turn",)),
         KindInfo(PartKind.HANDLE, ("handle", "grip", "rotation handle", "door handle", "bail", "carry handle", "crank", "spoked wheel", "handwheel",
-                                   "hand wheel", "wheel handle", "spoke wheel"),
+                                   "hand wheel", "wheel handle", "spoke wheel", "handle wheel"),
                  labels=("handle", "rotation_handle"), related=(PartKind.KNOB, PartKind.LEVER, PartKind.LATCH, PartKind.SWITCH), control=True,
                  returns="self_return", returns_only_on_hinged=True, press="down", actuation_s=0.4, affordances=("turn", "press_down", "lift")),
         KindInfo(PartKind.LEVER, ("lever", "slider", "carriage", "flush lever", "toggle lever"), labels=("lever", "slider", "rotation_slider"),

@@ -189,7 +189,7 @@ MULTIWORD: tuple[str, ...] = (
 
 OBJECT_NOUNS: tuple[str, ...] = (
     # what a user may call the whole object
-    "object", "thing", "whole", "entire", "unit", "item", "appliance", "furniture", "model", "asset",
+    "object", "thing", "whole", "entire", "unit", "item", "appliance", "furniture", "model", "asset", "module", "assembly",
     "bin", "trash", "trashcan", "can", "dustbin", "garbage", "car", "toy", "cart", "trolley", "vehicle",
     "suitcase", "luggage", "box", "bucket", "pail", "safe", "vault", "microwave", "oven", "stove", "fridge", "refrigerator", "freezer",
     "cabinet", "cupboard", "dresser", "wardrobe", "storage", "toaster", "laptop", "computer", "notebook", "macbook", "stapler",

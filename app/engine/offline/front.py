@@ -104,7 +104,7 @@ class FrontCue(StrEnum):
     PARTS = "its doors, drawers, lids or control panel"
     SPOUT = "its spout"
     CONTROLS = "the side its controls sit on"
-    SCREEN = "its fixed screen (the base in front of it)"
+    SCREEN = "a screen or control fixed in place"
     CONVENTION = "nothing: PartNet-Mobility's convention"
 
 
@@ -128,16 +128,22 @@ def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
 
 def _fixed_screen(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
                   rest: dict[str, FloatArray]) -> FloatArray:
-    """A screen the URDF fixed (a laptop that cannot fold): the user sits on the far side of the base from it."""
+    """Parts the URDF fixed: the user sits on the far side of the base from a screen (a laptop that cannot fold), and on
+    the side a control sits on (a toaster whose lever is fixed)."""
     moving = {link for geometry in joints.values() for link in geometry.moving_links}
     still = [link for link in asset.visual_links if link not in moving]
     screens = [link for link in still if asset.links[link].semantics.label in info(PartKind.SCREEN).labels]
-    if not screens or len(screens) == len(still):
+    controls = [link for link in still if asset.links[link].semantics.label in _CONTROL_LABELS]
+    shown = screens or controls
+    if not shown or len(shown) == len(still):
         return np.zeros(3)
-    base = posed(points, rest, [link for link in still if link not in screens])
-    away = _flat(base.mean(axis=0) - posed(points, rest, screens).mean(axis=0))
+    base = posed(points, rest, [link for link in still if link not in shown])
+    away = _flat(base.mean(axis=0) - posed(points, rest, shown).mean(axis=0)) * (1.0 if screens else -1.0)
     span = float(np.linalg.norm(base.max(axis=0) - base.min(axis=0))) if base.shape[0] else 0.0
     return _horizontal(away) if span > 0 and float(np.linalg.norm(away)) > MIN_REACH * span else np.zeros(3)
+
+
+_CONTROL_LABELS = frozenset(label for kind in CONTROL_KINDS for label in info(kind).labels)
 
 
 def _reach(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],

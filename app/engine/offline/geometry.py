@@ -281,6 +281,22 @@ def _body_controls_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry
     return {**joints, **{j: _joint_geometry(asset, j, points, rest, layout) for j in body}}
 
 
+def _faces_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray]) -> dict[str, JointGeometry]:
+    """The face a door closes on, read against the body with the other doors shut: a fridge's two doors resting ajar
+    stick out past its front and would each turn the other's face (and so the object's front) sideways."""
+    shut = _resting_open(joints)
+    if len(shut) < 2:
+        return joints
+    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
+    layout = RestPoints.of(asset, {n: _posed(points, poses, [n]) for n in asset.visual_links if n in points})
+    out = dict(joints)
+    for name in shut:
+        static = layout.box_without(joints[name].child)
+        if static is not None:
+            out[name] = replace(joints[name], home_face=_nearest_face_normal(joints[name].home_centroid, *static))
+    return out
+
+
 def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray]) -> dict[str, JointGeometry]:
     """Where a part sits is where it sits with the object shut: a knob on a safe door that rests open is placed with the
     door closed (the viewer's left knob stays the left one). Only parts carried by a door, lid or drawer that rests away
@@ -307,7 +323,7 @@ def _cached(asset: ArticulatedAsset) -> ObjectGeometry:
     low, high = laid_out.box()
     center = (low + high) / 2.0
     first = {j: _joint_geometry(asset, j, points, rest, laid_out) for j in asset.controllable_joints}
-    joints = _closed_layout(asset, _latches_follow_hosts(asset, _body_controls_shut(asset, first, points, rest)), points)
+    joints = _closed_layout(asset, _faces_shut(asset, _latches_follow_hosts(asset, _body_controls_shut(asset, first, points, rest)), points), points)
     vote, cue = front_votes(joints, center, asset, points, rest, object_category(asset))
     front = front_of(vote)
     right = np.cross(-front, UP)

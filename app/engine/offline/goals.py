@@ -59,6 +59,15 @@ def _class(part: Part) -> PartClass:
     return part_class(info(part.kind))
 
 
+_NOW_PLACES = (("where", "it", "is", "now"), ("where", "it's", "now"), ("where", "it", "is", "right", "now"), ("it's", "in", "right", "now"),
+               ("it's", "in", "now"), ("where", "it", "sits", "now"), ("where", "it's", "sitting", "now"))
+
+
+def _back_to_now(words: list[str]) -> bool:
+    """"(flip it) back (up) to where it is now": the pose the prompt found it in, said with "back"."""
+    return "back" in words and any(tuple(words[k:k + len(p)]) == p for p in _NOW_PLACES for k in range(len(words)))
+
+
 def _back_home(words: list[str]) -> bool:
     """"back in", "back shut", "back up into the cover": "back" said with the way in (not "back to where it is in now")."""
     for k, word in enumerate(words[:-1]):
@@ -89,6 +98,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     geometry = part.geometry
     rotates = geometry.type in ("revolute", "continuous")
     absolute = quantities.amount is not None and quantities.amount.reference == "closed"
+    if _back_to_now(frame.text.split()):
+        return "rest"  # "close the lid, then flip it back up to exactly where it is now": where it was when the prompt began
     if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
             geometry.lower < geometry.rest < geometry.upper):
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
@@ -210,6 +221,9 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
             state = "ccw" if state == "cw" else "cw"  # it only turns the other way
     reference = quantities.amount.reference if quantities.amount is not None else None
     measured: MeasuredFrom = reference or _default_from(state, sense)
+    if reference is None and unit == "fraction" and state in ("up", "down") and geometry.open_value is not None and not (
+            quantities.amount is not None and quantities.amount.loose) and (geometry.up_value if state == "up" else geometry.down_value) == geometry.open_value:
+        measured = "closed"  # "lower the oven door halfway down": half of its closed-to-open range, wherever it rests
     if reference is None and unit == "fraction" and state == "open" and quantities.amount is not None and quantities.amount.loose:
         measured = "current"  # "pull the drawer out a little (more)": a little further than it is, never back toward closed
     if reference is None and unit == "m" and sense in (VerbSense.RAISE, VerbSense.LOWER):

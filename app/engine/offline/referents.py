@@ -1,7 +1,5 @@
-"""What a mention refers to in context: pronouns and "the other one" through the earlier
-clauses, kinds through the registry, and a clear refusal when the asset lacks the part or
-several similar parts fit (naming each candidate and how to ask for it).
-"""
+"""What a mention refers to in context: pronouns and "the other one" through the earlier clauses, kinds through the
+registry, and a clear refusal when the asset lacks the part or several similar parts fit (naming each and how to ask)."""
 
 from __future__ import annotations
 
@@ -137,6 +135,8 @@ class Referents:
             return Grounding(how=how, ordinal_overflow=overflow, ambiguous=tuple(candidates))
         if not kept:
             return Grounding()
+        if "both" in said and len(kept) > 2:
+            return Grounding(how=how, ambiguous=tuple(kept), notes=tuple(notes))  # "both racks" among three: which two?
         if mention.plural or mention.collective or len(kept) == 1:
             return Grounding(parts=tuple(kept), how=how, notes=(*notes, *carried_alike(mention, kept, candidates, self.asset)))
         if self.assigned.get(mention.head) in kept:

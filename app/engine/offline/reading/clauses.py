@@ -185,7 +185,7 @@ def _other_verb(tokens: list[Token], i: int) -> bool:
 
 
 def _ing(token: Token) -> bool:
-    return token.text.endswith("ing") and token.lemma in VERBS
+    return token.text.endswith("ing") and (token.lemma in VERBS or token.text == "giving")  # "by giving the knob a quarter turn"
 
 
 _THEREFORE = ("causing", "making", "as_a_result", "because_of_that", "because_of_this", "as_a_consequence", "consequently")

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import PARALLEL, SEQUENCE, SIMULTANEOUS, WISHES
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
@@ -207,6 +208,10 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         if since >= 0 and _resting_part(out, since + 1) == len(out) - since - 1:
             del out[since:]  # "..., the lid's sitting on it, so it just rides along": the scene, then that it is carried
         return i + 2
+    if t.text in ("i've", "we've") and after[:1] == ["got"] and (not out or out[-1].is_sentence_end) and (
+            to := next((k for k in range(i + 2, until_break(tokens, i, _SIMILE_ENDS) - 1) if tokens[k].text == "to" and tokens[k + 1].lemma in VERBS), None)):
+        out.append(Token("i_need", "i_need", t.start, tokens[to - 1].end))  # "I've got a stack of plates to load into it": I need to
+        return to
     if t.text in ("i'm", "we're") and (after[:2] == ["going", "to"] or after[:1] == ["gonna"]) and len(after) > 2:
         return i + (3 if after[0] == "going" else 2)  # "I'm going to open the screen": open the screen
     if t.text in ("i'm", "we're") and (not out or out[-1].is_sentence_end) and after[:2] and after[0] in _LEAVING and after[1] in _AWAY_WORDS:

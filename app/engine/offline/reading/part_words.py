@@ -17,11 +17,12 @@ def _kind_phrases() -> list[tuple[tuple[str, ...], PartKind]]:
 
 
 def kind_of_word(word: str) -> PartKind | None:
-    """The kind a single word names ("door" -> DOOR)."""
+    """The kind a single word names ("door" -> DOOR; "push-button" as "push button"; "T-handle", a handle shaped so)."""
+    said = tuple(word.split("-")) if "-" in word else (word,)
     for phrase, kind in _kind_phrases():
-        if phrase == (word,):
+        if phrase == said:
             return kind
-    return None
+    return kind_of_word(said[-1]) if len(said) == 2 and len(said[0]) == 1 and said[0].isalpha() else None
 
 
 def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
@@ -31,6 +32,8 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
         window = tokens[i:i + n]
         if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
             return kind, n
+    if i < len(tokens) and "-" in tokens[i].text and (kind := kind_of_word(tokens[i].text)) is not None:
+        return kind, 1  # "the T-handle"
     return None
 
 

@@ -142,10 +142,12 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
         return None
     if words[2] in _COMPARTMENTS and words[1] != "the":  # "in that compartment": the one just opened
         return 3 + (words[3] in _COMPARTMENTS), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]
+    sized = int(words[2] in SIZES)  # "in the small top compartment"
+    words = words[:2] + words[2 + sized:] + [""]
     if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or words[3] not in _COMPARTMENTS:
         return None
-    last = i + 3 + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
-    return last + 1 - i, the + 1, [tokens[i + 2], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:]]
+    last = i + 3 + sized + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
+    return last + 1 - i, the + 1, [tokens[i + 2 + sized], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:]]
 
 
 def _of_the_object(tokens: list[Token], j: int) -> int:
@@ -170,6 +172,11 @@ _LENGTHS = frozenset(LENGTH_UNITS) - {"in"}
 """Units of a distance said before "that far" ("in" after a number is mostly "in 2 seconds")."""
 
 
+def _names_kind(word: str) -> bool:
+    """A word naming a kind of part, plurals too ("both racks")."""
+    return kind_of_word(word) is not None or (word.endswith("s") and kind_of_word(word[:-1]) is not None)
+
+
 def _stowed(tokens: list[Token], i: int) -> int:
     """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
     "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part
@@ -184,9 +191,12 @@ def _stowed(tokens: list[Token], i: int) -> int:
     thing = tokens[i + 1:k]
     if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
         return k + 2  # "the plates I need to load into this": open it
+    if not thing and k == i + 1 and k + 2 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("the", "my", "that") and (
+            tokens[k + 2].text in OBJECT_NOUNS):
+        return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
     brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
     if not thing or k >= len(tokens) or tokens[k].text not in into or any(
-            (kind_of_word(t.text) is not None and not brought) or t.text in OBJECT_NOUNS for t in thing):
+            (_names_kind(t.text) and not brought) or t.text in OBJECT_NOUNS for t in thing):
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
