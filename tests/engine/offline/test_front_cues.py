@@ -55,3 +55,26 @@ def test_no_cue_is_the_convention_and_said(name: str) -> None:
     geometry = analyse(asset(name))
     assert geometry.front_by_convention and geometry.front_cue is FrontCue.CONVENTION
     np.testing.assert_allclose(geometry.front, MINUS_X, atol=1e-9)
+
+
+SHOWN_FIXED = ["extra/laptop_11395", "toaster_103498"]  # a laptop whose screen, a toaster whose lever, the URDF fixed
+
+
+@pytest.mark.parametrize("name", SHOWN_FIXED)
+def test_a_front_shown_by_a_fixed_screen_or_control_turns_with_the_object(name: str, tmp_path: Path) -> None:
+    """The base lies in front of a fixed screen; a fixed control sits on the front. Turned 90 degrees, the front turns too."""
+    assert analyse(asset(name)).front_cue is FrontCue.SCREEN
+    np.testing.assert_allclose(analyse(asset(name)).front, MINUS_X, atol=1e-9)
+    make_variant(asset_dir(name), tmp_path / name.split("/")[-1], ("yaw",))
+    turned = analyse(load_asset(tmp_path / name.split("/")[-1]))
+    assert turned.front_cue is FrontCue.SCREEN
+    np.testing.assert_allclose(turned.front, MINUS_Y, atol=1e-9)
+
+
+def test_two_doors_resting_ajar_still_show_the_front(tmp_path: Path) -> None:
+    """A fridge whose two doors rest half open: each door's face is read with the other shut, so the front stays the front
+    (it was lost to the convention when each open door turned the other's nearest face sideways)."""
+    make_variant(asset_dir("refrigerator_11178"), tmp_path / "refrigerator_11178", ("mirror", "yaw", "ajar"))
+    found = analyse(load_asset(tmp_path / "refrigerator_11178"))
+    assert found.front_cue is FrontCue.PARTS
+    np.testing.assert_allclose(found.front, MINUS_Y, atol=1e-9)

@@ -59,6 +59,20 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 35 (cases and prompts on dev assets mirrored, turned, flipped and resting ajar) ---
+    R("extra/oven_7179", "Pull the tray in the small top compartment out about halfway.",
+      joints={"joint_4": E(end="upper"), "joint_0": E(end=0.264), "joint_1": E(still=True), "joint_3": E(still=True)}),
+    R("extra/oven_7179", "take both racks out of the oven", refuse=True),  # "both" among three racks: which two?
+    R("switch_100952", "Press the lower half of the rocker switch to flip it, then pull the whole switch module about 10 cm straight out "
+      "from the wall toward you.", joints={"joint_0": E(end=0.3142)}, base=(-0.1, 0.0, 0.0)),
+    R("safe_101593", "Spin the spoked handle wheel a quarter turn clockwise to pull the bolts back, then swing the door open as wide as it'll "
+      "go.", joints={"joint_1": E(end=-PI / 2), "joint_0": E(end="upper"), "joint_2": E(still=True)}),
+    R("extra/safe_102380", "Close the safe door and then lock it by giving the T-handle a quarter turn clockwise.",
+      joints={"joint_0": E(end=-PI / 2)}),
+    R("box_102456", "Close the lid, then flip it back up to exactly where it is now.", joints={"joint_0": E(peak=BOX_102456_CLOSED)}),
+    R("dishwasher_11700", "I've got a stack of dirty plates to load into the dishwasher.", joints={"joint_0": E(end="upper")}),
+    R("toaster_103498", "Push the toaster back roughly 15 cm, away from the side with the lever.", base=(0.15, 0.0, 0.0)),
+    R("microwave_7236", "I'm going to open the door", joints={"joint_0": E(end="upper")}),
     # --- blind round 34 (cases and prompts on dev assets flipped, mirrored, turned, moved or resting ajar) ---
     R("extra/microwave_7128", "Press the microwave's button in and hold it there for about two seconds before letting go.",
       joints={"joint_1": E(peak=0.012), "joint_0": E(still=True)}),  # a button that may release the door, said only as a button

@@ -221,7 +221,8 @@ def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
         if full is None:
             out.append(token)
             continue
-        out.extend(Token(word, word, token.start, token.end, corrected_from=token.text) for word in full.split())
+        said = None if "'" in token.text and not token.text.startswith("'") else token.text  # "it'll" is English, no slip to note
+        out.extend(Token(word, word, token.start, token.end, corrected_from=said) for word in full.split())
     return out
 
 
