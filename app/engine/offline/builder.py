@@ -19,6 +19,7 @@ from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBLESS_SENSES, VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
 from app.engine.offline import mechanisms as mech
+from app.engine.offline import sequences as seq
 from app.engine.offline.conditions import condition, exclude
 from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, travel_left
@@ -33,15 +34,6 @@ from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means, take_hold
-from app.engine.offline.sequences import (
-    enter_code,
-    first_then_rest,
-    in_turn,
-    is_code,
-    keys_listed,
-    object_motion_act,
-    object_result,
-)
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
@@ -203,24 +195,24 @@ class Builder:
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
             return self.add(replace(act, goal=act.means, means=None))
-        if object_result(self, act) or take_hold(self, goal, sense):
+        if seq.object_result(self, act) or take_hold(self, goal, sense):
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
         if goal.let and goal.verb in ("roll", "coast", "glide", "slide") and self.steps and self.steps[-1].base is not None:
             coast(self, goal)
             return
-        if goal.codes and act.means is None and goal.verb in CODE_VERBS and is_code(self, goal):
-            enter_code(self, act)
+        if goal.codes and act.means is None and goal.verb in CODE_VERBS and seq.is_code(self, goal):
+            seq.enter_code(self, act)
             return
         if act.means is None and self.is_object_motion(goal):
-            object_motion_act(self, act)
+            seq.object_motion_act(self, act)
             return
         if goal.first is not None and act.means is None:
-            first_then_rest(self, act)
+            seq.first_then_rest(self, act)
             return
-        if act.means is None and ((goal.in_turn is not None and any(m.plural or m.collective for m in goal.themes)) or keys_listed(goal)):
-            in_turn(self, act)
+        if act.means is None and ((goal.in_turn is not None and any(m.plural or m.collective for m in goal.themes)) or seq.keys_listed(goal)):
+            seq.in_turn(self, act)
             return
         if act.means is not None and self._aimless(goal):
             self.notes.append(f"ignored the purpose '{goal.text}': it names no part of {self.asset.name}")

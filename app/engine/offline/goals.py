@@ -65,7 +65,7 @@ _NOW_PLACES = (("where", "it", "is", "now"), ("where", "it's", "now"), ("where",
 
 def _back_to_now(words: list[str]) -> bool:
     """"(flip it) back (up) to where it is now": the pose the prompt found it in, said with "back"."""
-    return "back" in words and any(tuple(words[k:k + len(p)]) == p for p in _NOW_PLACES for k in range(len(words)))
+    return "back" in words and any(tuple(words[k:k + len(p)]) == p and "to" in words[max(0, k - 3):k] for p in _NOW_PLACES for k in range(len(words)))
 
 
 def _back_home(words: list[str]) -> bool:
@@ -107,7 +107,7 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
                                                   or frame.explicit_return):
         said = set(frame.text.split())  # "slide the drawer back in", "put the lid back down on the pot": where it belongs, shut
         home = _back_home(frame.text.split())  # "tuck the magazine back up into the cover", "slide it back in": shut
-        shuts = home or (frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
+        shuts = home or (frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
             said & {"down", "on"} and part.kind is not None and info(part.kind).lid_like)
         if (home or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:
             return "closed"

@@ -209,7 +209,8 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
             del out[since:]  # "..., the lid's sitting on it, so it just rides along": the scene, then that it is carried
         return i + 2
     if t.text in ("i've", "we've") and after[:1] == ["got"] and (not out or out[-1].is_sentence_end) and (
-            to := next((k for k in range(i + 2, until_break(tokens, i, _SIMILE_ENDS) - 1) if tokens[k].text == "to" and tokens[k + 1].lemma in VERBS), None)):
+            to := next((k for k in range(i + 2, until_break(tokens, i, _SIMILE_ENDS) - 1) if tokens[k].text == "to" and tokens[k + 1].lemma in VERBS), None)) and (
+            until_break(tokens, to, _SIMILE_ENDS | {","}) == until_break(tokens, to, _SIMILE_ENDS)):  # not "..., get the bin open"
         out.append(Token("i_need", "i_need", t.start, tokens[to - 1].end))  # "I've got a stack of plates to load into it": I need to
         return to
     if t.text in ("i'm", "we're") and (after[:2] == ["going", "to"] or after[:1] == ["gonna"]) and len(after) > 2:

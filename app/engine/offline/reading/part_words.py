@@ -32,9 +32,8 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
         window = tokens[i:i + n]
         if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
             return kind, n
-    if i < len(tokens) and "-" in tokens[i].text and (kind := kind_of_word(tokens[i].text)) is not None:
-        return kind, 1  # "the T-handle"
-    return None
+    shaped = kind_of_word(tokens[i].text) if i < len(tokens) and "-" in tokens[i].text else None
+    return (shaped, 1) if shaped is not None else None  # "the T-handle"
 
 
 _PLACE_NOUNS = frozenset({"corner", "side", "end", "edge"})
