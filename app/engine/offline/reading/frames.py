@@ -128,7 +128,7 @@ def _light_verb(tokens: list[Token]) -> list[Token]:
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
             bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
             if tokens[i - 1].text in _MANNER_ADJECTIVES and tokens[i - 2].text in ("a", "an"):
-                return [tokens[i], *tokens[1:i - 2], *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal ("a quick tap" names
+                return [tokens[i], *tokens[1:i - 2], tokens[i - 1], *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal quick ("a quick tap" names
                 # no tap of a sink)
             return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
     return tokens
