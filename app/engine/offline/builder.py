@@ -62,6 +62,7 @@ class Builder:
     excluded: set[str] = field(default_factory=set)
     manual: bool = False
     last_base_default: bool = False
+    object_named: bool = False  # the last part worked was named as the whole object ("close the laptop": its screen)
 
     def __post_init__(self) -> None:
         self.tracker = Tracker.of(self.asset)
@@ -83,8 +84,9 @@ class Builder:
                     found = self._object_parts(frame, sense)
             elif mention.is_object:
                 self._same_object(mention)
-                found = self._object_parts(frame, sense)
+                found, self.object_named = self._object_parts(frame, sense), True
             else:
+                self.object_named = False
                 if mention.relation is not None and mention.relation[1].pronoun and parts:
                     self.refs.last, self.refs.last_kind = [parts[-1]], parts[-1].kind  # "top-left key, the one right under it"
                 found = self._only_part(frame, mention)
@@ -266,7 +268,8 @@ class Builder:
             return moves_object(frame, pronoun=False, after_part=False) and not (
                 frame.sense in (VerbSense.OPEN, VerbSense.CLOSE) and openable(self.parts))
         if first.pronoun:
-            if self.refs.last_object:
+            amount = frame.quantities.amount  # "close the laptop, then push it back 20 cm": the laptop, not its screen
+            if self.refs.last_object or (self.object_named and amount is not None and amount.unit == "m" and frame.particle in ("back", "forward", "away")):
                 return moves_object(frame, pronoun=True, after_part=False) or frame.returning
             if self.refs.topic:
                 return False  # "Bucket handle: let it fall toward the front": the part the heading named

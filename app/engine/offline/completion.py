@@ -150,15 +150,21 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
     """Stated results refine the amount of an effect already there, or add the effect (``implicit``: what
     a subjectless result is about, e.g. the door an unlatching freed)."""
     out = list(effects)
+    freed: list[Part] = []
     for frame in act.results:
         if frame.quantities.direction is None and act.goal.quantities.direction is not None and all(m.pronoun for m in frame.themes):
             # "fold the handle forward until it lies flat": flat, reached moving forward
             frame = replace(frame, quantities=replace(frame.quantities, direction=act.goal.quantities.direction))
         sense = frame.sense or act.goal.sense or VerbSense.OPEN
         if sense is VerbSense.UNLATCH:
+            named = tuple(m for m in frame.themes if not m.pronoun)  # "...; that unlatches the door and it falls open": it is the door
+            try:
+                freed = builder.ground(frame, VerbSense.OPEN, named)[0] if named else []
+            except GroundingError:
+                freed = []
             continue  # "... so the door unlocks": no motion of its own
         themes = tuple(m for m in frame.themes if not m.pronoun)
-        current = [m.part for m in out] or implicit or [m.part for m in controls]
+        current = freed or [m.part for m in out] or implicit or [m.part for m in controls]
         try:
             parts, words = builder.ground(frame, sense, themes, prefer=current) if themes else (current or builder.refs.pronoun(), [])
         except GroundingError as exc:

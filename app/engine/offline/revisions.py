@@ -45,6 +45,9 @@ def means_on_goal(builder: Builder, act: Act) -> Act:
     """"Loosen the cap by turning it 90 degrees": a means on "it" before anything was named works the goal's own part,
     so its amount and way are how far and which way the goal's motion goes."""
     means, goal = act.means, act.goal
+    if means is not None and means.verb == "use" and goal.themes and goal.themes[0].is_object and builder.is_object_motion(goal):
+        builder.notes.append(f"read '{means.text}' as how the whole {builder.asset.name} is held")  # "use it to lift the bucket 30 cm"
+        return replace(act, means=None)
     if means is None or builder.refs.last or not goal.themes or not means.themes or not all(m.pronoun for m in means.themes):
         return act
     q, how = goal.quantities, means.quantities

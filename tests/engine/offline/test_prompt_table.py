@@ -59,6 +59,21 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 36 (cases on dev assets re-encoded, mirrored, or turned and resting ajar) ---
+    R("dishwasher_12553", "Press the release button on the top right of the panel; that unlatches the door and it falls all the way open.",
+      joints={"joint_1": E(peak=0.052), "joint_0": E(end="upper")}),  # "it" falls: the door the unlatching freed
+    R("safe_102387", "Give the combination dial a quarter turn counter-clockwise - that trips the latch and the door swings open as far as "
+      "it'll go.", joints={"joint_1": E(end=PI / 2), "joint_0": E(end="upper")}),
+    R("laptop_10697", "Close the laptop, then push it back about 20 cm, away from where you sit.", joints={"joint_1": E(end=-1.9541)},
+      base=(0.2, 0.0, 0.0)),
+    R("extra/oven_7179", "Drop the bottom oven door fully open, then slide the higher of the two racks in there all the way out.",
+      joints={"joint_3": E(end="upper"), "joint_1": E(end=0.528), "joint_0": E(still=True), "joint_2": E(still=True)}),
+    R("extra/bucket_100432", "Pull the bucket handle up straight and use it to lift the bucket about 30 cm off the floor.",
+      joints={"joint_0": E(end=0.4778)}, base=(0.0, 0.0, 0.3)),
+    R("oven_7221", "Let me check on the roast in there.", joints={"joint_0": E(end="upper")}),
+    R("safe_101564", "Punch in the code on the keypad - top left key, then top right, then the middle key on the bottom row - and then "
+      "swing the safe door open.", joints={"joint_0": E(peak=0.004), "joint_2": E(peak=0.004), "joint_10": E(peak=0.004), "joint_13": E(end="upper")},
+      order=(("joint_0", "joint_2"), ("joint_2", "joint_10"))),
     # --- blind round 35 (cases and prompts on dev assets mirrored, turned, flipped and resting ajar) ---
     R("extra/oven_7179", "Pull the tray in the small top compartment out about halfway.",
       joints={"joint_4": E(end="upper"), "joint_0": E(end=0.264), "joint_1": E(still=True), "joint_3": E(still=True)}),

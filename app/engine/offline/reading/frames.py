@@ -289,7 +289,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     if verb_index is None and len(tokens) > 1 and tokens[1].text in ("it", "them") and tokens[0].text.isalpha() and tokens[0].text not in DETERMINERS and (
             not named_side and tokens[0].lemma not in VERBS):
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "seat it back down": a noun used as a verb
-    if verb_index is None and len(tokens) > 1 and unknown_verb(tokens[0], tokens[1].text) and not named_side:
+    if verb_index is None and len(tokens) > 1 and unknown_verb(tokens[0], tokens[1].text) and not named_side and tokens[0].text not in SPATIAL:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
     finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None

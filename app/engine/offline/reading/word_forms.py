@@ -43,6 +43,7 @@ _DESCRIBING = frozenset({"carries", "features", "sports", "bears", "houses", "ho
 _PLACED = frozenset({"is", "sits", "sitting", "mounted", "placed", "located", "set", "that's", "which's"})
 _END_STATES = frozenset({"open", "opened", "closed", "shut", "down", "up", "out", "done", "finished", "there", "clear", "in"})
 _ENTERING = frozenset({"enter", "punch", "type", "key", "input", "dial", "tap", "press"})
+_TRIGGERS = frozenset({"trips", "triggers", "disengages", "frees", "springs", "kicks"})
 _COMPARTMENTS = frozenset({"compartment", "cavity", "section", "oven", "chamber"})
 _REGION_OF = frozenset({"half", "part", "section", "portion", "piece", "bit", "panel"})
 _SIDE_OF = frozenset({"upper", "lower", "top", "bottom", "left", "right", "left-hand", "right-hand", "front", "back", "rear"})
@@ -133,11 +134,13 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     the = len(out) - 2
     while the >= 0 and out[the].text in _SIDE_OF | {"middle"}:
         the -= 1  # "the upper rack in the bottom compartment"
+    inside = 1 if words[0] in ("inside", "within") else 2 if words[:2] == ["in", "there"] else 0  # "the rack in there (all the way) out"
+    if inside and out and _names_kind(out[-1].text) and "out" in words[inside:inside + 3]:
+        first = next((k for k in range(len(out) - 1, max(-1, len(out) - 7), -1) if out[k].text == "the"), None)  # "the higher of the 2 racks"
+        if first is not None:  # "open the door and slide the rack inside (all the way) out": the rack behind that door
+            return inside + (inside == 1 and words[1] in ("it", "there")), first, [replace(out[first], text="its", lemma="its"), *out[first + 1:]]
     if the < 0 or out[the].text != "the":
         return None
-    if words[0] in ("inside", "within") and kind_of_word(out[-1].text) is not None and "out" in words[1:4]:
-        return 1 + (words[1] in ("it", "there")), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]  # "open the door and slide the rack inside (all the
-        # way) out": the rack behind that door
     if words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this"):
         return None
     if words[2] in _COMPARTMENTS and words[1] != "the":  # "in that compartment": the one just opened
@@ -175,6 +178,17 @@ _LENGTHS = frozenset(LENGTH_UNITS) - {"in"}
 def _names_kind(word: str) -> bool:
     """A word naming a kind of part, plurals too ("both racks")."""
     return kind_of_word(word) is not None or (word.endswith("s") and kind_of_word(word[:-1]) is not None)
+
+
+def _inside_end(tokens: list[Token], i: int) -> int:
+    """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
+    object, and nothing else said in the sentence), else 0."""
+    end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+    words = [t.text for t in tokens[i + 1:end]]
+    inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"])
+    if not inside or any(_names_kind(w) for w in words):
+        return 0
+    return end
 
 
 def _stowed(tokens: list[Token], i: int) -> int:
@@ -254,7 +268,12 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
             not after or after[0] in _AFTER_SIDE):
         out.append(Token(f"to_the_{t.text}", f"to_the_{t.text}", t.start, t.end))  # "swing the lever right as far as it goes"
         return i + 1
-    if t.text in ("that", "this") and out and out[-1].text in (";", ".") and len(after) >= 2 and _finite(tokens[i + 1]) and after[1] != "is":
+    if t.text == "it" and out and out[-1].text in (":", ";", ",") and len(after) >= 2 and after[0] in ("should", "will", "must") and motion_verb(after[1]):
+        out[-1] = replace(out[-1], text=",", lemma=",")
+        out += [Token("so", "so", t.start, t.end), t]  # "hit the button to release the door - it should swing out to 60 degrees"
+        return i + 2
+    if t.text in ("that", "this") and out and out[-1].text in (";", ".", ":") and len(after) >= 2 and (
+            _finite(tokens[i + 1]) or after[0] in _TRIGGERS) and after[1] != "is":  # "... - that trips the latch and the door swings open"
         out[-1] = replace(out[-1], text=",", lemma=",")
         out += [Token("so", "so", t.start, t.end), Token("it", "it", t.start, t.end)]  # "hit the button; that unlatches the door"
         return i + 1
@@ -324,6 +343,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
         out.append(replace(t, text="spoke", lemma="spoke"))  # "a big three-spoke wheel": a spoke wheel (a handle)
         return i + 1
+    if t.text in ("check", "look") and after[:1] and after[0] in ("on", "at", "in_on") and (end := _inside_end(tokens, i)):
+        out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
+                Token("it", "it", t.start, t.start)]  # "let me check on the roast in there": open it to look inside
+        return end
     if holder := _stowed(tokens, i):
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
         out.append(Token("open", "open", t.start, tokens[holder - 1].end, corrected_from=said))  # "put a bowl of soup in the microwave"
