@@ -71,6 +71,8 @@ ROWS: list[Row] = [
     R("extra/bucket_100432", "Pull the bucket handle up straight and use it to lift the bucket about 30 cm off the floor.",
       joints={"joint_0": E(end=0.4778)}, base=(0.0, 0.0, 0.3)),
     R("oven_7221", "Let me check on the roast in there.", joints={"joint_0": E(end="upper")}),
+    R("extra/box_100214", "Close the lid of the box and then flip both front latches up so it's locked shut.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),  # "locked" is a state, no lock
     R("safe_101564", "Punch in the code on the keypad - top left key, then top right, then the middle key on the bottom row - and then "
       "swing the safe door open.", joints={"joint_0": E(peak=0.004), "joint_2": E(peak=0.004), "joint_10": E(peak=0.004), "joint_13": E(end="upper")},
       order=(("joint_0", "joint_2"), ("joint_2", "joint_10"))),

@@ -30,7 +30,8 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
     for phrase, kind in _kind_phrases():
         n = len(phrase)
         window = tokens[i:i + n]
-        if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)):
+        if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)) and not (
+                window[-1].text != phrase[-1] and window[-1].text.endswith("ed")):  # "it's locked shut": a state, no lock
             return kind, n
     shaped = kind_of_word(tokens[i].text) if i < len(tokens) and "-" in tokens[i].text else None
     return (shaped, 1) if shaped is not None else None  # "the T-handle"
