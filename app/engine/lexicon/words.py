@@ -144,6 +144,7 @@ STATES: Mapping[str, str] = MappingProxyType({
     "straight": "vertical",
     "flat": "flat", "horizontal": "flat", "horizontally": "flat", "level": "flat",
     "on": "on", "off": "off", "pressed": "pressed", "down position": "down", "in": "in", "out": "out", "flush": "closed",
+    "locked": "closed", "latched": "closed",
 })
 
 # clause connectives (single words; multi-word ones are joined by the normaliser first)
@@ -252,7 +253,8 @@ ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwa
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
-ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol"})
+ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",
+                         "obviously", "naturally", "clearly", "evidently"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})

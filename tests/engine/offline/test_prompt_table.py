@@ -59,6 +59,11 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 37 (cases, mostly state dependent, on dev assets negated, mirrored, turned or resting ajar) ---
+    R("extra/oven_7179", "I need the very bottom rack pulled out about half way - drop the bottom door first obviously.",
+      joints={"joint_3": E(end="upper"), "joint_2": E(end=0.264), "joint_1": E(still=True), "joint_4": E(still=True)}),
+    R("extra/box_100214", "Shut the box lid, then flip both front latches up so it's locked.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
     # --- blind round 36 (cases on dev assets re-encoded, mirrored, or turned and resting ajar) ---
     R("dishwasher_12553", "Press the release button on the top right of the panel; that unlatches the door and it falls all the way open.",
       joints={"joint_1": E(peak=0.052), "joint_0": E(end="upper")}),  # "it" falls: the door the unlatching freed
