@@ -34,6 +34,8 @@ MIN_REACH = 0.08
 """Least horizontal reach of a spouted body's mean point from its foot, as a share of its box diagonal, that says where
 it faces (the dev taps reach 0.16 to 0.36)."""
 MIN_BODY_POINTS = 20
+_CONTROL_LABELS = frozenset(label for kind in CONTROL_KINDS for label in info(kind).labels)
+"""PartNet labels of control links (a toaster's "slider"): fixed in place, they still show the side the user stands on."""
 SIDE_FACE = 0.5
 """A control's face is a side face when its normal's upward part is under this."""
 
@@ -121,12 +123,12 @@ def front_votes(joints: dict[str, JointGeometry], center: FloatArray, asset: Art
     if category in SPOUTED and not by_convention(vote := _reach(asset, joints, points, rest)):
         return vote, FrontCue.SPOUT
     vote = _control_faces(joints)
-    if by_convention(vote) and not by_convention(screen := _fixed_screen(asset, joints, points, rest)):
+    if by_convention(vote) and not by_convention(screen := _fixed_parts(asset, joints, points, rest)):
         return screen, FrontCue.SCREEN
     return vote, FrontCue.CONVENTION if by_convention(vote) else FrontCue.CONTROLS
 
 
-def _fixed_screen(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
+def _fixed_parts(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
                   rest: dict[str, FloatArray]) -> FloatArray:
     """Parts the URDF fixed: the user sits on the far side of the base from a screen (a laptop that cannot fold), and on
     the side a control sits on (a toaster whose lever is fixed)."""
@@ -141,9 +143,6 @@ def _fixed_screen(asset: ArticulatedAsset, joints: dict[str, JointGeometry], poi
     away = _flat(base.mean(axis=0) - posed(points, rest, shown).mean(axis=0)) * (1.0 if screens else -1.0)
     span = float(np.linalg.norm(base.max(axis=0) - base.min(axis=0))) if base.shape[0] else 0.0
     return _horizontal(away) if span > 0 and float(np.linalg.norm(away)) > MIN_REACH * span else np.zeros(3)
-
-
-_CONTROL_LABELS = frozenset(label for kind in CONTROL_KINDS for label in info(kind).labels)
 
 
 def _reach(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],

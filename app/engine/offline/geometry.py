@@ -264,6 +264,17 @@ def _resting_open(joints: dict[str, JointGeometry]) -> dict[str, float]:
         g.category is not None and info(g.category).openable)}
 
 
+def _shut_poses(asset: ArticulatedAsset, shut: dict[str, float]) -> dict[str, FloatArray]:
+    """Every link's pose with the parts of ``shut`` (joint -> closed value) at their closed ends, the rest at rest."""
+    return link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
+
+
+def _shut_layout(asset: ArticulatedAsset, shut: dict[str, float], points: dict[str, FloatArray]) -> RestPoints:
+    """The object laid out as :func:`_shut_poses` poses it."""
+    poses = _shut_poses(asset, shut)
+    return RestPoints.of(asset, {n: _posed(points, poses, [n]) for n in asset.visual_links if n in points})
+
+
 def _body_controls_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry], points: dict[str, FloatArray],
                         rest: dict[str, FloatArray]) -> dict[str, JointGeometry]:
     """A control on the body (a microwave's door-release button) is read against the body with its doors shut: a door
@@ -276,8 +287,7 @@ def _body_controls_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry
         info(g.category).latches_host)]
     if not body:
         return joints
-    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
-    layout = RestPoints.of(asset, {n: _posed(points, poses, [n]) for n in asset.visual_links if n in points})
+    layout = _shut_layout(asset, shut, points)
     return {**joints, **{j: _joint_geometry(asset, j, points, rest, layout) for j in body}}
 
 
@@ -287,8 +297,7 @@ def _faces_shut(asset: ArticulatedAsset, joints: dict[str, JointGeometry], point
     shut = _resting_open(joints)
     if len(shut) < 2:
         return joints
-    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
-    layout = RestPoints.of(asset, {n: _posed(points, poses, [n]) for n in asset.visual_links if n in points})
+    layout = _shut_layout(asset, shut, points)
     out = dict(joints)
     for name in shut:
         static = layout.box_without(joints[name].child)
@@ -306,7 +315,7 @@ def _closed_layout(asset: ArticulatedAsset, joints: dict[str, JointGeometry], po
     riders = [name for name, g in joints.items() if g.child in carried]
     if not riders:
         return joints
-    poses = link_poses(asset, {j: np.array([v]) for j, v in shut.items()}, frames=1)
+    poses = _shut_poses(asset, shut)
     out = dict(joints)
     for name in riders:
         placed = _bounded(_posed(points, poses, joints[name].moving_links))

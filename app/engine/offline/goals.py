@@ -98,17 +98,17 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     geometry = part.geometry
     rotates = geometry.type in ("revolute", "continuous")
     absolute = quantities.amount is not None and quantities.amount.reference == "closed"
-    if _back_to_now(frame.text.split()):
+    said = frame.text.split()
+    if _back_to_now(said):
         return "rest"  # "close the lid, then flip it back up to exactly where it is now": where it was when the prompt began
     if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
             geometry.lower < geometry.rest < geometry.upper):
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
-    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(frame.text.split()) & _RETURN_WORDS
+    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(said) & _RETURN_WORDS
                                                   or frame.explicit_return):
-        said = set(frame.text.split())  # "slide the drawer back in", "put the lid back down on the pot": where it belongs, shut
-        home = _back_home(frame.text.split())  # "tuck the magazine back up into the cover", "slide it back in": shut
+        home = _back_home(said)  # "tuck the magazine back up into the cover", "slide it back in": shut
         shuts = home or (frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
-            said & {"down", "on"} and part.kind is not None and info(part.kind).lid_like)
+            bool({"down", "on"} & set(said)) and part.kind is not None and info(part.kind).lid_like)  # "put the lid back down on the pot"
         if (home or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:
             return "closed"
         return "previous" if part.joint in tracker.before else "rest"
@@ -152,7 +152,7 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         # standing suitcase's front lid) opens down like an oven door
         if not lid and geometry.up_value is not None and geometry.down_value is not None and geometry.open_value is not None:
             return "up" if sense is VerbSense.RAISE else "down"  # an oven door lowers open, a lid lifts open
-    words = set(frame.text.split())
+    words = set(said)
     if sense is VerbSense.HOLD and words & {"open", "opened", "shut", "closed"} and geometry.closed_value is not None:
         return "open" if words & {"open", "opened"} else "closed"  # "leave the left one open"
     if sense is VerbSense.HOLD and words & {"up", "down"} and (geometry.up_value if "up" in words else geometry.down_value) is not None:
