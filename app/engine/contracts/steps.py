@@ -41,6 +41,8 @@ GoalState = Literal["open", "closed", "pressed", "up", "down", "rest", "upper", 
                     "backward", "toward", "vertical", "flat", "previous", "value", "velocity"]
 MeasuredFrom = Literal["closed", "current", "rest"]
 Role = Literal["control", "effect", "direct"]
+MAX_STEP_S = 30.0
+"""The longest one step may be told to last."""
 Release = Literal["self_return", "stays", "held"]
 Why = Literal["asked", "mechanism", "prerequisite", "latch", "release", "return"]
 
@@ -127,7 +129,7 @@ class Step(_Strict):
     effects: list[JointMove] = Field(default_factory=list)
     base: BaseMotion | None = None
     speed_factor: Annotated[float, Field(gt=0.0, le=10.0, allow_inf_nan=False)] = 1.0
-    duration_s: Annotated[float, Field(gt=0.0, le=30.0, allow_inf_nan=False)] | None = None
+    duration_s: Annotated[float, Field(gt=0.0, le=MAX_STEP_S, allow_inf_nan=False)] | None = None
     hold_s: NonNegative = 0.0
     """Seconds everything stays in its end state before releases and the next step."""
     note: str = ""

@@ -88,6 +88,8 @@ class KindInfo:
     """Pushed back, it tips further open (a laptop's screen), not shut like a door or a drawer."""
     affordances: tuple[str, ...] = ()
     """What Causal.json's ``semantics.links[].affordance`` lists for it."""
+    opened_by: tuple[PartKind, ...] = ()
+    """Opening or closing it means opening or closing the part of these kinds that rides on it (a jug's lid)."""
 
 
 REGISTRY: dict[PartKind, KindInfo] = {
@@ -112,7 +114,8 @@ REGISTRY: dict[PartKind, KindInfo] = {
         KindInfo(PartKind.TURNTABLE, ("turntable", "turn table", "rotation tray", "carousel", "glass plate", "plate", "glass tray"),
                  labels=("rotation_tray", "turntable"), related=(PartKind.TRAY,), spins=True, affordances=("spin",)),
         KindInfo(PartKind.CONTAINER, ("container", "jug", "carafe", "water tank", "tank", "reservoir", "water reservoir", "jar", "canister"), labels=("container",),
-                 related=(PartKind.DRAWER, PartKind.TRAY), openable=True, affordances=("pull_out", "push_in", "lift")),
+                 related=(PartKind.DRAWER, PartKind.TRAY), openable=True, affordances=("pull_out", "push_in", "lift"),
+                 opened_by=(PartKind.LID, PartKind.CAP)),
         KindInfo(PartKind.SCREEN, ("screen", "display", "monitor", "lcd"), labels=("screen",), related=(PartKind.LID, PartKind.DOOR),
                  hinged=True, openable=True, reclines=True, affordances=("open", "close")),
         KindInfo(PartKind.WINDOW, ("window", "sash", "pane", "rotation window", "casement"), labels=("window", "rotation_window", "translation_window"),

@@ -33,7 +33,7 @@ OBJECT_FAMILIES: Mapping[str, frozenset[str]] = MappingProxyType({
     "trash": _BINS | {"container"},
     "pedal": _BINS | {"container"},
     "bucket": frozenset({"bucket", "pail", "tub", "basket", "can", "container"}),
-    "microwave": frozenset({"microwave", "oven", "cooker"}),
+    "microwave": frozenset({"microwave", "oven", "cooker", "nuker"}),
     "oven": _COOKERS | {"microwave"},
     "refrigerator": frozenset({"fridge", "refrigerator", "freezer", "cooler", "cabinet"}),
     "dishwasher": frozenset({"dishwasher", "washer", "cabinet"}),

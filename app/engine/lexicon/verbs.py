@@ -222,7 +222,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("unclip", S.UNLATCH),
     VerbInfo("unclasp", S.UNLATCH),
     VerbInfo("free", S.UNLATCH),
-    VerbInfo("lock", S.LOCK),
+    VerbInfo("lock", S.LOCK, _p(up=S.LOCK)),
     VerbInfo("latch", S.LOCK),
     # generic operation
     VerbInfo("operate", S.OPERATE),

@@ -192,7 +192,7 @@ OBJECT_NOUNS: tuple[str, ...] = (
     # what a user may call the whole object
     "object", "thing", "whole", "entire", "unit", "item", "appliance", "furniture", "model", "asset", "module", "assembly",
     "bin", "trash", "trashcan", "can", "dustbin", "garbage", "car", "toy", "cart", "trolley", "vehicle",
-    "suitcase", "luggage", "box", "bucket", "pail", "safe", "vault", "microwave", "oven", "stove", "fridge", "refrigerator", "freezer",
+    "suitcase", "luggage", "box", "bucket", "pail", "safe", "vault", "microwave", "nuker", "oven", "stove", "fridge", "refrigerator", "freezer",
     "cabinet", "cupboard", "dresser", "wardrobe", "storage", "toaster", "laptop", "computer", "notebook", "macbook", "stapler",
     "faucet", "tap", "washer", "dishwasher", "machine", "toilet", "kettle", "pot", "saucepan", "bottle", "chest", "crate", "table",
     "chair", "briefcase", "nightstand", "bedside", "locker", "wheelie", "dumpster", "device", "cooker", "sink", "bag", "handbag",

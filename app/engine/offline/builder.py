@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 from app.engine.asset.model import ArticulatedAsset
-from app.engine.contracts.steps import BaseMotion, JointMove, Why
+from app.engine.contracts.steps import MAX_STEP_S, BaseMotion, JointMove, Why
 from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import info
@@ -25,7 +25,8 @@ from app.engine.offline.explain import Explanation
 from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, travel_left
 from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
-from app.engine.offline.object_parts import object_parts
+from app.engine.offline.object_parts import object_parts, starts
+from app.engine.offline.only_part import only_part
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.codes import CODE_VERBS
 from app.engine.offline.reading.frames import Frame
@@ -89,7 +90,7 @@ class Builder:
                 self.object_named = False
                 if mention.relation is not None and mention.relation[1].pronoun and parts:
                     self.refs.last, self.refs.last_kind = [parts[-1]], parts[-1].kind  # "top-left key, the one right under it"
-                found = self._only_part(frame, mention)
+                found = only_part(self, frame, mention)
                 if not found:
                     try:
                         found, notes = self.refs.resolve(mention, prefer=prefer)
@@ -100,28 +101,12 @@ class Builder:
                     self.notes.extend(notes)
                 if (mention.plural or mention.collective) and len(found) > 1:
                     self.refs.group = list(found)
-            for part in found:
+            for part in mech.opened_through(found, VERBS[frame.verb].sense if frame.verb is not None and frame.verb in VERBS else sense,
+                                            self.parts, self.asset):
                 if part not in parts:
                     parts.append(part)
                     words.append(mention.words or mention.head)
         return parts, words
-
-    def _only_part(self, frame: Frame, mention: Mention) -> list[Part]:
-        """A part name we do not know, tied to the object ("the stapler's magazine") on an object with one
-        movable part, with a verb that part can do: that part, with a warning; never a bare guess."""
-        category = self.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
-        tied = mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)
-        if not tied or mention.kind is not None or len(self.parts) != 1 or self.refs.ground(mention).parts:
-            return []
-        part = self.parts[0]
-        sense = frame.sense
-        fits = sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RAISE, VerbSense.LOWER, VerbSense.RECLINE) and part.geometry.open_value is not None
-        if sense in (VerbSense.PULL_OUT, VerbSense.PUSH_IN):
-            fits = part.geometry.type == "prismatic"
-        if not fits:
-            return []
-        self.notes.append(f"read '{mention.words}' as {part.describe(self.asset)}, the only movable part")
-        return [part]
 
     # --- goals ---------------------------------------------------------------------
     def moves(self, frame: Frame, sense: VerbSense, parts: list[Part], words: list[str], role: str | None) -> list[Move]:
@@ -197,7 +182,7 @@ class Builder:
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
             return self.add(replace(act, goal=act.means, means=None))
-        if seq.object_result(self, act) or take_hold(self, goal, sense):
+        if seq.object_result(self, act) or take_hold(self, goal, sense) or seq.everything(self, act):
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
@@ -257,8 +242,8 @@ class Builder:
         if first.is_object and first.sides and openable(self.parts):
             return False  # "lower the front half of the suitcase": the part on that side
         implied = VERBS[frame.verb].implies if frame.verb is not None and frame.verb in VERBS else ()
-        if first.is_object and any(self.refs.of_kind(kind) for kind in implied):
-            return False  # "start the toaster", "flush the toilet": the part the verb works
+        if first.is_object and (any(self.refs.of_kind(kind) for kind in implied) or starts(frame)):
+            return False  # "start the toaster", "flush the toilet", "run the dishwasher": the part the verb works
         if first.is_object:
             self._same_object(first)
             amount = frame.quantities.amount
@@ -379,6 +364,9 @@ class Builder:
         hold = act.hold_s + (duration if frame.hold and duration else 0.0)
         if frame.hold and duration:
             duration = None
+        if duration is not None and duration > MAX_STEP_S:
+            self.notes.append(f"'{frame.text}': a step lasts at most {MAX_STEP_S:g} s; took {MAX_STEP_S:g} s, not {duration:g} s")
+            duration = MAX_STEP_S
         step = ContractStep(
             id=f"S{len(self.steps) + 1}", op=sense.value, why=why, clause=frame.clause if why == "asked" else None,
             start="with_previous" if (act.parallel if parallel is None else parallel) and self.steps else "after_previous",

@@ -235,17 +235,38 @@ def _fasten(builder: Builder, act: Act, closed: list[Move]) -> None:
         builder.explanation.because({latch.joint: f"the {_kind(latch)} ({latch.joint}) holds the {_kind(move.part)} shut" for latch in latches})
 
 
+def _shut_to_run(builder: Builder, act: Act) -> None:
+    """"Run the dishwasher" with its door ajar: the door is shut first (an appliance runs shut)."""
+    from app.engine.offline.grounding import openable
+    from app.engine.offline.object_parts import starts
+
+    if act.goal.sense is VerbSense.SWITCH_OFF or not starts(act.goal) or not act.goal.themes or not act.goal.themes[0].is_object:
+        return
+    for part in (p for p in openable(builder.parts) if p.kind in HINGED_KINDS and p.joint not in builder.excluded):
+        g = part.geometry
+        if g.closed_value is None or g.open_value is None or abs(builder.tracker.value(part.joint) - g.closed_value) < 0.05 * abs(
+                g.open_value - g.closed_value):
+            continue
+        builder.mentioned.add(part.joint)
+        shut = Move(part, "direct", goal_for(_NOTHING, VerbSense.CLOSE, part, builder.tracker).goal, words="")
+        builder.append(replace(act, means=None, hold_s=0.0), VerbSense.CLOSE, [], [shut], why="prerequisite", parallel=False)
+        builder.notes.append(f"shut {part.link} first: {builder.asset.name} runs with it shut")
+
+
 def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:
     """Open what stands in the way first (the door before the tray)."""
     from app.engine.offline.resolve import resolve
 
+    _shut_to_run(builder, act)
     for move in moves:
         if move.part.joint in builder.tracker.before:
             continue
         target = resolve(move.goal, move.part.geometry, builder.tracker.obj, builder.asset, builder.tracker.value(move.part.joint)).value
         if target is None:
             continue
-        for blocker in mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded):
+        reached = [d for d in mech.enclosing(move.part, builder.parts, builder.tracker) if d.joint not in builder.mentioned | builder.excluded] if (
+            act.goal.manual) else []  # "turn the glass plate by hand": the door is opened to reach in
+        for blocker in mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded) or reached:
             builder.mentioned.add(blocker.joint)
             opening = Move(blocker, "direct", goal_for(_NOTHING, VerbSense.OPEN, blocker, builder.tracker).goal, words="")
             latches = _latches(builder, [opening])

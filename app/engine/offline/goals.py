@@ -205,6 +205,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         return GoalChoice(_spin(quantities, geometry, tracker))
     state = "cw" if state == "velocity" else state
     value, unit = _amount(quantities.amount)
+    if value is not None and unit == "fraction" and geometry.type == "continuous" and {"round", "around"} & set(frame.text.split()):
+        value, unit = value * 2 * math.pi, "rad"  # "half way round": a share of a whole turn of a part that turns for ever
     if value is not None and unit == "m" and geometry.type != "prismatic":
         value, unit = None, None
     if value is not None and unit == "rad" and geometry.type == "prismatic":

@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING, Literal
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Goal
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
+from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import BUTTON_RELEASED_OBJECTS, FUNCTION_NAME_WORDS, RELEASE_NAME_WORDS
 from app.engine.offline.grounding import Part, openable
 from app.engine.offline.naming import link_words
@@ -116,6 +117,36 @@ def blockers(effect: Part, target: float, parts: list[Part], tracker: Tracker, m
             continue
         found.append(part)
     return found
+
+
+def enclosing(part: Part, parts: list[Part], tracker: Tracker) -> list[Part]:
+    """Front doors, not open, that a hand must pass to reach ``part`` inside ("turn the glass plate by hand": the
+    microwave's door): in front of it by a margin and across from it."""
+    obj = tracker.obj
+    here = obj.local(part.geometry.home_centroid)
+    found = []
+    for door in parts:
+        g = door.geometry
+        if door is part or door.kind is None or not info(door.kind).hinged or g.open_value is None or g.closed_value is None:
+            continue
+        if part.link in g.moving_links or abs(tracker.value(door.joint) - g.open_value) <= 0.25 * abs(g.open_value - g.closed_value):
+            continue  # it rides on the door, or the door is open
+        there = obj.local(g.home_centroid)
+        if float(g.home_face @ obj.front) > 0.7 and there[0] - here[0] > 0.05 * obj.diag and max(abs(there[1:] - here[1:])) < 0.5 * g.size:
+            found.append(door)
+    return found
+
+
+def opened_through(found: list[Part], sense: VerbSense, parts: list[Part], asset: ArticulatedAsset) -> list[Part]:
+    """``found``, each part that opens through another riding on it ("open the jug": its lid) replaced by that part."""
+    if sense not in (VerbSense.OPEN, VerbSense.CLOSE):
+        return found
+    out = []
+    for part in found:
+        kinds = info(part.kind).opened_by if part.kind is not None else ()
+        riding = [p for p in parts if p.kind in kinds and p.link in asset.moving_links(part.joint) and p is not part]
+        out.append(riding[0] if len(riding) == 1 else part)
+    return out
 
 
 def is_control(part: Part) -> bool:

@@ -28,6 +28,8 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
             return [_one_implied(builder, frame, found)]
         if found:
             return found
+    if starts(frame):
+        return _function_control(builder, frame)
     if sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF, VerbSense.TURN, VerbSense.OPERATE, VerbSense.TOGGLE) or (
             builder.tracker.obj.category in OPERATED_OBJECTS and sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.MOVE)):
         controls = [p for p in builder.parts if mech.is_control(p)]
@@ -38,6 +40,30 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
     if sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RAISE, VerbSense.LOWER, VerbSense.PULL_OUT, VerbSense.PUSH_IN):
         return _openables(builder, frame)
     return []
+
+
+_STARTING = frozenset({"run", "start"})
+
+
+def starts(frame: Frame) -> bool:
+    """"Run the dishwasher", "turn on the microwave", "switch it off": the appliance set going or stopped (its control
+    worked), not the object moved."""
+    return frame.sense in (VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF) or (frame.sense is VerbSense.SPIN and frame.verb in _STARTING)
+
+
+def _function_control(builder: Builder, frame: Frame) -> list[Part]:
+    """The one control that sets the object going (not a button that releases its door); several: a refusal naming
+    them; none: a refusal saying so, never the object moved instead."""
+    started = [p for kind in VERBS["start"].implies for p in builder.refs.of_kind(kind)]
+    if started:  # "turn on the toaster": what starting it works (its lever), as "start the toaster" does
+        return started if len(started) == 1 else [_one_implied(builder, frame, started)]
+    parts = builder.parts
+    controls = [p for p in parts if mech.is_control(p) and not any(mech.drives(p, e, parts, builder.tracker) for e in openable(parts))]
+    if len(controls) == 1:
+        return controls
+    if controls:
+        raise builder.refs.refuse(f"'{frame.text}' could mean {len(controls)} controls", controls)
+    raise builder.refs.refuse(f"'{frame.text}': {builder.asset.name} has no control that sets it going (only a door release, or none)")
 
 
 def _openables(builder: Builder, frame: Frame) -> list[Part]:

@@ -190,7 +190,12 @@ def take_hold(builder: Builder, goal: Frame, sense: VerbSense) -> bool:
     """"grab the bucket by its handle", "take hold of the lid": nothing moves; what is held becomes what "it" means next
     (the whole object when the object is named). False when ``goal`` is no taking hold."""
     if (sense is VerbSense.GRASP or (sense is VerbSense.HOLD and goal.instruments)) and goal.themes and goal.themes[0].is_object:
+        from app.engine.offline.sequences import ready_handle  # sequences builds on this module
+
+        readied = ready_handle(builder, Act(goal=goal))
         builder.refs.last_object = True  # "grab the bucket by its handle and lift it": "it" is the bucket
+        if readied:
+            return True
     elif sense is VerbSense.GRASP:
         try:
             parts, _ = builder.ground(goal, sense, goal.themes) if goal.themes else ([], [])

@@ -7,6 +7,8 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from app.engine.contracts.steps import Goal
+from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.goals import goal_for
@@ -15,6 +17,7 @@ from app.engine.offline.moves import Move
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.codes import place_words
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import replay
 from app.engine.offline.whole_object import object_motion, returning_motion
 
@@ -35,7 +38,31 @@ def with_result_quantities(frame: Frame, results: tuple[Frame, ...]) -> Frame:
     return replace(frame, quantities=merged)
 
 
+LYING_RAD = 0.785
+"""A carry handle this far (45 degrees) or more from upright lies down: it is stood up before the object is held by it."""
+
+
+def ready_handle(builder: Builder, act: Act) -> bool:
+    """"Pick the bucket up by its handle": a carry handle lying down is stood upright first, to hold the object by."""
+    for mention in act.goal.instruments:
+        try:
+            parts, words = builder.ground(act.goal, VerbSense.RAISE, (mention,))
+        except GroundingError:
+            continue
+        for part, said in zip(parts, words, strict=True):
+            now = builder.tracker.value(part.joint)
+            upright = resolve(Goal(state="vertical"), part.geometry, builder.tracker.obj, builder.asset, now).value
+            if part.kind is not PartKind.HANDLE or part.geometry.type != "revolute" or upright is None or abs(upright - now) < LYING_RAD:
+                continue
+            plain = replace(act, means=None, results=(), goal=replace(act.goal, quantities=replace(act.goal.quantities, amount=None)))
+            builder.append(plain, VerbSense.RAISE, [], [Move(part, "direct", Goal(state="vertical"), words=said)], why="prerequisite")
+            builder.notes.append(f"stood {part.link} upright first, to hold {builder.asset.name} by it")
+            return True
+    return False
+
+
 def object_motion_act(builder: Builder, act: Act) -> None:
+    ready_handle(builder, act)
     goal = act.goal
     previous = builder.steps[-1].base if builder.steps else None
     if goal.quantities.direction == "down" or "down" in goal.text.split():  # "lift it, carry it right and put it back down": the lift, undone
@@ -121,6 +148,32 @@ def in_turn(builder: Builder, act: Act) -> None:
     for index, part in enumerate(ordered):
         moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
         builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
+
+
+def everything(builder: Builder, act: Act) -> bool:
+    """"(pull the rack out,) then close everything back up", "put it all back": every part the prompt has moved so far
+    (the door opened to reach the rack too), the last moved first — a rack goes back in before its door shuts. True
+    when it was added; False when the words are not about everything or nothing has moved yet."""
+    goal = act.goal
+    said = goal.themes[0] if len(goal.themes) == 1 else None
+    words = goal.text.split()
+    whole = any(words[k:k + 2] in (["it", "all"], ["them", "all"], ["all", "of"]) and words[k + 2:k + 3] not in (["the"], ["way"])
+                for k in range(len(words)))  # "put it all back", not "bring it all the way out"
+    if said is None or act.means is not None or not (said.head == "everything" or (said.pronoun and whole)):
+        return False
+    worked = [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
+    moved = [p for p in builder.parts if p.joint in worked and abs(builder.tracker.value(p.joint) - builder.asset.joints[p.joint].rest) > 1e-6]
+    if not moved:
+        return False
+    sense = VerbSense.CLOSE if builder.frame_sense(goal) is VerbSense.CLOSE and "back" not in goal.text.split() else VerbSense.RETURN
+    ordered = sorted(moved, key=lambda p: -max(i for i, j in enumerate(worked) if j == p.joint))
+    label = "everything" if said.head == "everything" else "it all"
+    builder.notes.append(f"read '{label}' as every part moved so far, the last moved first: "
+                         + ", ".join(p.link for p in ordered))
+    for index, part in enumerate(ordered):
+        moves = builder.moves(replace(goal, sense=sense), sense, [part], [label], None)
+        builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
+    return True
 
 
 def object_result(builder: Builder, act: Act) -> bool:

@@ -50,6 +50,7 @@ def test_a_garbled_prompt_animates_or_is_refused(seed: int) -> None:
     ("dishwasher_12553", "Task: the dishes Step 1: press button on the top strip to pause it. Step 2: lower the door to 30°."),
     ("dishwasher_12553", "pause the door"),
     ("microwave_7119", "open the turntable"),
+    ("extra/safe_101623", "Open the safe door about 45 second, degrees."),  # a step longer than the contract allows: clamped, said
     ("storage_23472", "Swing open the cupboard door under the drawer halfway; keep your hands box off 15 the drawer."),
 ])
 def test_prompts_that_once_crashed(name: str, prompt: str) -> None:

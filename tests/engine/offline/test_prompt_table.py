@@ -59,6 +59,50 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 39 (cases and prompts on dev assets mirrored, flipped, shifted, moved, turned or resting ajar) ---
+    R("extra/oven_7179", "i need to get the pizza stone off the very bottom rack",  # a thing on a rack: the rack out, its door first
+      joints={"joint_3": E(end="upper"), "joint_2": E(end=0.528), "joint_1": E(still=True), "joint_4": E(still=True)}),
+    R("dishwasher_12553", "run the dishwasher", joints={"joint_1": E(peak=0.052, end=0.0), "joint_0": E(still=True)}),  # not moved 1 m
+    R("dishwasher_12553", "turn on the dishwasher", joints={"joint_1": E(peak=0.052, end=0.0), "joint_0": E(still=True)}),
+    R("dishwasher_12553", "open the door, then run the dishwasher", joints={"joint_0": E(peak="upper", end=0.0),
+                                                                            "joint_1": E(peak=0.052, end=0.0)}),  # it runs shut
+    R("extra/microwave_7128", "start the microwave", refuse=True),  # two knobs, the button a door release: which one?
+    R("washing_machine_103508", "start the washing machine", refuse=True),  # three knobs
+    R("coffee_machine_103030", "Lift the jug off the base.", joints={"joint_1": E(end="upper"), "joint_2": E(still=True)}),
+    R("toaster_103477", "Drop the bread in — lever down.", joints={"joint_1": E(end="upper")}),
+    # --- blind round 38 (cases and prompts on dev assets re-encoded, mirrored, moved, flipped, turned or resting ajar) ---
+    R("laptop_10697", "Fold the screen down flat shut, then flip it back up to where it was.", joints={"joint_1": E(peak=-1.9541, end=0.0)}),
+    R("dishwasher_12553", "use the release button to unlatch the dishwasher door and only lower it a third of the way",
+      joints={"joint_0": E(end=PI / 6), "joint_1": E(peak=0.052, end=0.0)}),  # "and only lower it": a step of its own
+    R("extra/oven_7179", "I need to get the tray out of the top oven.", joints={"joint_4": E(end="upper"), "joint_0": E(end=0.528),
+                                                                               "joint_3": E(still=True)}),
+    R("extra/oven_7179", "pull the middle rack out, then close everything back up",  # the door opened for the rack shuts last
+      joints={"joint_1": E(peak=0.528, end=0.0), "joint_3": E(peak="upper", end=0.0)}),
+    R("safe_102387", "Twist the right-hand dial all the way round once, then pull the door open.",
+      joints={"joint_1": E(abs_end=2 * PI), "joint_0": E(end="upper")}),
+    R("extra/microwave_7128", "I spilled soup in the nuker, rotate the turntable half way round", joints={"joint_4": E(abs_end=PI),
+                                                                                                       "joint_0": E(still=True)}),
+    R("extra/microwave_7128", "I spilled soup in the nuker, rotate the turntable half way round so I can reach the mess at the back",
+      joints={"joint_0": E(end="upper"), "joint_4": E(abs_end=PI)}, order=(("joint_0", "joint_4"),)),  # reaching in: the door first
+    R("microwave_7119", "The glass plate in the microwave is sitting crooked, can you turn it a quarter turn by hand?",
+      joints={"joint_0": E(end="upper"), "joint_1": E(abs_end=PI / 2)}, order=(("joint_0", "joint_1"),)),  # by hand: reach in
+    R("microwave_7119", "turn the glass plate a quarter turn", joints={"joint_0": E(still=True), "joint_1": E(abs_end=PI / 2)}),
+    R("coffee_machine_103030", "I want to drop some ice cubes into the blender jug, then cover it again",
+      joints={"joint_2": E(peak="upper", end=0.0), "joint_1": E(still=True)}),  # the jug opens by its lid
+    R("extra/suitcase_100550", "pack my jacket in the suitcase and shut it", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("extra/safe_101623", "I need to grab the jewellery box out of the safe.", joints={"joint_1": E(end="upper")}),
+    R("extra/safe_101623", "Turn the small knob up top on the door by a quarter turn.", joints={"joint_2": E(abs_end=PI / 2),
+                                                                                                 "joint_0": E(still=True)}),
+    R("extra/box_100214", "lock up the toolbox - shut the lid and snap both clasps closed",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("extra/box_100214", "Shut the lid and then do up both clasps.", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363),
+                                                                              "joint_2": E(end=0.4363)}),
+    R("bucket_102352", "pick the bucket up by it's handle and lift it about 30 cm", joints={"joint_0": E(end=2.3593)},
+      base=(0.0, 0.0, 0.3)),  # a handle lying down is stood up first
+    R("storage_27044", "Push the cabinet back 10 cm so it sits flush against the wall.", base=(0.1, 0.0, 0.0)),
+    R("safe_101564", "Tap in top-left, top-right, then bottom-left on the keypad, and after that open the door.",
+      joints={"joint_0": E(peak=0.004), "joint_2": E(peak=0.004), "joint_11": E(peak=0.004), "joint_13": E(end="upper")},
+      order=(("joint_0", "joint_2"), ("joint_2", "joint_11"))),
     # --- blind round 37 (cases, mostly state dependent, on dev assets negated, mirrored, turned or resting ajar) ---
     R("extra/oven_7179", "I need the very bottom rack pulled out about half way - drop the bottom door first obviously.",
       joints={"joint_3": E(end="upper"), "joint_2": E(end=0.264), "joint_1": E(still=True), "joint_4": E(still=True)}),
@@ -402,7 +446,8 @@ ROWS: list[Row] = [
     R("examples/toy_car", "turn the front left wheel a quarter turn in the forward-rolling direction", joints={"wheel_front_left_axle": E(end=PI / 2), "wheel_front_right_axle": E(still=True)}),
     R("examples/toy_car", "spin the rear right wheel", joints={"wheel_rear_right_axle": E(moves=True), "wheel_front_right_axle": E(still=True)}),
     # --- elaboration of a whole-object motion, screw caps, on/off of an object's control, wheel rolling sense ---
-    R("bucket_102352", "pick up the bucket by its handle and raise it 50 cm", base=(0.0, 0.0, 0.5), joints={"joint_0": E(still=True)}),
+    R("bucket_102352", "pick up the bucket by its handle and raise it 50 cm", base=(0.0, 0.0, 0.5),
+      joints={"joint_0": E(end=2.3593)}),  # its handle rests lying on the rim: stood up first to lift it by (blind round 38)
     R("bucket_102352", "lift the bucket 20 cm and raise it 50 cm", base=(0.0, 0.0, 0.7)),
     R("bottle_cap_3558", "open the bottle", joints={"joint_0": E(end="upper")}),
     R("bottle_cap_3558", "open the bottle, then close it", joints={"joint_0": E(peak="upper")}),

@@ -56,6 +56,8 @@ _STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses",
 
 
 _SELECTING = frozenset({"take", "grab", "get"})
+_BY_HAND = frozenset({"reach", "wipe", "grab", "touch", "clean"})
+"""What a person's aim does by hand ("so I can reach the mess"): the step before is done by hand, reaching in."""
 """Verbs that pick a part out for the next clause's "it" when nothing else follows them."""
 _GOAL_SENSES = frozenset({VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPERATE, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF})
 """What a task states as its goal on the whole object ("secure the safe", "start the microwave")."""
@@ -241,6 +243,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
         if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):
             frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist ...", "On the keypad, tap ..."
+        if frame.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes) and any(
+                f.verb is not None and any(not (m.is_object or m.pronoun) for m in f.themes) for f in frames[index + 1:]):
+            frame = replace(frame, heading=True)  # "lock up the toolbox - shut the lid and snap both clasps closed": what follows says how
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"
         if frame.let and frame.verb in _IDLE_VERBS and frame.quantities.duration_s is not None and all(m.pronoun or m.is_object for m in frame.themes):
@@ -287,6 +292,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         said_aside = False
         if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and (acts or index + 1 < len(frames)):
             said_aside = True
+            if acts and frame.link in (Link.RESULT, Link.PURPOSE) and _BY_HAND & set(frame.text.split()):
+                acts[-1] = replace(acts[-1], goal=replace(acts[-1].goal, manual=True))  # "..., so I can reach the mess": by hand
             if frame.link is Link.FIRST and frame.stative and len(frame.themes) == 1 and frame.themes[0].kind is not None:
                 acts.append(Act(goal=replace(frame, heading=True, verb=None, sense=None), condition=True))  # "Somebody left this door
                 # sticking straight out. Swing it back ...": the scene names what "it" is

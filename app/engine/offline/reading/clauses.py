@@ -84,7 +84,7 @@ _NOT_BEFORE_VERB = DETERMINERS | frozenset(SPATIAL) | frozenset(ORDINALS) | froz
     {"of", "each", "every", "both", "all", "another", "other", "this", "that", "no", "any", "some", "toggle", "rocker", "light", "power",
      "control", "wall"})
 _VERB_CUE = frozenset({"and", ",", "then", "but", "to", "by", "after", "before", "once", "when", "while", "whilst", "so", "please", "now",
-                       "first", "firstly", "just", "also", "and_then", "next", "finally", "lastly", "afterwards", "afterward",
+                       "first", "firstly", "just", "only", "simply", "kindly", "also", "and_then", "next", "finally", "lastly", "afterwards", "afterward",
                        "after_that", "subsequently", "in_order_to", "so_as_to", "without", "until", "or", "as", "at_the_same_time",
                        "simultaneously", "which", "that", "then,", "gently", "slowly", "quickly", "carefully", "fully",
                        "don't", "dont", "not", "never", "do", "again", "meanwhile", "i", "you", "we", "let's", "lets", "using",

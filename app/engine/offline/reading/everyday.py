@@ -129,6 +129,12 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         if t.text == "flush" and before in ("the", "a") and (not after or not after.isalpha() or after in ("then", "and", "once", "twice")):
             out.extend((t, Token("button", "button", t.start, t.end)))  # "press the flush": its flush button
             continue
+        if t.text == "cover" and before in ("", ",", ".", "then", "and", "to", "please", "just") and after in ("it", "them", "the", "its", "that"):
+            t = Token("close", "close", t.start, t.end)  # "then cover it again": put its lid back on
+        if t.text == "up" and after == "top" and (before in GENERIC_PART_NOUNS or kind_of_word(before) is not None):
+            out.extend(Token(w, w, t.start, tokens[i + 1].end) for w in ("at", "the", "top"))  # "the small knob up top": at the top
+            skip = i + 1
+            continue
         if t.text == "right" and after in _PLACED_AT and (before in GENERIC_PART_NOUNS or kind_of_word(before) is not None):
             continue  # "the piece right at the very top": where it is, "right" only sharpens it
         if t.text == "just" and after == "enough" and i + 2 < len(tokens) and tokens[i + 2].text == "to":

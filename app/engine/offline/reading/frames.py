@@ -321,8 +321,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     intransitive = after_subject(tokens, verb_index) or finite is not None
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
-    if verb == "follow" and subject:
-        themes = []  # "the back lever follows it (down)": the subject moves, "it" is the leader
+    themes = [] if verb == "follow" and subject else themes  # "the back lever follows it (down)": the subject moves, not "it"
     if subject_theme:
         themes = subject + themes
     if themes and all(m.head in _PLACEHOLDERS for m in themes):
@@ -332,8 +331,9 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         themes = [m.owner if m.head in _BODY_PARTS and m.owner is not None else m for m in themes]  # "keep your finger on it": it
     elif verb in ("keep", "hold") and themes and all(m.head in _BODY_PARTS for m in themes):
         themes = [replace(themes[0], head="it", kind=None, pronoun=True, modifiers=())]  # "keep your foot down for 3 s": on what it pressed
-    if any(m.head not in _CONTAINERS and m.kind is not None for m in themes):
-        themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad": the keypad is where
+    codes = code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used)
+    if any(m.head not in _CONTAINERS and m.kind is not None for m in themes) or any(c[0] == "place" for c in codes):
+        themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad", "bottom-left on the keypad"
     let = causative or particle == "go"
     if let and verb_index is not None:
         named = {k for m in objects for k in range(m.start, m.end)}  # "make the lower drawer come out": "lower" names the drawer
@@ -378,7 +378,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         goes_first=clause.goes_first, conjoined=clause.conjoined, marker=clause.marker, heading=clause.heading,
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
         guessed_verb=guessed, same_direction=bool(words & SAME_WAY),
-        codes=code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used), first=first,
+        codes=codes, first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
         brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays

@@ -210,7 +210,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
     values: dict[str, object] = {}
     used: set[int] = set()
     amount: Amount | None = None
-    i = 0
+    i, shut_words = 0, any(t.text in _CLOSED_WORDS for t in tokens)  # "fold it flat shut", "close it flat": its shut end
     while i < len(tokens):
         token, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else None
         clock = _clock_turn(tokens, i)
@@ -382,8 +382,8 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text in ("to_the_left", "to_the_right"):
             values["direction"] = token.text.rsplit("_", 1)[1]
             used.add(i)
-        elif token.text in ("flat", "flush") and (_on_the_body(tokens, i + 1) or _against_a_face(tokens, i + 1)):
-            used.add(i)  # "down flat on the box": shut on the body, not the other flat pose
+        elif token.text in ("flat", "flush") and (_on_the_body(tokens, i + 1) or _against_a_face(tokens, i + 1) or shut_words):
+            used.add(i)  # "down flat on the box", "fold it flat shut": shut on the body, not the other flat pose
             values["onto_body"] = True
         elif (token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up":
             values["orientation"] = STATES.get(token.text, "vertical")

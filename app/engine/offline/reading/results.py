@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
-from app.engine.lexicon.words import FACE_RELATIONS, STATES
+from app.engine.lexicon.words import FACE_RELATIONS, PLACES, STATES
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.quantities import Amount
@@ -51,6 +51,8 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
         return act  # "drive the handle to its far limit so the handle ends up lying across the back rim": where it goes, said twice
     if not _about_it(frame):
         return None
+    if all(m.is_object for m in act.goal.themes) and PLACES & set(frame.text.split()):
+        return act  # "push the cabinet back 10 cm so it sits flush against the wall": where the object ends, not a part shut
     goal, q, r = act.goal, act.goal.quantities, frame.quantities
     if "perpendicular" in frame.text.split() and q.amount is None and r.amount is None and goal.sense in (VerbSense.OPEN, VerbSense.MOVE, None):
         # "swing the door open until it's perpendicular to the front": a right angle from shut, not an upright part

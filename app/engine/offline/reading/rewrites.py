@@ -115,7 +115,8 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text == "out_of" and [t.text for t in tokens[i + 1:i + 3]] == ["the", "way"] and any(
                 (kind := kind_of_word(t.text)) is not None and info(kind).hinged for t in out[-3:]):
             token, skip = replace(token, text="open", lemma="open"), 2  # "get the door out of the way": open it
-        if token.text in ("do", "doing") and after == "up" and i + 2 < len(tokens) and tokens[i + 2].text in DETERMINERS:
+        if token.text in ("do", "doing") and after == "up" and i + 2 < len(tokens) and (tokens[i + 2].text in DETERMINERS or tokens[i + 2].text in (
+                "both", "all", "each", "every")):
             token, skip = replace(token, text="fasten", lemma="fasten"), 1  # "then do up the left clasp": fasten it
         if token.text == "like" and i + 1 < len(tokens) and tokens[i + 1].number is not None:
             if out and out[-1].text == "," and any(t.text == "right_angle" for t in out) and i + 2 < len(tokens) and tokens[i + 2].text in ANGLE_UNITS:

@@ -48,10 +48,11 @@ _COMPARTMENTS = frozenset({"compartment", "cavity", "section", "oven", "chamber"
 _REGION_OF = frozenset({"half", "part", "section", "portion", "piece", "bit", "panel"})
 _SIDE_OF = frozenset({"upper", "lower", "top", "bottom", "left", "right", "left-hand", "right-hand", "front", "back", "rear"})
 _MOMENTS = frozenset({"moment", "instant", "time"})
-_PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "slide", "shove", "stash", "store", "stow"})
+_PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "slide", "shove", "stash", "store", "stow", "drop", "pack", "toss",
+                      "pour", "dump", "chuck", "throw"})
 _FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
 _INTO = frozenset({"in", "into", "inside"})
-_OUT_OF = frozenset({"out_of", "from", "out"})
+_OUT_OF = frozenset({"out_of", "from", "out", "off"})
 _BROUGHT = frozenset({"a", "an", "some", "my", "our"})
 """Before what is put in or taken out: a thing of the user's, not a part of the object ("the tray" may be a part)."""
 
@@ -150,7 +151,8 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or words[3] not in _COMPARTMENTS:
         return None
     last = i + 3 + sized + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
-    return last + 1 - i, the + 1, [tokens[i + 2 + sized], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:]]
+    out_word = [replace(tokens[i], text="out", lemma="out")] if tokens[i].text == "out_of" else []  # "get the tray out of the top oven"
+    return last + 1 - i, the + 1, [tokens[i + 2 + sized], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:], *out_word]
 
 
 def _of_the_object(tokens: list[Token], j: int) -> int:
@@ -209,16 +211,20 @@ def _stowed(tokens: list[Token], i: int) -> int:
             tokens[k + 2].text in OBJECT_NOUNS):
         return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
     brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
+    held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS)  # "the jewellery box out of the safe": a box kept in it
     if not thing or k >= len(tokens) or tokens[k].text not in into or any(
-            (_names_kind(t.text) and not brought) or t.text in OBJECT_NOUNS for t in thing):
+            (_names_kind(t.text) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for t in thing):
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
     there = k + 1 < len(tokens) and tokens[k + 1].text in ("there", "here")  # "put a bowl of soup in there": in the object
-    if tokens[k].text in ("inside", "in") and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in ("to", "for", "and", "so") or there):
+    if tokens[k].text in ("inside", "in") and verb != "drop" and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in (
+            "to", "for", "and", "so") or there):  # "drop the bread in": a toaster's lever, not a holder opened
         return k + 1 + there if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
     k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
-    holder = [t.text for t in tokens[k + 1:k + 4]]
+    if k + 1 >= len(tokens) or tokens[k + 1].is_punct:
+        return 0  # "drop the bread in — lever down": no holder named
+    holder = [t.text for t in tokens[k + 1:k + 5]]  # "off the very bottom rack"
     if holder and holder[0] not in ("the", "this", "that", "its", "my"):
         holder = ["the", *holder]  # "inside microwave"
     if len(holder) < 2 or not any(w in OBJECT_NOUNS or kind_of_word(w) is not None for w in holder[1:]):
