@@ -182,7 +182,7 @@ class Builder:
         if sense is VerbSense.GRASP and act.means is not None and act.means.verb is not None:
             self.notes.append(f"ignored the purpose '{goal.text}': choosing moves nothing by itself")  # "twist the dial to choose a program"
             return self.add(replace(act, goal=act.means, means=None))
-        if seq.object_result(self, act) or take_hold(self, goal, sense) or seq.everything(self, act):
+        if seq.object_result(self, act) or take_hold(self, goal, sense) or seq.everything(self, act) or seq.lock_object(self, act):
             return
         if sense is VerbSense.HOLD and hold(self, act):
             return
@@ -256,6 +256,10 @@ class Builder:
             amount = frame.quantities.amount  # "close the laptop, then push it back 20 cm": the laptop, not its screen
             if self.refs.last_object or (self.object_named and amount is not None and amount.unit == "m" and frame.particle in ("back", "forward", "away")):
                 return moves_object(frame, pronoun=True, after_part=False) or frame.returning
+            if frame.sense in (VerbSense.YAW, VerbSense.SPIN) and frame.particle in ("around", "round") and frame.quantities.amount is None and (
+                    frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].object_sense is VerbSense.YAW) and not any(
+                    p.geometry.type == "continuous" or mech.is_control(p) for p in self.refs.last):
+                return True  # "spin it round so the other side faces me": only the object turns around (a knob would be "it")
             if self.refs.topic:
                 return False  # "Bucket handle: let it fall toward the front": the part the heading named
             after_part = bool(self.refs.last)

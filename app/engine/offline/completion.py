@@ -237,11 +237,17 @@ def _fasten(builder: Builder, act: Act, closed: list[Move]) -> None:
 
 def _shut_to_run(builder: Builder, act: Act) -> None:
     """"Run the dishwasher" with its door ajar: the door is shut first (an appliance runs shut)."""
-    from app.engine.offline.grounding import openable
     from app.engine.offline.object_parts import starts
 
     if act.goal.sense is VerbSense.SWITCH_OFF or not starts(act.goal) or not act.goal.themes or not act.goal.themes[0].is_object:
         return
+    shut_open_doors(builder, act, "runs")
+
+
+def shut_open_doors(builder: Builder, act: Act, why: str) -> None:
+    """Every door or lid of the object not shut is shut, each a step of its own ("shut link_0 first: it runs with it shut")."""
+    from app.engine.offline.grounding import openable
+
     for part in (p for p in openable(builder.parts) if p.kind in HINGED_KINDS and p.joint not in builder.excluded):
         g = part.geometry
         if g.closed_value is None or g.open_value is None or abs(builder.tracker.value(part.joint) - g.closed_value) < 0.05 * abs(
@@ -250,7 +256,7 @@ def _shut_to_run(builder: Builder, act: Act) -> None:
         builder.mentioned.add(part.joint)
         shut = Move(part, "direct", goal_for(_NOTHING, VerbSense.CLOSE, part, builder.tracker).goal, words="")
         builder.append(replace(act, means=None, hold_s=0.0), VerbSense.CLOSE, [], [shut], why="prerequisite", parallel=False)
-        builder.notes.append(f"shut {part.link} first: {builder.asset.name} runs with it shut")
+        builder.notes.append(f"shut {part.link} first: {builder.asset.name} {why} with it shut")
 
 
 def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:

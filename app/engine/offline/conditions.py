@@ -110,6 +110,8 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     """"The roast is sitting on the middle shelf - get it out to me", "check on the roast on the top shelf": a skipped
     clause that places something on one part makes that part what "it" means next (when nothing else does yet)."""
     places = [*frame.instruments, *(m.owner for m in frame.themes if m.kind is None and not m.is_object and m.owner is not None)]
+    if frame.stative and frame.themes and frame.themes[0].kind is None:
+        places += frame.themes[1:]  # "the ketchup is in the left-hand door, open that one": where the thing is
     places = [m for m in places if m.kind is not None]
     told = [m for m in frame.themes[:1] if m.kind is not None and not m.pronoun] if frame.verb is None or frame.stative else []
     if len(told) == 1:

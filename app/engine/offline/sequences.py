@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from app.engine.contracts.steps import Goal
 from app.engine.errors import GroundingError
-from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.offline.goals import goal_for
 from app.engine.offline.keypad import code_keys
@@ -173,6 +173,28 @@ def everything(builder: Builder, act: Act) -> bool:
     for index, part in enumerate(ordered):
         moves = builder.moves(replace(goal, sense=sense), sense, [part], [label], None)
         builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
+    return True
+
+
+def lock_object(builder: Builder, act: Act) -> bool:
+    """"Lock the box up", "lock up the jewellery box with both clasps", "lock the safe by spinning the dial": what is open
+    is shut first, then the object is fastened by what the words say, else by its latches (True when added; False when
+    nothing says or has a way to lock it)."""
+    from app.engine.offline.completion import shut_open_doors
+
+    goal = act.goal
+    if builder.frame_sense(goal) is not VerbSense.LOCK or not goal.themes or not all(m.is_object for m in goal.themes):
+        return False
+    latches = [p for p in builder.parts if p.kind is not None and info(p.kind).latches_host]
+    if act.means is None and not goal.instruments and not latches:
+        return False
+    shut_open_doors(builder, act, "locks")
+    if act.means is not None:
+        builder.add(replace(act, goal=act.means, means=None))
+        return True
+    parts, words = builder.ground(goal, VerbSense.CLOSE, goal.instruments) if goal.instruments else (latches, ["latch"] * len(latches))
+    builder.notes.append(f"read '{goal.text}' as its door or lid shut, then {', '.join(p.link for p in parts)} fastened")
+    builder.complete(replace(act, parallel=False), VerbSense.CLOSE, [], builder.moves(goal, VerbSense.CLOSE, parts, words, None))
     return True
 
 

@@ -59,6 +59,21 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 40 (cases and prompts, a third of the prompts indirect, on variant dev assets) ---
+    R("extra/box_100214", "lock up the jewelry box with both clasps", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363),
+                                                                            "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),
+    R("extra/box_100214", "Lock the box up so the kids can't get into it.",  # locked by its latches, the lid shut first
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_2"),)),
+    R("safe_102387", "lock the safe by spinning the dial a quarter turn clockwise",
+      joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(abs_end=PI / 2)}, order=(("joint_0", "joint_1"),)),
+    R("extra/suitcase_100550", "The suitcase is facing the wrong way, spin it round so the other side faces me.", yaw_deg=180.0),
+    R("microwave_7236", "I want the microwave's door facing the wall - turn it around.", joints={"joint_0": E(still=True)}, yaw_deg=180.0),
+    R("microwave_7236", "Some soup exploded in there and I need to wipe out the inside of the microwave.", joints={"joint_0": E(end="upper")}),
+    R("dishwasher_11700", "Time to load the dishes.", joints={"joint_0": E(end="upper")}),
+    R("refrigerator_11178", "The ketchup is in the left-hand door of the fridge, open that one for me.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # where the thing is: what "that one" means
+    R("extra/oven_7179", "I need to get the top tray out of the oven", joints={"joint_4": E(end="upper"), "joint_0": E(end=0.528)}),
+    R("extra/oven_7179", "I want to check on the roast in the bottom oven", joints={"joint_3": E(end="upper"), "joint_4": E(still=True)}),
     # --- blind round 39 (cases and prompts on dev assets mirrored, flipped, shifted, moved, turned or resting ajar) ---
     R("extra/oven_7179", "i need to get the pizza stone off the very bottom rack",  # a thing on a rack: the rack out, its door first
       joints={"joint_3": E(end="upper"), "joint_2": E(end=0.528), "joint_1": E(still=True), "joint_4": E(still=True)}),

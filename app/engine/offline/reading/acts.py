@@ -244,7 +244,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):
             frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist ...", "On the keypad, tap ..."
         if frame.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes) and any(
-                f.verb is not None and any(not (m.is_object or m.pronoun) for m in f.themes) for f in frames[index + 1:]):
+                f.verb is not None and any(not (m.is_object or m.pronoun) for m in f.themes) for f in frames[index + 1:]) and not (
+                index + 1 < len(frames) and frames[index + 1].link is Link.MEANS):
             frame = replace(frame, heading=True)  # "lock up the toolbox - shut the lid and snap both clasps closed": what follows says how
         if _summarises(frame, frames[index + 1:]):
             frame = replace(frame, heading=True)  # "open both doors at once, the left to 120 degrees, the right to 60"

@@ -21,6 +21,7 @@ from app.engine.lexicon.words import (
     CORRECTION_LEADS,
     CORRECTIONS,
     DETERMINERS,
+    OBJECT_NOUNS,
     OTHER_WORDS,
     REQUEST_PHRASES,
     SHORTHAND,
@@ -115,6 +116,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text == "out_of" and [t.text for t in tokens[i + 1:i + 3]] == ["the", "way"] and any(
                 (kind := kind_of_word(t.text)) is not None and info(kind).hinged for t in out[-3:]):
             token, skip = replace(token, text="open", lemma="open"), 2  # "get the door out of the way": open it
+        elif token.text == "out_of" and after in ("the", "its") and i + 2 < len(tokens) and tokens[i + 2].text in OBJECT_NOUNS and any(
+                kind_of_word(t.text) is not None for t in out[-4:]) and (i + 3 == len(tokens) or tokens[i + 3].is_punct):
+            token, skip = replace(token, text="out", lemma="out"), 2  # "get the top tray out of the oven": out, from the object itself
         if token.text in ("do", "doing") and after == "up" and i + 2 < len(tokens) and (tokens[i + 2].text in DETERMINERS or tokens[i + 2].text in (
                 "both", "all", "each", "every")):
             token, skip = replace(token, text="fasten", lemma="fasten"), 1  # "then do up the left clasp": fasten it

@@ -22,6 +22,7 @@ from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, LENGTH_UNITS, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
+from app.engine.offline.reading.holders import COMPARTMENTS, SIDE_OF, accessed, inside_end, names_kind, stowed
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
 from app.engine.offline.reading.token import Token
@@ -44,17 +45,8 @@ _PLACED = frozenset({"is", "sits", "sitting", "mounted", "placed", "located", "s
 _END_STATES = frozenset({"open", "opened", "closed", "shut", "down", "up", "out", "done", "finished", "there", "clear", "in"})
 _ENTERING = frozenset({"enter", "punch", "type", "key", "input", "dial", "tap", "press"})
 _TRIGGERS = frozenset({"trips", "triggers", "disengages", "frees", "springs", "kicks"})
-_COMPARTMENTS = frozenset({"compartment", "cavity", "section", "oven", "chamber"})
 _REGION_OF = frozenset({"half", "part", "section", "portion", "piece", "bit", "panel"})
-_SIDE_OF = frozenset({"upper", "lower", "top", "bottom", "left", "right", "left-hand", "right-hand", "front", "back", "rear"})
 _MOMENTS = frozenset({"moment", "instant", "time"})
-_PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "slide", "shove", "stash", "store", "stow", "drop", "pack", "toss",
-                      "pour", "dump", "chuck", "throw"})
-_FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
-_INTO = frozenset({"in", "into", "inside"})
-_OUT_OF = frozenset({"out_of", "from", "out", "off"})
-_BROUGHT = frozenset({"a", "an", "some", "my", "our"})
-"""Before what is put in or taken out: a thing of the user's, not a part of the object ("the tray" may be a part)."""
 
 
 def _same_moment(tokens: list[Token], i: int) -> int:
@@ -133,10 +125,10 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     rack" (the compartment last opened). Else None."""
     words = [t.text for t in tokens[i:i + 5]] + ["", ""]
     the = len(out) - 2
-    while the >= 0 and out[the].text in _SIDE_OF | {"middle"}:
+    while the >= 0 and out[the].text in SIDE_OF | {"middle"}:
         the -= 1  # "the upper rack in the bottom compartment"
     inside = 1 if words[0] in ("inside", "within") else 2 if words[:2] == ["in", "there"] else 0  # "the rack in there (all the way) out"
-    if inside and out and _names_kind(out[-1].text) and "out" in words[inside:inside + 3]:
+    if inside and out and names_kind(out[-1].text) and "out" in words[inside:inside + 3]:
         first = next((k for k in range(len(out) - 1, max(-1, len(out) - 7), -1) if out[k].text == "the"), None)  # "the higher of the 2 racks"
         if first is not None:  # "open the door and slide the rack inside (all the way) out": the rack behind that door
             return inside + (inside == 1 and words[1] in ("it", "there")), first, [replace(out[first], text="its", lemma="its"), *out[first + 1:]]
@@ -144,13 +136,13 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
         return None
     if words[0] not in ("in", "inside", "of", "out_of", "from") or words[1] not in ("the", "that", "this"):
         return None
-    if words[2] in _COMPARTMENTS and words[1] != "the":  # "in that compartment": the one just opened
-        return 3 + (words[3] in _COMPARTMENTS), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]
+    if words[2] in COMPARTMENTS and words[1] != "the":  # "in that compartment": the one just opened
+        return 3 + (words[3] in COMPARTMENTS), the, [replace(out[the], text="its", lemma="its"), *out[the + 1:]]
     sized = int(words[2] in SIZES)  # "in the small top compartment"
     words = words[:2] + words[2 + sized:] + [""]
-    if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or words[3] not in _COMPARTMENTS:
+    if words[2] not in ("upper", "lower", "top", "bottom", "left", "right", "middle") or words[3] not in COMPARTMENTS:
         return None
-    last = i + 3 + sized + (words[4] in _COMPARTMENTS)  # "the upper oven compartment"
+    last = i + 3 + sized + (words[4] in COMPARTMENTS)  # "the upper oven compartment"
     out_word = [replace(tokens[i], text="out", lemma="out")] if tokens[i].text == "out_of" else []  # "get the tray out of the top oven"
     return last + 1 - i, the + 1, [tokens[i + 2 + sized], tokens[last], Token("'s", "'s", tokens[last].end, tokens[last].end), *out[the + 1:], *out_word]
 
@@ -175,61 +167,6 @@ def _amount_said(out: list[Token]) -> list[Token]:
 
 _LENGTHS = frozenset(LENGTH_UNITS) - {"in"}
 """Units of a distance said before "that far" ("in" after a number is mostly "in 2 seconds")."""
-
-
-def _names_kind(word: str) -> bool:
-    """A word naming a kind of part, plurals too ("both racks")."""
-    return kind_of_word(word) is not None or (word.endswith("s") and kind_of_word(word[:-1]) is not None)
-
-
-def _inside_end(tokens: list[Token], i: int) -> int:
-    """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
-    object, and nothing else said in the sentence), else 0."""
-    end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
-    words = [t.text for t in tokens[i + 1:end]]
-    inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"])
-    if not inside or any(_names_kind(w) for w in words):
-        return 0
-    return end
-
-
-def _stowed(tokens: list[Token], i: int) -> int:
-    """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
-    "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part
-    was named before), else 0. The holder follows that index; when none does, the object itself holds it."""
-    verb = tokens[i].text
-    into = _INTO if verb in _PUTTING else _OUT_OF if verb in _FETCHING else None
-    if into is None or (i and tokens[i - 1].text in ("the", "a", "its")):
-        return 0
-    k = i + 1
-    while k < len(tokens) and k < i + 8 and tokens[k].text not in into and not tokens[k].is_punct:
-        k += 1
-    thing = tokens[i + 1:k]
-    if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
-        return k + 2  # "the plates I need to load into this": open it
-    if not thing and k == i + 1 and k + 2 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("the", "my", "that") and (
-            tokens[k + 2].text in OBJECT_NOUNS):
-        return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
-    brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
-    held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS)  # "the jewellery box out of the safe": a box kept in it
-    if not thing or k >= len(tokens) or tokens[k].text not in into or any(
-            (_names_kind(t.text) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for t in thing):
-        return 0
-    if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
-        return 0  # "... the tray. Get it out of the oven": it is the tray
-    there = k + 1 < len(tokens) and tokens[k + 1].text in ("there", "here")  # "put a bowl of soup in there": in the object
-    if tokens[k].text in ("inside", "in") and verb != "drop" and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in (
-            "to", "for", "and", "so") or there):  # "drop the bread in": a toaster's lever, not a holder opened
-        return k + 1 + there if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
-    k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
-    if k + 1 >= len(tokens) or tokens[k + 1].is_punct:
-        return 0  # "drop the bread in — lever down": no holder named
-    holder = [t.text for t in tokens[k + 1:k + 5]]  # "off the very bottom rack"
-    if holder and holder[0] not in ("the", "this", "that", "its", "my"):
-        holder = ["the", *holder]  # "inside microwave"
-    if len(holder) < 2 or not any(w in OBJECT_NOUNS or kind_of_word(w) is not None for w in holder[1:]):
-        return 0
-    return k + 1
 
 
 def _let_through(tokens: list[Token], i: int) -> int:
@@ -327,10 +264,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         return i + 1
     if t.text == "very" and out and out[-1].text == "the" and after[:1] and after[0] in ("top", "bottom", "front", "back", "left", "right", "end", "rear"):
         return i + 1  # "the piece on the very top": on the top
-    if t.text in _REGION_OF and out and out[-1].text in _SIDE_OF and (whole := _of_the_object(tokens, i + 1)):
+    if t.text in _REGION_OF and out and out[-1].text in SIDE_OF and (whole := _of_the_object(tokens, i + 1)):
         out.append(replace(t, text="part", lemma="part"))  # "the upper half of the laptop": the upper part
         return i + (1 + whole)
-    if t.text in _REGION_OF and out and out[-1].text in _SIDE_OF and after[:2] == ["of", "the"] and any(
+    if t.text in _REGION_OF and out and out[-1].text in SIDE_OF and after[:2] == ["of", "the"] and any(
             kind_of_word(w) is PartKind.SWITCH for w in after[2:4]):
         out.append(replace(t, text="end", lemma="end"))  # "press the lower half of the rocker switch": its lower end
         return i + 1
@@ -349,11 +286,16 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
         out.append(replace(t, text="spoke", lemma="spoke"))  # "a big three-spoke wheel": a spoke wheel (a handle)
         return i + 1
-    if t.text in ("check", "look") and after[:1] and after[0] in ("on", "at", "in_on") and (end := _inside_end(tokens, i)):
+    if t.text in ("check", "look") and after[:1] and after[0] in ("on", "at", "in_on") and (end := inside_end(tokens, i)):
         out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
                 Token("it", "it", t.start, t.start)]  # "let me check on the roast in there": open it to look inside
         return end
-    if holder := _stowed(tokens, i):
+    if (reached := accessed(tokens, i, out)) is not None:
+        end, opened = reached
+        out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
+        out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
+        return end
+    if holder := stowed(tokens, i):
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
         out.append(Token("open", "open", t.start, tokens[holder - 1].end, corrected_from=said))  # "put a bowl of soup in the microwave"
         if holder == len(tokens) or tokens[holder].is_punct or tokens[holder].text in ("to", "for", "and", "so"):

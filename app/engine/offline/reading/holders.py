@@ -1,0 +1,97 @@
+"""Things that are no part, put into or taken out of the object, or worked on inside it ("put a bowl of soup in the
+microwave", "grab the jewellery box out of the safe", "load the dishes", "check on the roast in the bottom oven"): the
+request is to open what holds them."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.words import OBJECT_NOUNS
+from app.engine.offline.reading.part_words import kind_of_word
+from app.engine.offline.reading.token import Token
+
+COMPARTMENTS = frozenset({"compartment", "cavity", "section", "oven", "chamber"})
+SIDE_OF = frozenset({"upper", "lower", "top", "bottom", "left", "right", "left-hand", "right-hand", "front", "back", "rear"})
+_PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "slide", "shove", "stash", "store", "stow", "drop", "pack", "toss",
+                      "pour", "dump", "chuck", "throw"})
+_FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
+_INTO = frozenset({"in", "into", "inside"})
+_OUT_OF = frozenset({"out_of", "from", "out", "off"})
+_BROUGHT = frozenset({"a", "an", "some", "my", "our"})
+"""Before what is put in or taken out: a thing of the user's, not a part of the object ("the tray" may be a part)."""
+
+
+def names_kind(word: str) -> bool:
+    """A word naming a kind of part, plurals too ("both racks")."""
+    return kind_of_word(word) is not None or (word.endswith("s") and kind_of_word(word[:-1]) is not None)
+
+
+def inside_end(tokens: list[Token], i: int) -> int:
+    """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
+    object, and nothing else said in the sentence), else 0."""
+    end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+    words = [t.text for t in tokens[i + 1:end]]
+    inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"])
+    if not inside or any(names_kind(w) for w in words):
+        return 0
+    return end
+
+
+def stowed(tokens: list[Token], i: int) -> int:
+    """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
+    "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part
+    was named before), else 0. The holder follows that index; when none does, the object itself holds it."""
+    verb = tokens[i].text
+    into = _INTO if verb in _PUTTING else _OUT_OF if verb in _FETCHING else None
+    if into is None or (i and tokens[i - 1].text in ("the", "a", "its")):
+        return 0
+    k = i + 1
+    while k < len(tokens) and k < i + 8 and tokens[k].text not in into and not tokens[k].is_punct:
+        k += 1
+    thing = tokens[i + 1:k]
+    if not thing and k == i + 1 and k + 1 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("this", "it"):
+        return k + 2  # "the plates I need to load into this": open it
+    if not thing and k == i + 1 and k + 2 < len(tokens) and tokens[k].text in _INTO and tokens[k + 1].text in ("the", "my", "that") and (
+            tokens[k + 2].text in OBJECT_NOUNS):
+        return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
+    brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
+    held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS)  # "the jewellery box out of the safe": a box kept in it
+    if not thing or k >= len(tokens) or tokens[k].text not in into or any(
+            (names_kind(t.text) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for t in thing):
+        return 0
+    if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
+        return 0  # "... the tray. Get it out of the oven": it is the tray
+    there = k + 1 < len(tokens) and tokens[k + 1].text in ("there", "here")  # "put a bowl of soup in there": in the object
+    if tokens[k].text in ("inside", "in") and verb != "drop" and (k + 1 == len(tokens) or tokens[k + 1].is_punct or tokens[k + 1].text in (
+            "to", "for", "and", "so") or there):  # "drop the bread in": a toaster's lever, not a holder opened
+        return k + 1 + there if not {t.text for t in thing} & {"it", "them", "back", "one", "all"} else 0  # "put my leftovers inside": open it; "slide it back in": no
+    k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
+    if k + 1 >= len(tokens) or tokens[k + 1].is_punct:
+        return 0  # "drop the bread in — lever down": no holder named
+    holder = [t.text for t in tokens[k + 1:k + 5]]  # "off the very bottom rack"
+    if holder and holder[0] not in ("the", "this", "that", "its", "my"):
+        holder = ["the", *holder]  # "inside microwave"
+    if len(holder) < 2 or not any(w in OBJECT_NOUNS or kind_of_word(w) is not None for w in holder[1:]):
+        return 0
+    return k + 1
+
+
+_ACCESSING = frozenset({"load", "unload", "empty", "clean", "wipe", "stock", "restock", "fill", "refill", "check"})
+"""What a person does inside an object ("load the dishes", "clean the inside of the oven"): its door or lid opened."""
+
+
+def accessed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[Token]] | None:
+    """At a verb of working inside the object, the whole request "load the dishes" / "wipe out the inside of the
+    microwave" / "check on the roast in the bottom oven": (the index after it, what opens: the compartment named, or
+    nothing for the object). None when the words name a part or say more."""
+    if tokens[i].text not in _ACCESSING or (out and out[-1].text in ("the", "a", "its", "to_be")):
+        return None
+    end = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("so", "and", "then", "because")), len(tokens))
+    words = [t.text for t in tokens[i + 1:end]]
+    if not words or any(names_kind(w) for w in words) or any(t.number is not None for t in tokens[i + 1:end]):
+        return None  # "clean the lid", "fill it 3 cm": a part, or an amount
+    place = next((k for k in range(len(words) - 2) if words[k] in ("in", "inside", "of") and words[k + 1] == "the" and words[k + 2] in SIDE_OF), None)
+    if place is not None and words[-1] in COMPARTMENTS:
+        return end, list(tokens[i + 1 + place + 1:end])  # "check on the roast in the bottom oven": that compartment
+    inside = "inside" in words or "in_there" in words or words[-2:] == ["in", "there"]
+    objects = [w for w in words if w in OBJECT_NOUNS]
+    things = words[0] in ("the", "my", "some", "our", "this", "those", "these", "all") or words[0] in ("on", "out", "up")
+    return (end, []) if (inside or objects or (things and tokens[i].text in ("load", "unload", "empty"))) else None
