@@ -70,6 +70,7 @@ ROWS: list[Row] = [
     R("microwave_7236", "I want the microwave's door facing the wall - turn it around.", joints={"joint_0": E(still=True)}, yaw_deg=180.0),
     R("microwave_7236", "Some soup exploded in there and I need to wipe out the inside of the microwave.", joints={"joint_0": E(end="upper")}),
     R("dishwasher_11700", "Time to load the dishes.", joints={"joint_0": E(end="upper")}),
+    R("extra/box_100214", "lift the box off the table", joints={"joint_0": E(still=True)}, base=(0.0, 0.0, 0.36)),  # a place, no holder
     R("refrigerator_11178", "The ketchup is in the left-hand door of the fridge, open that one for me.",
       joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # where the thing is: what "that one" means
     R("extra/oven_7179", "I need to get the top tray out of the oven", joints={"joint_4": E(end="upper"), "joint_0": E(end=0.528)}),

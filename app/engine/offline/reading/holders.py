@@ -4,7 +4,7 @@ request is to open what holds them."""
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import OBJECT_NOUNS
+from app.engine.lexicon.words import OBJECT_NOUNS, PLACES
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -53,7 +53,7 @@ def stowed(tokens: list[Token], i: int) -> int:
             tokens[k + 2].text in OBJECT_NOUNS):
         return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
     brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
-    held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS)  # "the jewellery box out of the safe": a box kept in it
+    held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS) - PLACES  # "the jewellery box out of the safe": kept in it
     if not thing or k >= len(tokens) or tokens[k].text not in into or any(
             (names_kind(t.text) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for t in thing):
         return 0
@@ -69,8 +69,9 @@ def stowed(tokens: list[Token], i: int) -> int:
     holder = [t.text for t in tokens[k + 1:k + 5]]  # "off the very bottom rack"
     if holder and holder[0] not in ("the", "this", "that", "its", "my"):
         holder = ["the", *holder]  # "inside microwave"
-    if len(holder) < 2 or not any(w in OBJECT_NOUNS or kind_of_word(w) is not None for w in holder[1:]):
-        return 0
+    if len(holder) < 2 or not any((w in OBJECT_NOUNS and w not in PLACES and tokens[k].text != "off") or kind_of_word(w) is not None
+                                  for w in holder[1:]):
+        return 0  # "lift the box off the table": where it stands, no holder; "off the bottom rack": the part it sits on
     return k + 1
 
 
