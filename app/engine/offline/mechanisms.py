@@ -144,7 +144,8 @@ def opened_through(found: list[Part], sense: VerbSense, parts: list[Part], asset
     out = []
     for part in found:
         kinds = info(part.kind).opened_by if part.kind is not None else ()
-        riding = [p for p in parts if p.kind in kinds and p.link in asset.moving_links(part.joint) and p is not part]
+        carried = asset.moving_links(part.joint) if kinds else ()
+        riding = [p for p in parts if p.kind in kinds and p.link in carried and p is not part]
         out.append(riding[0] if len(riding) == 1 else part)
     return out
 

@@ -23,6 +23,7 @@ from app.engine.offline.whole_object import object_motion, returning_motion
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
+    from app.engine.offline.grounding import Part
 
 
 def with_result_quantities(frame: Frame, results: tuple[Frame, ...]) -> Frame:
@@ -136,8 +137,7 @@ def in_turn(builder: Builder, act: Act) -> None:
     parts, words = builder.ground(goal, sense, goal.themes)
     order = goal.in_turn or ("said" if keys_listed(goal) else "reading")
     if order == "reverse":  # "close them in the reverse order": the last one worked goes first
-        worked = [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
-        ordered = sorted(parts, key=lambda p: -max((i for i, j in enumerate(worked) if j == p.joint), default=-1))
+        ordered = _last_worked_first(builder, parts)
     elif order in _ORDER_KEYS:
         axis, descending = _ORDER_KEYS[order]
         ordered = sorted(parts, key=lambda p: -position(p, builder.tracker.obj)[axis] if descending else position(p, builder.tracker.obj)[axis])
@@ -145,8 +145,23 @@ def in_turn(builder: Builder, act: Act) -> None:
         ordered = parts  # "key in the code: top-left button, the one right under it, then the bottom-right one"
     else:
         ordered = reading_order(parts, builder.tracker.obj)
-    for index, part in enumerate(ordered):
-        moves = builder.moves(goal, sense, [part], [words[parts.index(part)]], None)
+    _one_after_another(builder, act, goal, sense, ordered, [words[parts.index(part)] for part in ordered])
+
+
+def _worked(builder: Builder) -> list[str]:
+    """The joints the steps so far move, in order (a joint once per step that moves it)."""
+    return [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
+
+
+def _last_worked_first(builder: Builder, parts: list[Part]) -> list[Part]:
+    worked = _worked(builder)
+    return sorted(parts, key=lambda p: -max((i for i, j in enumerate(worked) if j == p.joint), default=-1))
+
+
+def _one_after_another(builder: Builder, act: Act, goal: Frame, sense: VerbSense, parts: list[Part], words: list[str]) -> None:
+    """One step per part, each after the one before (the act's own timing on the first)."""
+    for index, (part, said) in enumerate(zip(parts, words, strict=True)):
+        moves = builder.moves(goal, sense, [part], [said], None)
         builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
 
 
@@ -161,18 +176,15 @@ def everything(builder: Builder, act: Act) -> bool:
                 for k in range(len(words)))  # "put it all back", not "bring it all the way out"
     if said is None or act.means is not None or not (said.head == "everything" or (said.pronoun and whole)):
         return False
-    worked = [m.joint for step in builder.steps for m in (*step.controls, *step.effects)]
+    worked = set(_worked(builder))
     moved = [p for p in builder.parts if p.joint in worked and abs(builder.tracker.value(p.joint) - builder.asset.joints[p.joint].rest) > 1e-6]
     if not moved:
         return False
-    sense = VerbSense.CLOSE if builder.frame_sense(goal) is VerbSense.CLOSE and "back" not in goal.text.split() else VerbSense.RETURN
-    ordered = sorted(moved, key=lambda p: -max(i for i, j in enumerate(worked) if j == p.joint))
+    sense = VerbSense.CLOSE if builder.frame_sense(goal) is VerbSense.CLOSE and "back" not in words else VerbSense.RETURN
+    ordered = _last_worked_first(builder, moved)
     label = "everything" if said.head == "everything" else "it all"
-    builder.notes.append(f"read '{label}' as every part moved so far, the last moved first: "
-                         + ", ".join(p.link for p in ordered))
-    for index, part in enumerate(ordered):
-        moves = builder.moves(replace(goal, sense=sense), sense, [part], [label], None)
-        builder.complete(act if index == 0 else replace(act, parallel=False, wait_before_s=0.0, results=()), sense, [], moves)
+    builder.notes.append(f"read '{label}' as every part moved so far, the last moved first: " + ", ".join(p.link for p in ordered))
+    _one_after_another(builder, act, replace(goal, sense=sense), sense, ordered, [label] * len(ordered))
     return True
 
 
