@@ -164,6 +164,12 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("loosen", S.OPEN),
     VerbInfo("tighten", S.CLOSE),
     VerbInfo("run", S.SPIN),
+    VerbInfo("heat", S.SPIN, _p(up=S.SPIN, through=S.SPIN)),  # "heat up my leftovers in the microwave": set it going, as "run" does
+    VerbInfo("warm", S.SPIN, _p(up=S.SPIN, through=S.SPIN)),
+    VerbInfo("reheat", S.SPIN, _p(up=S.SPIN, through=S.SPIN)),
+    VerbInfo("defrost", S.SPIN, _p(up=S.SPIN, through=S.SPIN)),
+    VerbInfo("nuke", S.SPIN),
+    VerbInfo("zap", S.SPIN),
     VerbInfo("start", S.SPIN, implies=(PartKind.LEVER,)),
     # raise / lower
     VerbInfo("lift", S.RAISE, _RAISING, object_sense=S.MOVE),

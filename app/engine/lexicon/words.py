@@ -314,7 +314,9 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         # the scene and the people (or robot) in it: they act on the object, they are no part of it
                         "montage", "sequence", "episode", "gag", "peek", "routine", "spec", "prop", "camera", "viewer", "audience",
                         "character", "actor", "person", "user", "operator", "gripper", "thumb", "finger", "fingers",
-                        "hands", "seal", "rotation", "clean"})
+                        "hands", "seal", "rotation", "clean",
+                        # a person's body, hurt on or used against the object ("I keep bumping my knee on it")
+                        "knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})
@@ -333,3 +335,16 @@ COMPARATIVES = frozenset({"higher", "lower", "wider", "deeper"})
 """After an amount, it is counted from where the part is ("20 degrees higher")."""
 OBJECT_TILTS = frozenset({"tilt", "tip", "lean", "rock"})
 """Verbs that would tilt the whole object ("tilt the bin back and wheel it"): not animated; a step of its own is noted and left."""
+MISHAP_VERBS = frozenset({"bump", "trip", "stumble", "stub", "snag", "whack", "smack", "graze", "bang", "knock", "hit", "catch", "hurt"})
+"""What happens to a person who runs into a part ("I keep bumping my knee on it", "the kids trip over it"): with a body
+part said ("hit my head"), or one of the first five alone, a complaint about where the part is, never a motion."""
+BODY_WORDS = frozenset({"knee", "knees", "shin", "shins", "toe", "toes", "elbow", "elbows", "hip", "hips", "ankle", "ankles", "forehead",
+                        "thigh", "thighs", "head", "leg", "legs", "foot", "feet", "hand", "hands", "finger", "fingers", "arm", "arms"})
+BELONGING_KEYS = frozenset({"keys", "keyring", "key-ring"})
+"""Keys a person owns ("my keys", "the car keys"): things kept somewhere, never the keys of a keypad."""
+COMPLAINED_STATES: Mapping[str, str] = MappingProxyType({
+    "open": "close", "opened": "close", "ajar": "close", "out": "close", "sticking_out": "close", "hanging_open": "close",
+    "up": "lower", "raised": "lower", "down": "raise", "lowered": "raise", "on": "switch_off", "running": "switch_off",
+    "closed": "open", "shut": "open"})
+"""A part's state told with no action ("the lower drawer is sticking out and I keep bumping my knee on it", "the toilet
+seat is up again"): the sense of the verb that puts it the other way, when nothing else in the prompt asks for a step."""

@@ -127,8 +127,10 @@ def _toward_closed(move: dict[str, Any], obj: ObjectGeometry) -> bool | None:
     return (step > 0) == (geometry.closed_value > geometry.open_value)
 
 
-def audit(clauses: Sequence[Clause], extension: Extension, understanding: list[dict[str, Any]], obj: ObjectGeometry) -> list[str]:
-    """Warnings where the reading does not carry what a clause said (see the module docstring)."""
+def audit(clauses: Sequence[Clause], extension: Extension, understanding: list[dict[str, Any]], obj: ObjectGeometry,
+          turned: frozenset[int] = frozenset()) -> list[str]:
+    """Warnings where the reading does not carry what a clause said (see the module docstring). ``turned``: clauses
+    whose told state was put the other way on purpose (a complaint, :mod:`..complaints`), not checked for direction."""
     notes: list[str] = []
     moves = _moves_of(understanding)
     numbers = _step_numbers(extension)
@@ -143,7 +145,7 @@ def audit(clauses: Sequence[Clause], extension: Extension, understanding: list[d
             if not _carried(kind, value, (numbers, travel)):
                 notes.append(f"did not use '{words}' in '{clause.text}': check the result")
         said = {t.text for k, t in enumerate(clause.tokens) if not _names_a_reference(clause.tokens[max(0, k - 2):k])}
-        if said & _BOTH_WAYS:
+        if said & _BOTH_WAYS or clause.index in turned:
             continue
         closing, opening = bool(said & CLOSING_WORDS), bool(said & OPENING_WORDS)
         if closing == opening:

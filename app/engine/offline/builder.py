@@ -61,6 +61,7 @@ class Builder:
     explanation: Explanation = field(init=False)
     mentioned: set[str] = field(default_factory=set)
     excluded: set[str] = field(default_factory=set)
+    turned: set[int] = field(default_factory=set)  # clauses whose told state was put the other way (a complaint)
     manual: bool = False
     last_base_default: bool = False
     object_named: bool = False  # the last part worked was named as the whole object ("close the laptop": its screen)
@@ -79,7 +80,9 @@ class Builder:
         parts: list[Part] = []
         words: list[str] = []
         for mention in mentions:
-            if mention.pronoun:
+            if mention.pronoun and starts(frame) and self.parts:
+                found = self._object_parts(frame, sense)  # "put my leftovers in, shut it and heat them up": the microwave runs
+            elif mention.pronoun:
                 found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural, shuts=sense in (VerbSense.OPEN, VerbSense.CLOSE))
                 if not found and self.parts:
                     found = self._object_parts(frame, sense)
@@ -366,6 +369,8 @@ class Builder:
         if act.means is not None and act.means.quantities.duration_s and not duration:
             duration = None
         hold = act.hold_s + (duration if frame.hold and duration else 0.0)
+        if act.means is not None and act.means.hold and act.means.quantities.duration_s and controls and not frame.hold:
+            hold += act.means.quantities.duration_s  # "press and hold the button for 3 seconds to reset it": the control is held
         if frame.hold and duration:
             duration = None
         if duration is not None and duration > MAX_STEP_S:

@@ -239,7 +239,8 @@ def _shut_to_run(builder: Builder, act: Act) -> None:
     """"Run the dishwasher" with its door ajar: the door is shut first (an appliance runs shut)."""
     from app.engine.offline.object_parts import starts
 
-    if act.goal.sense is VerbSense.SWITCH_OFF or not starts(act.goal) or not act.goal.themes or not act.goal.themes[0].is_object:
+    if not act.runs and (act.goal.sense is VerbSense.SWITCH_OFF or not starts(act.goal) or not act.goal.themes or not (
+            act.goal.themes[0].is_object or act.goal.themes[0].pronoun)):
         return
     shut_open_doors(builder, act, "runs")
 

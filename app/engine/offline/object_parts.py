@@ -42,7 +42,7 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
     return []
 
 
-_STARTING = frozenset({"run", "start"})
+_STARTING = frozenset({"run", "start", "heat", "warm", "reheat", "defrost", "nuke", "zap"})
 
 
 def starts(frame: Frame) -> bool:
@@ -63,6 +63,10 @@ def _function_control(builder: Builder, frame: Frame) -> list[Part]:
         return controls
     if controls:
         raise builder.refs.refuse(f"'{frame.text}' could mean {len(controls)} controls", controls)
+    turning = builder.refs.of_kind(PartKind.TURNTABLE)
+    if len(turning) == 1 and turning[0].geometry.type == "continuous":
+        builder.notes.append(f"'{frame.text}': {builder.asset.name} has no control that sets it going; its {turning[0].link} turns, as it does when it runs")
+        return turning  # "heat up my leftovers in the microwave" on a microwave with only a door and a turntable
     raise builder.refs.refuse(f"'{frame.text}': {builder.asset.name} has no control that sets it going (only a door release, or none)")
 
 
@@ -76,7 +80,8 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
     group = [p for p in found if p.kind == first_kind]
     if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):
         return group
-    sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ())
+    sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ()) or (
+        builder.refs.scene if any(m.pronoun for m in frame.themes) else ())  # "the casserole is in the bottom oven - open it up"
     if sides and len(group) > 1:  # "open the lower oven": the door on that side
         placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())
         if len(placed) == 1:

@@ -22,6 +22,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
+from app.engine.offline.complaints import answer_complaint, answer_stored, left_open, mishap
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -108,6 +109,13 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
                 builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
                 continue
+            if len(acts) > 1 and mishap(act):
+                builder.notes.append(f"ignored '{act.goal.text}': it is about what happens to a person, not a step")  # "I keep bumping my knee on it"
+                continue
+            if left_open(act) and sum(not mishap(a) for a in acts) == 1 and answer_complaint(builder, [act]):
+                continue  # "somebody left the bottom drawer open": shut it, whatever its pose
+            if not builder.steps and len(acts) == 1 and answer_stored(builder, acts):
+                continue  # "my keys are in the top drawer": open it
             if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
                 builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
                 act = replace(act, goal=act.means, means=None)
@@ -135,13 +143,15 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
+    if not builder.steps and answer_complaint(builder, acts):
+        skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)
     if not builder.steps:
         if skipped:
             raise skipped[0]
         raise builder.refs.refuse(f"could not find an action in '{prompt}'")
     extension = Extension(steps=builder.steps)
     understanding = builder.explanation.entries()
-    checked = audit(clauses, extension, understanding, builder.explanation.obj)
+    checked = audit(clauses, extension, understanding, builder.explanation.obj, frozenset(builder.turned))
     notes = tuple(dict.fromkeys([*_corrections(words), *builder.notes, *checked, *_conventional_front(frames, builder)]))
     return Reading(extension=extension, intent=resolve_steps(extension, asset, prompt, notes), understanding=understanding, notes=notes)
 

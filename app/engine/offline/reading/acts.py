@@ -38,6 +38,8 @@ class Act:
     """What the user says the act causes ("so the door pops open"): refines or adds its effects."""
     exclusions: tuple[Frame, ...] = ()
     """What the user says not to do ("without touching the knob")."""
+    runs: bool = False
+    """Said to set the object going ("turn the dial to start the wash"): its doors and lids are shut first."""
     note: str = ""
     """How the act was read when that is not plain from its words (a stored thing's holder opened)."""
 
@@ -190,6 +192,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         verbless = frame.verb is None
         if frame.link is Link.PURPOSE and acts and (frame.guessed_verb or frame.verb) in _LOOKING | FUNCTION_VERBS and not any(m.kind is not None for m in frame.themes) and (
                 acts[-1].goal.verb is not None and bool(acts[-1].goal.themes)):
+            if (frame.guessed_verb or frame.verb) in FUNCTION_VERBS:
+                acts[-1] = replace(acts[-1], runs=True)  # "turn the dial to start the wash": it runs shut
             continue  # "open the door 45 degrees to see inside", "push the button to start it": what follows, not a motion
         if verbless and index and frames[index - 1].link is Link.NEGATED and frame.quantities == Quantities() and frame.themes and any(
                 w.endswith("ing") for w in frame.text.split()) and {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}:

@@ -163,7 +163,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(f"{side}most", f"{side}most", t.start, tokens[i + length - 1].end))  # "the knob furthest to the left"
             skip = i + length - 1
             continue
-        elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4)):
+        elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4 and not (
+                i + 2 < len(tokens) and kind_of_word(tokens[i + 2].text) is not None))):  # "the toaster's browning knob": whose
             t = Token("is", "be", t.start, t.end)  # "the drawer's sticking out", "the lid's open": is, not a possessive
         elif t.text == "home" and (before in ("it", "them", "fully") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
                 before.isalpha() and before not in _NOT_BEFORE_HOME and (not after or after in (".", ",", ";", "!", "so", "and", "then")))):

@@ -24,6 +24,15 @@ def names_kind(word: str) -> bool:
     return kind_of_word(word) is not None or (word.endswith("s") and kind_of_word(word[:-1]) is not None)
 
 
+_THING_MODIFIERS = frozenset({"dirty", "clean", "washed", "wet", "dry", "used", "my", "our", "your", "some", "of", "these", "those", "few"})
+"""Before a part word, what makes it a thing brought along ("the dirty plates", "a stack of plates", "my plates")."""
+
+
+def names_part(words: list[str], k: int) -> bool:
+    """``words[k]`` names a kind of part, and is not said as a thing of the user's ("load the dirty plates")."""
+    return names_kind(words[k]) and not (k > 0 and words[k - 1] in _THING_MODIFIERS)
+
+
 def inside_end(tokens: list[Token], i: int) -> int:
     """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
     object, and nothing else said in the sentence), else 0."""
@@ -54,8 +63,9 @@ def stowed(tokens: list[Token], i: int) -> int:
         return k + 1  # "a stack of dirty plates to load into the dishwasher": open it
     brought = bool(thing) and thing[0].text in _BROUGHT  # "put a plate in": a thing brought to it, even when a part is called so
     held_in = {t.text for t in tokens[k + 1:k + 5]} & set(OBJECT_NOUNS) - PLACES  # "the jewellery box out of the safe": kept in it
+    said = [t.text for t in thing]
     if not thing or k >= len(tokens) or tokens[k].text not in into or any(
-            (names_kind(t.text) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for t in thing):
+            (names_part(said, n) and not brought) or (t.text in OBJECT_NOUNS and not held_in - {t.text}) for n, t in enumerate(thing)):
         return 0
     if all(t.text in ("it", "them", "everything") for t in thing) and any(kind_of_word(t.text) is not None for t in tokens[:i]):
         return 0  # "... the tray. Get it out of the oven": it is the tray
@@ -87,7 +97,7 @@ def accessed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[T
         return None
     end = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("so", "and", "then", "because")), len(tokens))
     words = [t.text for t in tokens[i + 1:end]]
-    if not words or any(names_kind(w) for w in words) or any(t.number is not None for t in tokens[i + 1:end]):
+    if not words or any(names_part(words, k) for k in range(len(words))) or any(t.number is not None for t in tokens[i + 1:end]):
         return None  # "clean the lid", "fill it 3 cm": a part, or an amount
     place = next((k for k in range(len(words) - 2) if words[k] in ("in", "inside", "of") and words[k + 1] == "the" and words[k + 2] in SIDE_OF), None)
     if place is not None and words[-1] in COMPARTMENTS:
@@ -96,3 +106,28 @@ def accessed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[T
     objects = [w for w in words if w in OBJECT_NOUNS]
     things = words[0] in ("the", "my", "some", "our", "this", "those", "these", "all") or words[0] in ("on", "out", "up")
     return (end, []) if (inside or objects or (things and tokens[i].text in ("load", "unload", "empty"))) else None
+
+
+_HEATING = frozenset({"heat", "warm", "reheat", "defrost", "nuke", "zap", "microwave"})
+
+
+def heated(tokens: list[Token], i: int) -> tuple[int, int] | None:
+    """At a verb of heating in "heat up my leftovers in the microwave": (where the holder phrase starts, where it ends) when
+    what is heated is no part and the holder is the object or a part; else None. The request is to put the thing in,
+    then set the object going."""
+    if tokens[i].text not in _HEATING or (i and tokens[i - 1].text in ("the", "a", "its", "to")):
+        return None
+    k = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text in ("up", "through"))
+    start = k
+    while k < len(tokens) and k < start + 6 and tokens[k].text not in _INTO and not tokens[k].is_punct:
+        k += 1
+    thing = [t.text for t in tokens[start:k]]
+    if not thing or k + 2 >= len(tokens) or tokens[k].text not in _INTO or any(names_part(thing, n) for n in range(len(thing))):
+        return None
+    end = k + 1
+    while end < len(tokens) and not tokens[end].is_punct and tokens[end].text not in ("for", "and", "then", "so", "to", "until"):
+        end += 1
+    holder = [t.text for t in tokens[k + 1:end]]
+    if not any(w in OBJECT_NOUNS or names_kind(w) for w in holder):
+        return None
+    return k + 1, end

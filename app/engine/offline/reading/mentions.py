@@ -17,6 +17,7 @@ from app.engine.lexicon.relations import PLACE_PREPS, RELATION_ADVERBS, RELATION
 from app.engine.lexicon.verbs import PARTICLES, VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
+    BELONGING_KEYS,
     COLLECTIVE,
     DEFINITES,
     DETERMINERS,
@@ -54,6 +55,7 @@ _ING_NOUNS = frozenset({"opening", "housing", "casing", "ceiling", "railing", "f
 _STOP = PHRASE_BREAKS
 _NOT_HEADS = NOT_PART_NOUNS
 _OBJECT_WORDS = frozenset(OBJECT_NOUNS)
+_KEY_OWNERS = frozenset({"my", "your", "our", "his", "her", "their", "car", "house", "spare", "front-door", "door", "office"})
 
 
 def _line_index(word: str) -> int | None:
@@ -142,6 +144,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             i += 1
             continue
         found = kind_at(tokens, i)
+        if found is not None and word in BELONGING_KEYS and i > 0 and tokens[i - 1].text in _KEY_OWNERS:
+            found = None  # "my keys are in the top drawer", "the car keys": a person's keys, no key of a keypad
         if found is not None and not (word in SPATIAL and i + 1 < len(tokens) and _nominal(tokens[i + 1]) and kind_at(tokens, i + 1)):
             nouns.append((i, found[1], found[0], False))
             i += found[1]

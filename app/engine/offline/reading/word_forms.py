@@ -22,7 +22,7 @@ from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, LENGTH_UNITS, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
-from app.engine.offline.reading.holders import COMPARTMENTS, SIDE_OF, accessed, inside_end, names_kind, stowed
+from app.engine.offline.reading.holders import COMPARTMENTS, SIDE_OF, accessed, heated, inside_end, names_kind, stowed
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
 from app.engine.offline.reading.token import Token
@@ -128,7 +128,8 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     while the >= 0 and out[the].text in SIDE_OF | {"middle"}:
         the -= 1  # "the upper rack in the bottom compartment"
     inside = 1 if words[0] in ("inside", "within") else 2 if words[:2] == ["in", "there"] else 0  # "the rack in there (all the way) out"
-    if inside and out and names_kind(out[-1].text) and "out" in words[inside:inside + 3]:
+    out_before = any(t.text in ("out", "remove", "withdraw") for t in out[-6:])  # "slide out the rack inside it"
+    if inside and out and names_kind(out[-1].text) and ("out" in words[inside:inside + 3] or out_before):
         first = next((k for k in range(len(out) - 1, max(-1, len(out) - 7), -1) if out[k].text == "the"), None)  # "the higher of the 2 racks"
         if first is not None:  # "open the door and slide the rack inside (all the way) out": the rack behind that door
             return inside + (inside == 1 and words[1] in ("it", "there")), first, [replace(out[first], text="its", lemma="its"), *out[first + 1:]]
@@ -294,6 +295,14 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         end, opened = reached
         out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
         out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
+        return end
+    if (warmed := heated(tokens, i)) is not None:
+        begin, end = warmed
+        said = " ".join(w.text.replace("_", " ") for w in tokens[i:begin])
+        out.append(Token("open", "open", t.start, tokens[begin - 1].end, corrected_from=said))  # "heat up my leftovers in the microwave"
+        out.extend(tokens[begin:end])
+        out += [Token(",", ",", tokens[end - 1].end, tokens[end - 1].end), Token("then", "then", t.start, t.start),
+                Token(t.text, t.lemma, t.start, t.end), Token("it", "it", t.start, t.start)]
         return end
     if holder := stowed(tokens, i):
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
