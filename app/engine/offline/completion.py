@@ -80,6 +80,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     controls, effects, coupled = mech.couple(controls, effects, builder.tracker)
     if coupled:
         builder.notes.append(coupled)
+    if sense is VerbSense.LOCK:
+        _shut_before_fastening(builder, act, controls + effects)
     _prerequisites(builder, act, effects + [m for m in controls if m.role == "direct"])
     controls = _releases(builder, act, sense, controls, effects)
     if sense is VerbSense.RELEASE:
@@ -258,6 +260,19 @@ def shut_open_doors(builder: Builder, act: Act, why: str) -> None:
         shut = Move(part, "direct", goal_for(_NOTHING, VerbSense.CLOSE, part, builder.tracker).goal, words="")
         builder.append(replace(act, means=None, hold_s=0.0), VerbSense.CLOSE, [], [shut], why="prerequisite", parallel=False)
         builder.notes.append(f"shut {part.link} first: {builder.asset.name} {why} with it shut")
+
+
+def _shut_before_fastening(builder: Builder, act: Act, moves: list[Move]) -> None:
+    """"Fasten both clasps on the box" with its lid standing open: the lid they hold shut is shut first."""
+    for host in dict.fromkeys(h for m in moves if (h := mech.latched_host(m.part, builder.parts, builder.tracker)) is not None):
+        g = host.geometry
+        if host.joint in builder.mentioned | builder.excluded or g.closed_value is None or abs(builder.tracker.value(host.joint) - g.closed_value) < mech.REACHED:
+            continue
+        builder.mentioned.add(host.joint)
+        shut = Move(host, "direct", goal_for(_NOTHING, VerbSense.CLOSE, host, builder.tracker).goal, words="")
+        builder.append(replace(act, means=None, hold_s=0.0), VerbSense.CLOSE, [], [shut], why="prerequisite", parallel=False)
+        holding = ", ".join(m.part.link for m in moves if mech.latched_host(m.part, builder.parts, builder.tracker) is host)
+        builder.notes.append(f"shut {host.link} first: {holding} fasten it shut")
 
 
 def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:

@@ -83,6 +83,18 @@ def holds(control: Part) -> bool:
     return control.kind is not None and info(control.kind).holds_effect
 
 
+def latched_host(latch: Part, parts: list[Part], tracker: Tracker) -> Part | None:
+    """The door or lid a latch holds shut ("fasten both clasps" on a box whose lid stands open: that lid), else None."""
+    if latch.kind is None or not info(latch.kind).latches_host:
+        return None
+    asset = tracker.asset
+    hinged = [p for p in parts if p.kind in HINGED_KINDS and p.geometry.closed_value is not None and p.joint != latch.joint]
+    on = [h for h in hinged if latch.link in asset.descendants(h.link)]
+    if len(on) == 1:
+        return on[0]
+    return hinged[0] if len(hinged) == 1 and not any(latch.link in asset.descendants(p.link) for p in parts if p.joint != latch.joint) else None
+
+
 def latches_of(host: Part, parts: list[Part], tracker: Tracker, excluded: set[str]) -> list[Part]:
     """Latches holding ``host`` shut that must be worked before it opens (none when it is already open)."""
     if host.kind not in HINGED_KINDS or host.geometry.closed_value is None:

@@ -131,3 +131,50 @@ def heated(tokens: list[Token], i: int) -> tuple[int, int] | None:
     if not any(w in OBJECT_NOUNS or names_kind(w) for w in holder):
         return None
     return k + 1, end
+
+
+_GOING = frozenset({"go", "goes", "belong", "belongs", "fit", "fits"})
+
+
+def going_in(tokens: list[Token], i: int, out: list[Token]) -> int | None:
+    """At "go" of "the dirty plates need to go in the dishwasher" / "my laptop has to go in ...": where the request's
+    words start in ``out`` when what goes in is no part and the holder after "in" is the object or a part; else None."""
+    if tokens[i].text not in _GOING or i + 2 >= len(tokens) or tokens[i + 1].text not in ("in", "into", "inside"):
+        return None
+    holder = [t.text for t in tokens[i + 2:i + 6]]
+    if not any((w in OBJECT_NOUNS and w not in PLACES) or names_kind(w) for w in holder):
+        return None
+    start = len(out)
+    while start > 0 and not out[start - 1].is_punct and out[start - 1].text not in ("and", "so", "then", "but"):
+        start -= 1
+    said = [t.text for t in out[start:]]
+    if not said or any(names_part(said, n) or w in OBJECT_NOUNS for n, w in enumerate(said)):
+        return None  # "the tray needs to go in the oven", "the laptop has to go in my bag": a part or the object itself
+    return start
+
+
+_CARRIERS = frozenset({"bag", "backpack", "rucksack", "case", "sleeve", "briefcase", "car", "boot", "trunk", "locker"})
+"""Where a person stows the whole object ("the laptop has to go in my bag"): it is folded shut for it."""
+
+
+def packed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, str, int] | None:
+    """At "go"/"put"/"pack" of "the laptop has to go in my bag" / "put the laptop in my backpack", when the object itself is
+    stowed: (where the request starts in ``out``, the object's name, the index after the carrier); else None."""
+    verb = tokens[i].text
+    if verb in _GOING:
+        k, start = i + 1, len(out)
+        while start > 0 and not out[start - 1].is_punct and out[start - 1].text not in ("and", "so", "then", "but"):
+            start -= 1
+        named = [t.text for t in out[start:]]
+    elif verb in ("put", "pack", "slip", "stow", "stick", "shove"):
+        k = next((n for n in range(i + 1, min(len(tokens), i + 6)) if tokens[n].text in _INTO), len(tokens))
+        start, named = -1, [t.text for t in tokens[i + 1:k]]
+    else:
+        return None
+    name = next((w for w in named if w in OBJECT_NOUNS and w not in PLACES), None)
+    if k >= len(tokens) or tokens[k].text not in _INTO or name is None:
+        return None
+    carrier = [t.text for t in tokens[k + 1:k + 3]]
+    if carrier[:1] != [] and carrier[0] in ("my", "a", "the", "his", "her", "our", "your", "its") and carrier[1:2] and carrier[1] in _CARRIERS:
+        return (len(out) if start < 0 else start), name, k + 3
+    return None

@@ -22,7 +22,17 @@ from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import ANGLE_UNITS, CLOSED_AGAINST, LENGTH_UNITS, OBJECT_NOUNS, SIZES, SPATIAL
 from app.engine.offline.reading.framing import scan, until_break
-from app.engine.offline.reading.holders import COMPARTMENTS, SIDE_OF, accessed, heated, inside_end, names_kind, stowed
+from app.engine.offline.reading.holders import (
+    COMPARTMENTS,
+    SIDE_OF,
+    accessed,
+    going_in,
+    heated,
+    inside_end,
+    names_kind,
+    packed,
+    stowed,
+)
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import motion_verb
 from app.engine.offline.reading.token import Token
@@ -296,6 +306,18 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
         out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
         return end
+    if (stowing := packed(tokens, i, out)) is not None:
+        start, name, end = stowing
+        said = " ".join(w.text.replace("_", " ") for w in (*out[start:], *tokens[i:end]))
+        del out[start:]
+        out += [Token("close", "close", t.start, tokens[end - 1].end, corrected_from=said), Token("the", "the", t.start, t.start),
+                Token(name, name, t.start, t.start)]
+        return end  # "the laptop has to go in my bag": folded shut for it
+    if (start := going_in(tokens, i, out)) is not None:
+        said = " ".join(w.text.replace("_", " ") for w in (*out[start:], t, tokens[i + 1]))
+        del out[start:]
+        out.append(Token("open", "open", t.start, tokens[i + 1].end, corrected_from=said))  # "plates that need to go in the dishwasher"
+        return i + 2
     if (warmed := heated(tokens, i)) is not None:
         begin, end = warmed
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:begin])
