@@ -82,6 +82,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         builder.notes.append(coupled)
     if sense is VerbSense.LOCK:
         _shut_before_fastening(builder, act, controls + effects)
+    if sense in (VerbSense.CLOSE, VerbSense.LOWER) and not controls:
+        controls = _let_go_first(builder, effects)
     _prerequisites(builder, act, effects + [m for m in controls if m.role == "direct"])
     controls = _releases(builder, act, sense, controls, effects)
     if sense is VerbSense.RELEASE:
@@ -327,6 +329,18 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
             out.append(replace(move, release="self_return"))
         else:
             out.append(replace(move, release="stays"))
+    return out
+
+
+def _let_go_first(builder: Builder, effects: list[Move]) -> list[Move]:
+    """"(pedal held) ... then let the lid close": the control holding it open is let go, and the lid falls with it."""
+    out = []
+    for move in effects:
+        holder = builder.tracker.held.get(move.part.joint)
+        part = next((p for p in builder.parts if p.joint == holder), None)
+        if part is not None and all(m.part.joint != holder for m in out):
+            out.append(Move(part, "control", Goal(state="rest"), words=""))
+            builder.notes.append(f"let go of {part.link} ({part.joint}): it held {move.part.link} open")
     return out
 
 

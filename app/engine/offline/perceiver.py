@@ -30,6 +30,7 @@ from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import build_acts
 from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
+from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release
 from app.engine.offline.tracker import resolve_steps
@@ -136,6 +137,10 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     builder.notes.append(f"ignored the purpose '{act.goal.text}': {str(exc).split('. Movable parts')[0]}")
                     builder.add(replace(act, goal=act.means, means=None))
                     continue
+                if len(acts) > 1 and not exc.candidates and put_in_only(act.goal.text.split(), act.goal.verb, all(
+                        m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
+                    builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
+                    continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
                 if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
                     raise  # a clause that names parts but not which one is never skipped
                 skipped.append(exc)

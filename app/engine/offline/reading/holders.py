@@ -178,3 +178,8 @@ def packed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, str, int
     if carrier[:1] != [] and carrier[0] in ("my", "a", "the", "his", "her", "our", "your", "its") and carrier[1:2] and carrier[1] in _CARRIERS:
         return (len(out) if start < 0 else start), name, k + 3
     return None
+
+
+def put_in_only(words: list[str], verb: str | None, unknown_things: bool) -> bool:
+    """"drop the banana peel in", "toss the wrapper inside" after the bin was opened: a thing put in, no part named."""
+    return verb in _PUTTING and unknown_things and bool(words) and words[-1] in ("in", "inside", "there", "in_there", "here")
