@@ -204,11 +204,15 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if merged is not None:
             acts[-1] = merged  # "drop the handle so it lies flat along the back side", "swing it back so it sits flush"
             continue
-        place = place_of(frame) if acts and not acts[-1].condition and unknown_things(acts[-1].goal) else None
+        opened_object = bool(acts) and acts[-1].goal.sense is VerbSense.OPEN and bool(acts[-1].goal.themes) and all(m.is_object for m in acts[-1].goal.themes)
+        place = place_of(frame) if acts and not acts[-1].condition and (unknown_things(acts[-1].goal) or opened_object) else None
+        if place is not None and opened_object and (place.kind is None or info(place.kind).hinged):
+            place = None  # "get the roast out of the oven, it's on the lowest rack": the rack; a door is no place a thing sits
         if place is not None:
             things = ", ".join(m.words or m.head for m in acts[-1].goal.themes)
-            acts[-1] = replace(acts[-1], goal=open_holder(acts[-1].goal, place),  # "I need the ketchup, which lives in the left door"
-                               note=f"'{things}' is no part: opened {place.words or place.head}, where it is kept")
+            note = f"'{frame.text}': opened {place.words or place.head}, where it is kept" if opened_object else (
+                f"'{things}' is no part: opened {place.words or place.head}, where it is kept")
+            acts[-1] = replace(acts[-1], goal=open_holder(acts[-1].goal, place), note=note)  # "I need the ketchup, which lives in the left door"
             continue
         revised = (_corrected(acts[-1], frame) or _recast(acts[-1], frame)) if acts and frame.correction else None
         if revised is not None:

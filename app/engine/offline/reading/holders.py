@@ -183,3 +183,30 @@ def packed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, str, int
 def put_in_only(words: list[str], verb: str | None, unknown_things: bool) -> bool:
     """"drop the banana peel in", "toss the wrapper inside" after the bin was opened: a thing put in, no part named."""
     return verb in _PUTTING and unknown_things and bool(words) and words[-1] in ("in", "inside", "there", "in_there", "here")
+
+
+_INSIDE_NOUNS = frozenset({"stir", "look", "peek", "peep", "glance", "gander", "check", "clean", "wipe", "taste", "baste", "sniff"})
+_QUICK = frozenset({"quick", "good", "little", "small", "brief", "proper", "final", "last", "gentle"})
+
+
+def looked_inside(tokens: list[Token], i: int) -> int | None:
+    """At "give"/"take"/"have" of "give the soup a stir", "take a quick look (inside)", "have a peek in there": the index after
+    the request (an act inside the object: what holds it is opened), when the words name no part; else None."""
+    if tokens[i].text not in ("give", "take", "have", "grab", "sneak") or (i and tokens[i - 1].text in ("the", "a", "to_be")):
+        return None
+    k = next((n for n in range(i + 1, min(len(tokens), i + 7)) if tokens[n].text in ("a", "an")), None)
+    if k is None or any(names_kind(t.text) for t in tokens[i + 1:k]) or (k > i + 1 and tokens[i].text != "give"):
+        return None  # "give the knob a turn": a part; "take the tray a ..." no
+    k += 1 + (k + 1 < len(tokens) and tokens[k + 1].text in _QUICK)
+    if k >= len(tokens) or tokens[k].text not in _INSIDE_NOUNS:
+        return None
+    end = k + 1
+    if end < len(tokens) and tokens[end].text in ("at", "on"):  # "take a look at the roast"
+        end += 1
+        while end < len(tokens) and not tokens[end].is_punct and tokens[end].text not in ("and", "then", "and_then", "so", "before", "to", "in", "inside"):
+            if names_kind(tokens[end].text):
+                return None  # "take a look at the knob": a part
+            end += 1
+    while end < len(tokens) and tokens[end].text in ("inside", "in_there", "in", "there", "here"):
+        end += 1
+    return end

@@ -29,6 +29,7 @@ from app.engine.offline.reading.holders import (
     going_in,
     heated,
     inside_end,
+    looked_inside,
     names_kind,
     packed,
     stowed,
@@ -306,6 +307,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
         out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
         return end
+    if (end := looked_inside(tokens, i)) is not None:
+        out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
+                Token("it", "it", t.start, t.start)]
+        return end  # "give the soup a stir", "take a quick look": open it to reach in
     if (stowing := packed(tokens, i, out)) is not None:
         start, name, end = stowing
         said = " ".join(w.text.replace("_", " ") for w in (*out[start:], *tokens[i:end]))
