@@ -127,7 +127,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("release", S.RELEASE),
     VerbInfo("come", S.MOVE, _p(off=S.RELEASE, away=S.RELEASE, out=S.PULL_OUT, open=S.OPEN, down=S.LOWER, up=S.RAISE, back=S.RETURN,
                                   loose=S.OPEN, undone=S.OPEN)),
-    VerbInfo("let", S.RELEASE, _p(go=S.RELEASE, down=S.LOWER, up=S.RAISE, open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT,
+    VerbInfo("let", S.RELEASE, _p(go=S.RELEASE, down=S.LOWER, up=S.RAISE, open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, on=S.SWITCH_ON,
                                   back=S.RETURN)),
     VerbInfo("spring", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, up=S.RAISE)),
     VerbInfo("snap", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, shut=S.CLOSE, over=S.TOGGLE)),

@@ -348,3 +348,7 @@ COMPLAINED_STATES: Mapping[str, str] = MappingProxyType({
     "closed": "open", "shut": "open"})
 """A part's state told with no action ("the lower drawer is sticking out and I keep bumping my knee on it", "the toilet
 seat is up again"): the sense of the verb that puts it the other way, when nothing else in the prompt asks for a step."""
+LIGHTING_COMPLAINTS: Mapping[str, str] = MappingProxyType({"dark": "switch_on", "dim": "switch_on", "gloomy": "switch_on", "pitch-black": "switch_on",
+                                                           "bright": "switch_off", "glaring": "switch_off"})
+"""How the room is, told with no action ("it's way too dark in here"): the sense a light switch is worked in, on an
+object whose one switch is all it has to offer."""

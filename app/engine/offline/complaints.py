@@ -8,8 +8,10 @@ from dataclasses import replace
 from itertools import pairwise
 from typing import TYPE_CHECKING
 
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
-from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, MISHAP_VERBS, PERSONS
+from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, LIGHTING_COMPLAINTS, MISHAP_VERBS, PERSONS
+from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.stored import open_holder
 
 if TYPE_CHECKING:
@@ -108,4 +110,23 @@ def answer_stored(builder: Builder, acts: list[Act]) -> bool:
         return False
     thing = " ".join(words[:copula])
     builder.notes.append(f"no action was asked: '{thing}' is no part; opened {places[0].words or places[0].head}, where it is kept")
+    return True
+
+
+def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
+    """"It's way too dark in here" on a light switch, and nothing asked: the switch is turned on (off for "too bright"),
+    with a note; False when the words say nothing of the light or the object has not exactly one switch."""
+    said = [LIGHTING_COMPLAINTS[w] for a in acts for w in a.goal.text.split() if w in LIGHTING_COMPLAINTS]
+    switches = builder.refs.of_kind(PartKind.SWITCH)
+    if len(set(said)) != 1 or len(switches) != 1:
+        return False
+    sense = VerbSense(said[0])
+    act = acts[0]
+    mention = Mention(head="switch", kind=PartKind.SWITCH, words="the switch")
+    steps = len(builder.steps)
+    builder.add(replace(act, condition=False, goal=replace(act.goal, verb="turn", sense=sense, themes=(mention,), heading=False, stative=False,
+                                                                 particle=None, wish=False, quantities=replace(act.goal.quantities, amount=None))))
+    if len(builder.steps) == steps:
+        return False
+    builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to turn the light {'on' if sense is VerbSense.SWITCH_ON else 'off'}")
     return True

@@ -22,7 +22,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
-from app.engine.offline.complaints import answer_complaint, answer_stored, left_open, mishap
+from app.engine.offline.complaints import answer_complaint, answer_lighting, answer_stored, left_open, mishap
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -148,7 +148,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
-    if not builder.steps and answer_complaint(builder, acts):
+    if not builder.steps and (answer_complaint(builder, acts) or answer_lighting(builder, acts)):
         skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)
     if not builder.steps:
         if skipped:
