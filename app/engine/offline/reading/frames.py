@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 from app.engine.lexicon.kinds import PartKind
-from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, VerbSense
+from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, WISHED_SENSES, VerbSense
 from app.engine.lexicon.words import (
     ASPECT_VERBS,
     BRIEF_VERBS,
@@ -172,6 +172,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if word == "back" and i > 0 and (tokens[i - 1].text in ("the", "its", "toward", "towards") or (
                 tokens[i - 1].text == "all_the_way" and own is not None and (own.lemma == "open" or own.sense is VerbSense.RECLINE))):
             continue  # "toward the back", "along its back": a place; "open the lid all the way back": how far it opens
+        if word == "out_of" and (i + 1 == len(tokens) or tokens[i + 1].text in ("there", "here", "it", "them") or tokens[i + 1].is_punct):
+            return "out", i  # "get it out of there": out, from wherever it is
         if word in ("up", "down") and [t.text for t in tokens[i + 1:i + 3]] == ["and", "over"]:
             return "over", i + 2  # "swing the handle up and over": over is where it ends ("over the top of ...": the way it goes)
         if word in PARTICLES:
@@ -266,8 +268,6 @@ _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", 
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
-_STATE_SENSES = {"out": VerbSense.PULL_OUT, "open": VerbSense.OPEN, "opened": VerbSense.OPEN, "closed": VerbSense.CLOSE, "shut": VerbSense.CLOSE,
-                 "up": VerbSense.RAISE, "down": VerbSense.LOWER, "in": VerbSense.PUSH_IN}
 
 
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
@@ -345,7 +345,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
             themes = [m for m in themes if not m.start <= inner < m.end]  # "make some toast": toast is the action
     sense = _sense(verb, particle) if verb in VERBS or verb == GENERIC.lemma else None
     if wish and verb is None:
-        sense = next((_STATE_SENSES[t.text] for t in tokens if t.text in _STATE_SENSES), VerbSense.OPEN)
+        sense = next((WISHED_SENSES[t.text] for t in tokens if t.text in WISHED_SENSES), VerbSense.OPEN)
     if let and verb in CAUSATIVES:
         sense = VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)  # "let the door down", "let go"
     elif let and (sense is None or particle == "go"):
