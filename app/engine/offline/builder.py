@@ -255,6 +255,8 @@ class Builder:
                 return False  # "turn on the tap", "Tap: fully to the left": its lever
             return moves_object(frame, pronoun=False, after_part=False) and not (
                 frame.sense in (VerbSense.OPEN, VerbSense.CLOSE) and openable(self.parts))
+        if first.pronoun and starts(frame):
+            return False  # "the dishwasher is loaded - get it running": it runs, it does not move
         if first.pronoun:
             amount = frame.quantities.amount  # "close the laptop, then push it back 20 cm": the laptop, not its screen
             if self.refs.last_object or (self.object_named and amount is not None and amount.unit == "m" and frame.particle in ("back", "forward", "away")):

@@ -12,11 +12,14 @@ from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, LIGHTING_COMPLAINTS, MISHAP_VERBS, PERSONS
 from app.engine.offline.reading.mention import Mention
+from app.engine.offline.reading.mentions import parse_mentions
 from app.engine.offline.reading.stored import open_holder
+from app.engine.offline.reading.tokens import tokenize
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
     from app.engine.offline.reading.acts import Act
+    from app.engine.offline.reading.frames import Frame
 
 _COPULAS = frozenset({"is", "are", "was", "were", "been", "left", "keeps", "stays", "still", "always", "again", "now", "all", "the", "way",
                       "wide", "sticking", "hanging", "standing", "poking", "sitting", "partly", "half", "a", "bit", "little", "slightly"})
@@ -130,3 +133,31 @@ def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
         return False
     builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to turn the light {'on' if sense is VerbSense.SWITCH_ON else 'off'}")
     return True
+
+
+_FETCHED_FROM = frozenset({"from", "in", "inside", "out_of", "behind", "under", "on"})
+
+
+def wanted_things(builder: Builder, frames: list[Frame]) -> tuple[list[Frame], list[str]]:
+    """"I need the napkins from the drawer and then the plates behind the cabinet door": each wish for a thing that is no
+    part of the object, where a part holds it, becomes opening that part (with a note)."""
+    out, notes = [], []
+    wishing = False
+    for frame in frames:
+        wishing = frame.wish or (wishing and frame.verb is None)
+        thing = frame.themes[0] if wishing and frame.verb is None and frame.themes else None
+        if thing is None or thing.is_object or thing.pronoun or (thing.kind is not None and builder.refs.of_kind(thing.kind)):
+            out.append(frame)
+            continue
+        holder = thing.relation[1] if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind else None
+        if holder is None:
+            words = frame.text.split()
+            at = next((k for k in range(thing.end, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
+            tail = parse_mentions(tokenize(" ".join(words[at + 1:])), 0) if at is not None else []
+            holder = tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None
+        if holder is None:
+            out.append(frame)
+            continue
+        out.append(open_holder(replace(frame, wish=False), holder))
+        notes.append(f"'{thing.words or thing.head}' is no part: opened {holder.words or holder.head}, where it is kept")
+    return out, notes

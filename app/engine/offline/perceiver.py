@@ -22,7 +22,14 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
-from app.engine.offline.complaints import answer_complaint, answer_lighting, answer_stored, left_open, mishap
+from app.engine.offline.complaints import (
+    answer_complaint,
+    answer_lighting,
+    answer_stored,
+    left_open,
+    mishap,
+    wanted_things,
+)
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -95,8 +102,10 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     clauses = split_clauses(words)
     category = object_category(asset)
     frames = [whole_named(f, category) for f in read_frames(clauses)]
-    acts = build_acts(frames)
     builder = Builder(asset)
+    frames, fetched = wanted_things(builder, frames)  # "I need the napkins from the drawer": open it
+    builder.notes.extend(fetched)
+    acts = build_acts(frames)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
     if not builder.parts and not any(a.goal.verb for a in acts):

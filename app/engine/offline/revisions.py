@@ -113,6 +113,10 @@ def hold(builder: Builder, act: Act) -> bool:
         said = " / ".join(m.words or m.head for m in frame.themes)
         raise builder.refs.refuse(f"'{said}' is the part the step before moves ('{builder.steps[-1].op}'): it cannot move and stay "
                                   f"{' '.join(sorted(set(frame.text.split()) & _KEPT_STATES))} at once on {builder.asset.name}")
+    if frame.themes and all(m.is_object for m in frame.themes) and not (builder.steps and same_as_last(builder, frame)) and (
+            set(frame.text.split()) & {"open", "opened"}):
+        builder.add(replace(act, goal=replace(frame, verb="open", sense=VerbSense.OPEN)))  # "keep the bin open for a few seconds"
+        return True
     amount = frame.quantities.amount
     base = builder.steps[-1].base if builder.steps else None
     if pronoun and base is not None and builder.last_base_default and amount is not None and amount.unit == "m":
