@@ -352,3 +352,8 @@ LIGHTING_COMPLAINTS: Mapping[str, str] = MappingProxyType({"dark": "switch_on", 
                                                            "bright": "switch_off", "glaring": "switch_off"})
 """How the room is, told with no action ("it's way too dark in here"): the sense a light switch is worked in, on an
 object whose one switch is all it has to offer."""
+POPPING_VERBS = frozenset({"pop", "spring"})
+"""Verbs that say a shut part is let go by its release ("pop the microwave open"): its one release control is worked."""
+WHEEL_SHAPED = frozenset({"wheel", "spoked", "spoke", "spokes", "star", "capstan"})
+"""Words that describe a handle as a big spoked wheel ("the wheel handle", "the spoked handle"): among several turning
+controls, the clearly largest one."""

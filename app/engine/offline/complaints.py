@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, LIGHTING_COMPLAINTS, MISHAP_VERBS, PERSONS
+from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.mentions import parse_mentions
 from app.engine.offline.reading.stored import open_holder
@@ -161,3 +162,22 @@ def wanted_things(builder: Builder, frames: list[Frame]) -> tuple[list[Frame], l
         out.append(open_holder(replace(frame, wish=False), holder))
         notes.append(f"'{thing.words or thing.head}' is no part: opened {holder.words or holder.head}, where it is kept")
     return out, notes
+
+
+def told_codes(frames: list[Frame]) -> list[Frame]:
+    """"Lock the safe, the code is 1-5-9": the code told after a request that needs one is how it is done, as "lock the
+    safe by entering 1-5-9" says."""
+    out: list[Frame] = []
+    for frame in frames:
+        told = frame.codes and frame.verb is None and frame.stative and frame.themes and all(m.kind is PartKind.CODE for m in frame.themes)
+        told = told or (frame.codes and frame.link is Link.MEANS and bool(out) and out[-1].sense is VerbSense.OPEN)  # "open it by entering 1-5-9"
+        if told and out and out[-1].sense in (VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPEN) and out[-1].themes and all(
+                m.is_object for m in out[-1].themes):
+            entered = replace(frame, verb="enter", sense=VerbSense.PRESS, themes=(), stative=False, conjoined=False)
+            if out[-1].sense is VerbSense.LOCK:
+                out.append(replace(entered, link=Link.MEANS, marker="by"))  # shut first, then the code locks it
+            else:  # "open the safe, the code is 1-5-9": the code, then the door
+                out[-1:] = [replace(entered, link=out[-1].link, clause=out[-1].clause), replace(out[-1], link=Link.SEQUENCE, clause=frame.clause)]
+            continue
+        out.append(frame)
+    return out

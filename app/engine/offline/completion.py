@@ -21,6 +21,7 @@ from app.engine.contracts.steps import Goal, Why
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import HINGED_KINDS, PartKind, info
 from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.words import POPPING_VERBS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.goals import goal_for
 from app.engine.offline.moves import Move
@@ -53,7 +54,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     manual = builder.manual or act.goal.manual or (act.means is not None and act.means.manual)
     if not controls and opening and not manual and sense is not VerbSense.RECLINE:
         for move in opening:
-            for control in mech.controls_for(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned):
+            popped = act.goal.verb in POPPING_VERBS  # "pop the microwave open": by its release
+            for control in mech.controls_for(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned, popped=popped):
                 controls.append(Move(control, "control", goal_for(_NOTHING, VerbSense.PRESS, control, builder.tracker).goal, words=""))
                 notes[control.joint] = f"{_kind(control)} ({control.joint}) opens the {_kind(move.part)}"
                 builder.mentioned.add(control.joint)

@@ -65,10 +65,14 @@ def drives(control: Part, effect: Part, parts: list[Part], tracker: Tracker) -> 
     return tracker.obj.category in BUTTON_RELEASED_OBJECTS and len(hinged) == 1
 
 
-def controls_for(effect: Part, parts: list[Part], tracker: Tracker, excluded: set[str]) -> list[Part]:
+def controls_for(effect: Part, parts: list[Part], tracker: Tracker, excluded: set[str], *, popped: bool = False) -> list[Part]:
     """The control a user works to open ``effect`` (a pedal for a pedal bin's lid), if any: only a control whose effect
-    it holds (a release button or handle is one way among others to open a door, not implied)."""
-    found = [p for p in parts if p.joint not in excluded and p.joint != effect.joint and holds(p) and drives(p, effect, parts, tracker)]
+    it holds (a release button or handle is one way among others to open a door, not implied), or, when the words say
+    it pops open (``popped``: "pop the microwave open") and it is shut, the one control that releases it."""
+    shut = effect.geometry.closed_value is not None and abs(tracker.value(effect.joint) - effect.geometry.closed_value) < 1e-3
+    found = [p for p in parts if p.joint not in excluded and p.joint != effect.joint and (holds(p) or (popped and shut)) and drives(p, effect, parts, tracker)]
+    if popped and shut and len(found) > 1:
+        return []
     return found[:1]
 
 

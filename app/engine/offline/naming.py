@@ -4,9 +4,13 @@ from __future__ import annotations
 
 import re
 from functools import lru_cache
+from typing import TYPE_CHECKING
 
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import REGISTRY, PartKind, kind_of_label
+
+if TYPE_CHECKING:
+    from app.engine.offline.grounding import Part
 
 GENERIC = re.compile(r"^(?:link|joint|part|base|visual|geom|mesh|obj|original|node|l|j)?\d*$")
 
@@ -70,3 +74,17 @@ def describe_link(asset: ArticulatedAsset, link: str) -> str:
     kind = link_kind(asset, link)
     label = spec.semantics.label or (kind.value if kind is not None else None)
     return f"{label} ({link})" if label and label != link else link
+
+
+def did_you_mean(word: str, parts: list[Part], asset: ArticulatedAsset) -> str:
+    """" (did you mean 'door'?)" when a part name of this asset is a few letters away."""
+    from rapidfuzz.distance import Levenshtein
+
+    names = {p.kind.value for p in parts if p.kind is not None}
+    for part in parts:
+        names.update(w for w in link_words(asset, part.link, visuals=False) if len(w) >= 3 and not w.isdigit())
+    scored = sorted((Levenshtein.distance(word, n), n) for n in names if n != word)
+    if scored and scored[0][0] <= max(2, len(word) // 3):
+        close = [n for d, n in scored if d == scored[0][0]][:2]
+        return " (did you mean " + " or ".join(f"'{n}'" for n in close) + "?)"
+    return ""

@@ -28,6 +28,7 @@ from app.engine.offline.complaints import (
     answer_stored,
     left_open,
     mishap,
+    told_codes,
     wanted_things,
 )
 from app.engine.offline.conditions import set_topic
@@ -103,7 +104,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     category = object_category(asset)
     frames = [whole_named(f, category) for f in read_frames(clauses)]
     builder = Builder(asset)
-    frames, fetched = wanted_things(builder, frames)  # "I need the napkins from the drawer": open it
+    frames, fetched = wanted_things(builder, told_codes(frames))  # "I need the napkins from the drawer": open it
     builder.notes.extend(fetched)
     acts = build_acts(frames)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])

@@ -26,9 +26,9 @@ from app.engine.offline.grounding import (
     reading_order,
 )
 from app.engine.offline.lone_side import lone_side_refusal
-from app.engine.offline.naming import link_words
+from app.engine.offline.naming import did_you_mean
 from app.engine.offline.reading.mentions import Mention
-from app.engine.offline.tiebreak import carried_alike, tie_break
+from app.engine.offline.tiebreak import carried_alike, tie_break, wheel_shaped
 
 EXTREME_GAP_M = 0.01
 """A part at least this much further toward the named side than the next one is "the bottom one"."""
@@ -120,6 +120,9 @@ class Referents:
         refusal = lone_side_refusal(mention, kind, candidates, said, self.obj, self.parts, self.asset)
         if refusal is not None:
             raise self.refuse(refusal, candidates)
+        if (wheel := wheel_shaped(mention, candidates)) is not None:
+            mention = replace(mention, size="large")  # "turn the wheel handle" among a wheel and a small dial: the wheel
+            notes.append(wheel)
         if not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
             mention = replace(mention, region=self.scene)  # under "top oven:", "the door" is the top oven's
             candidates = narrow(replace(mention, sides=self.scene), candidates, self.asset, self.obj, [], set())[0] or candidates
@@ -217,7 +220,7 @@ class Referents:
         if not found.parts:
             if mention.kind is not None and info(mention.kind).control and self.of_kind(mention.kind) == []:
                 raise self.refuse(f"the prompt mentions a {label}, but {self.asset.name} has no movable {label}")
-            hint = self._did_you_mean(mention.head)
+            hint = did_you_mean(mention.head, self.parts, self.asset)
             raise self.refuse(f"the prompt mentions '{mention.words or mention.head}', but {self.asset.name} has no such movable part{hint}")
         return list(found.parts), list(found.notes)
 
@@ -342,19 +345,6 @@ class Referents:
         if len(values) > 1 and values[0][0] - values[1][0] > EXTREME_GAP_M:
             return values[0][2]
         return None
-
-    def _did_you_mean(self, word: str) -> str:
-        """" (did you mean 'door'?)" when a part name of this asset is a few letters away."""
-        from rapidfuzz.distance import Levenshtein
-
-        names = {p.kind.value for p in self.parts if p.kind is not None}
-        for part in self.parts:
-            names.update(w for w in link_words(self.asset, part.link, visuals=False) if len(w) >= 3 and not w.isdigit())
-        scored = sorted((Levenshtein.distance(word, n), n) for n in names if n != word)
-        if scored and scored[0][0] <= max(2, len(word) // 3):
-            close = [n for d, n in scored if d == scored[0][0]][:2]
-            return " (did you mean " + " or ".join(f"'{n}'" for n in close) + "?)"
-        return ""
 
     def pronoun(self, *, release: bool = False, plural: bool = False, shuts: bool = False) -> list[Part]:
         """What "it" / "them" refers to now ([] when nothing was named yet); "them" after a group was worked one by

@@ -5,7 +5,7 @@ from __future__ import annotations
 
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.kinds import PartKind, info
-from app.engine.lexicon.words import GENERIC_PART_NOUNS
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, WHEEL_SHAPED
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import Part, by_name, position, similar
 from app.engine.offline.reading.mentions import Mention
@@ -41,3 +41,12 @@ def carried_alike(mention: Mention, kept: list[Part], candidates: list[Part], as
         return ()
     return (f"'{mention.words or mention.head}' may mean {kept[0].link} ({kept[0].joint}) or {carriers[-1].link} ({carriers[-1].joint}), "
             f"which carries it: took {kept[0].link}; name the part to choose",)
+
+
+def wheel_shaped(mention: Mention, candidates: list[Part]) -> str | None:
+    """"the wheel handle", "the spoked handle" among several turning controls: the note for taking the clearly largest
+    (1.3 times the next), else None."""
+    if len(candidates) < 2 or mention.size is not None or not WHEEL_SHAPED & set(mention.words.split() + mention.head.split()):
+        return None
+    sizes = sorted((p.geometry.size for p in candidates), reverse=True)
+    return f"read '{mention.words or mention.head}' as the largest of {len(candidates)} similar parts" if sizes[0] >= 1.3 * sizes[1] else None
