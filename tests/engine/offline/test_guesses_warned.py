@@ -86,3 +86,18 @@ def test_a_purpose_naming_a_kind_the_asset_lacks_moves_nothing_else() -> None:
 def test_a_tilt_of_the_whole_object_among_other_steps_is_said() -> None:
     notes = _notes("trash_can_102155", "tilt the bin back and wheel it backwards 40 cm")
     assert any("tilting the whole trash_can_102155 is not animated" in n for n in notes), notes
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("extra/box_100214", "someone left the box lid open again"),
+                                              ("extra/box_100214", "the lid is open and I keep banging my elbow on it"),
+                                              ("storage_19179", "My keys are in the top drawer."),
+                                              ("switch_100952", "It's way too dark in here.")])
+def test_an_action_read_from_a_complaint_or_a_place_is_said(name: str, prompt: str) -> None:
+    """Nothing was asked: what the agent did instead (shut the part complained of, opened the one a thing is in, turned
+    the light on) is a guess, and the note says so."""
+    assert any(n.startswith("no action was asked") for n in _notes(name, prompt)), _notes(name, prompt)
+
+
+def test_a_person_running_into_a_part_is_no_step() -> None:
+    notes = _notes("extra/box_100214", "the lid is open and I keep banging my elbow on it")
+    assert any("it is about what happens to a person" in n for n in notes), notes

@@ -59,6 +59,38 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 41 (state-dependent and coupled cases, prompts half indirect, on variant dev assets) ---
+    R("extra/box_100214", "someone left the box lid open again", joints={"joint_0": E(end=-1.6755)}),  # a complaint: shut it
+    R("extra/box_100214", "the lid is open and I keep banging my elbow on it", joints={"joint_0": E(end=-1.6755)}),
+    R("storage_19179", "My keys are in the top drawer.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("microwave_7119", "Heat up my leftovers in the microwave.",  # in, shut, run (no control: its turntable turns)
+      joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
+    R("washing_machine_103508", "Load my laundry, then turn the big dial a quarter turn clockwise to start the wash.",
+      joints={"joint_0": E(end="lower"), "joint_1": E(abs_end=PI / 2)}, order=(("joint_0", "joint_1"),)),
+    R("dishwasher_11700", "I've got a stack of dirty plates that need to go in the dishwasher.", joints={"joint_0": E(end="upper")}),
+    R("laptop_10248", "I'm heading out and the laptop has to go in my bag.", joints={"joint_1": E(end="lower")}),
+    R("extra/box_100214", "Fasten both clasps on the box.", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363),
+                                                                     "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),
+    R("trash_can_102181", "Open the bin without using my hands, drop the banana peel in, then let the lid fall shut.",
+      joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(peak="upper", end=0.0)}),  # the pedal is let go too
+    R("kitchen_pot_100038", "I want to give the soup a stir, then cover it again.", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("switch_100952", "It's way too dark in here.", joints={"joint_0": E(moves=True)}),
+    R("dishwasher_12553", "The dishwasher is loaded — get it running.", joints={"joint_1": E(peak=0.052, end=0.0)}),  # not moved
+    R("trash_can_102181", "Keep the bin open for a few seconds while I scrape my plate into it.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("storage_23472", "I need the napkins from the drawer and then the plates behind the cabinet door — drawer first.",
+      joints={"joint_1": E(end="upper"), "joint_0": E(end="upper")}, order=(("joint_1", "joint_0"),)),
+    R("extra/microwave_7128", "Pop the microwave open so I can put my mug in.",  # its release, then the door
+      joints={"joint_1": E(peak=0.012), "joint_0": E(end="upper")}),
+    R("safe_101593", "Turn the wheel handle and pull the safe door open.", joints={"joint_1": E(moves=True), "joint_2": E(still=True),
+                                                                                  "joint_0": E(end="upper")}),
+    R("safe_101564", "open the safe, the code is 1-5-9.", joints={"joint_0": E(peak=0.004), "joint_4": E(peak=0.004),
+                                                                  "joint_8": E(peak=0.004), "joint_13": E(end="upper")},
+      order=(("joint_8", "joint_13"),)),
+    R("extra/oven_7179", "The casserole is in the bottom oven — open it up.", joints={"joint_3": E(end="upper"), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "Open the top oven door, then slide out the rack inside it.", joints={"joint_4": E(end="upper"),
+                                                                                              "joint_0": E(end=0.528)}),
+    R("toaster_103477", "Turn the toaster's browning knob a quarter turn clockwise.", joints={"joint_0": E(abs_end=PI / 2)}, base=None),
     # --- blind round 40 (cases and prompts, a third of the prompts indirect, on variant dev assets) ---
     R("extra/box_100214", "lock up the jewelry box with both clasps", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363),
                                                                             "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),
@@ -1284,3 +1316,8 @@ def test_slowly_takes_longer_than_quickly() -> None:
     plain = _duration("examples/toy_car", "push the toy car forward 40 cm")
     fast = _duration("examples/toy_car", "push the toy car forward 40 cm quickly")
     assert slow > plain >= fast
+
+
+def test_held_means_holds() -> None:
+    """ "press and hold the button for three seconds to reset it": the hold is kept though a purpose follows."""
+    assert _duration("dishwasher_12553", "Press and hold the button for three seconds to reset the dishwasher, then let go.") >= 3.0
