@@ -83,6 +83,7 @@ def answer_complaint(builder: Builder, acts: list[Act]) -> bool:
     if len(builder.steps) == steps:
         return False
     builder.turned.add(act.goal.clause)
+    _superseded(builder, act.goal.text)
     builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to {verb} it ({state} is taken as the trouble)")
     return True
 
@@ -132,6 +133,7 @@ def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
                                                                  particle=None, wish=False, quantities=replace(act.goal.quantities, amount=None))))
     if len(builder.steps) == steps:
         return False
+    _superseded(builder, act.goal.text)
     builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to turn the light {'on' if sense is VerbSense.SWITCH_ON else 'off'}")
     return True
 
@@ -181,3 +183,8 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
             continue
         out.append(frame)
     return out
+
+
+def _superseded(builder: Builder, text: str) -> None:
+    """The earlier notes on a clause now read as a complaint ("ignored '...'", "read '...' as a summary") no longer hold."""
+    builder.notes[:] = [n for n in builder.notes if not n.startswith((f"ignored '{text}'", f"read '{text}' as a summary"))]
