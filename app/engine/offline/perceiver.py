@@ -22,15 +22,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
-from app.engine.offline.complaints import (
-    answer_complaint,
-    answer_lighting,
-    answer_stored,
-    left_open,
-    mishap,
-    told_codes,
-    wanted_things,
-)
+from app.engine.offline.complaints import answer_complaint, answer_lighting, left_open, mishap
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -41,6 +33,7 @@ from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release
+from app.engine.offline.told import answer_stored, told_codes, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.whole_object import whole_named
 
