@@ -105,7 +105,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("throw", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE), motion="hinge"),
     VerbInfo("prop", S.OPEN, _p(open=S.OPEN, up=S.RAISE)),
     VerbInfo("flop", S.LOWER, _p(down=S.LOWER, open=S.OPEN, back=S.OPEN, over=S.LOWER), motion="hinge"),
-    VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE)),
+    VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE, on=S.CLOSE, into=S.PUSH_IN, **{"in": S.PUSH_IN})),
     # press / release
     VerbInfo("press", S.PRESS, _p(down=S.PRESS, **{"in": S.PRESS}, open=S.OPEN), displaces=False),
     VerbInfo("depress", S.PRESS),
@@ -293,3 +293,13 @@ VERBLESS_SENSES: Mapping[str, VerbSense] = MappingProxyType({
 """What a clause with no verb asks by its particle ("lid up to 90 deg", "screen down until it's shut")."""
 WISHED_SENSES: Mapping[str, VerbSense] = MappingProxyType({**VERBLESS_SENSES, "opened": VerbSense.OPEN, "in": VerbSense.PUSH_IN})
 """What a wish with no verb asks by the state it names ("I need the rack out", "the lid has to be shut")."""
+STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
+"""Particles that name where a part ends ("shove it back in", "swing it shut")."""
+
+
+def ends_after_back(info: VerbInfo | None, word: str) -> bool:
+    """After "back", ``word`` says where the part ends: "shove it back in" (a verb with no "back" of its own), "pop it
+    back on" (a verb whose "back" is springing back, and which has ``word`` as a particle); not "spring back up"."""
+    if info is None or "back" not in info.particles:
+        return word in STATE_PARTICLES
+    return info.particles["back"] is VerbSense.RELEASE and word in ("on", "in", "into") and word in info.particles

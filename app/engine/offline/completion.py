@@ -336,7 +336,7 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
 
 def _let_go_first(builder: Builder, effects: list[Move]) -> list[Move]:
     """"(pedal held) ... then let the lid close": the control holding it open is let go, and the lid falls with it."""
-    out = []
+    out: list[Move] = []
     for move in effects:
         holder = builder.tracker.held.get(move.part.joint)
         part = next((p for p in builder.parts if p.joint == holder), None)

@@ -9,7 +9,15 @@ from __future__ import annotations
 from dataclasses import dataclass, field, replace
 
 from app.engine.lexicon.kinds import PartKind
-from app.engine.lexicon.verbs import GENERIC, PARTICLES, VERBS, WISHED_SENSES, VerbSense
+from app.engine.lexicon.verbs import (
+    GENERIC,
+    PARTICLES,
+    STATE_PARTICLES,
+    VERBS,
+    WISHED_SENSES,
+    VerbSense,
+    ends_after_back,
+)
 from app.engine.lexicon.words import (
     ASPECT_VERBS,
     BRIEF_VERBS,
@@ -18,7 +26,6 @@ from app.engine.lexicon.words import (
     CENTRE_WORDS,
     DETERMINERS,
     INSTRUMENT,
-    LIGHT_VERBS,
     OBJECT_NOUNS,
     PLACES,
     POSTURES,
@@ -31,6 +38,7 @@ from app.engine.lexicon.words import (
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.first_one import first_of
+from app.engine.offline.reading.light_verbs import light_verb
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.part_words import kind_of_word
@@ -111,29 +119,6 @@ class Frame:
     """Said in words ("to where it was", "its original angle"), not only a "back" particle."""
 
 
-_MANNER_ADJECTIVES = frozenset({"quick", "gentle", "little", "good", "hard", "firm", "slight", "small", "short", "light", "brief", "sharp"})
-_LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
-                                 "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3", "degree", "degrees",
-                                 "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise", "counter-clockwise"})
-
-
-def _light_verb(tokens: list[Token]) -> list[Token]:
-    """"give the car a push" -> "push the car a push": the deverbal noun is the action (its amount stays:
-    "give the dial half a turn")."""
-    if not tokens or tokens[0].lemma not in LIGHT_VERBS:
-        return tokens
-    for i in range(2, len(tokens)):
-        if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS and i + 1 < len(tokens) and tokens[i + 1].text == "to":
-            return [tokens[i], *tokens[i + 2:]]  # "give a quick tap to the top key": tap the top key
-        if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
-            bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
-            if tokens[i - 1].text in _MANNER_ADJECTIVES and tokens[i - 2].text in ("a", "an"):
-                return [tokens[i], *tokens[1:i - 2], tokens[i - 1], *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal quick ("a quick tap" names
-                # no tap of a sink)
-            return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
-    return tokens
-
-
 _STATE_WORDS = frozenset({"open", "closed", "shut", "up", "down", "on", "off", "out", "in"})
 
 
@@ -167,7 +152,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
             continue  # "the third drawer down": how it is counted, not where it goes
         own = VERBS.get(tokens[verb].lemma)
-        if word == "back" and i + 1 < len(tokens) and tokens[i + 1].text in _STATE_PARTICLES and (own is None or "back" not in own.particles):
+        if word == "back" and i + 1 < len(tokens) and ends_after_back(own, tokens[i + 1].text):
             return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
         if word == "back" and i > 0 and (tokens[i - 1].text in ("the", "its", "toward", "towards") or (
                 tokens[i - 1].text == "all_the_way" and own is not None and (own.lemma == "open" or own.sense is VerbSense.RECLINE))):
@@ -202,7 +187,6 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
 _FURTHER = frozenset({"further", "farther", "more"})
 """Before "back": a direction ("5 cm further back"), not a return."""
 _SWITCHED = frozenset({"on", "off"})
-_STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
 
 
 def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
@@ -211,7 +195,7 @@ def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:
         return info.particles[particle]
-    if particle in _STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
+    if particle in STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
                                                           VerbSense.CLOSE, VerbSense.RECLINE):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
     return info.sense
@@ -273,7 +257,7 @@ _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "o
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:
     correction = bool(clause.tokens) and clause.tokens[0].text == "instead"
     wish, wished = wished_state(list(clause.tokens[1:] if correction else clause.tokens))
-    first, tokens = first_of(_light_verb(wished))
+    first, tokens = first_of(light_verb(wished))
     quantities = read_quantities(tokens, carried, correction=correction)
     verb_index = _find_verb(tokens)
     named_side = (clause.heading and len(tokens) > 1 and tokens[0].text in SPATIAL) or side_of_part(tokens)

@@ -307,10 +307,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
         out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
         return end
-    if (end := looked_inside(tokens, i)) is not None:
-        out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
+    if (looked := looked_inside(tokens, i)) is not None:
+        out += [Token("open", "open", t.start, tokens[looked - 1].end, corrected_from=" ".join(w.text for w in tokens[i:looked])),
                 Token("it", "it", t.start, t.start)]
-        return end  # "give the soup a stir", "take a quick look": open it to reach in
+        return looked  # "give the soup a stir", "take a quick look": open it to reach in
     if (stowing := packed(tokens, i, out)) is not None:
         start, name, end = stowing
         said = " ".join(w.text.replace("_", " ") for w in (*out[start:], *tokens[i:end]))
@@ -318,9 +318,9 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out += [Token("close", "close", t.start, tokens[end - 1].end, corrected_from=said), Token("the", "the", t.start, t.start),
                 Token(name, name, t.start, t.start)]
         return end  # "the laptop has to go in my bag": folded shut for it
-    if (start := going_in(tokens, i, out)) is not None:
-        said = " ".join(w.text.replace("_", " ") for w in (*out[start:], t, tokens[i + 1]))
-        del out[start:]
+    if (subject := going_in(tokens, i, out)) is not None:
+        said = " ".join(w.text.replace("_", " ") for w in (*out[subject:], t, tokens[i + 1]))
+        del out[subject:]
         out.append(Token("open", "open", t.start, tokens[i + 1].end, corrected_from=said))  # "plates that need to go in the dishwasher"
         return i + 2
     if (warmed := heated(tokens, i)) is not None:
