@@ -53,6 +53,9 @@ class KindInfo:
     """PartNet-Mobility ``semantics.txt`` labels of this kind."""
     related: tuple[PartKind, ...] = ()
     """Kinds a mention may mean when the asset has none of this kind (a "lid" that is a door)."""
+    related_one: tuple[PartKind, ...] = ()
+    """Kinds one such part, named in the singular, may be when the asset has none ("turn the big wheel" on a safe: its
+    wheel handle; "spin the wheels" there is still refused)."""
     control: bool = False
     """A user operates it to cause something else (knobs, buttons, pedals, ...)."""
     returns: Return = "stays"
@@ -147,6 +150,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
         KindInfo(PartKind.SWITCH, ("switch", "toggle", "rocker", "toggle button", "toggle switch", "light switch"), labels=("switch", "toggle_button"),
                  related=(PartKind.BUTTON, PartKind.LEVER), control=True, press="into_face", actuation_s=0.3, affordances=("toggle",)),
         KindInfo(PartKind.WHEEL, ("wheel", "caster", "castor", "tire", "tyre", "roller"), labels=("wheel",), rolls=True, spins=True,
+                 related_one=(PartKind.HANDLE, PartKind.KNOB),
                  affordances=("roll",)),
         KindInfo(PartKind.SPOUT, ("spout", "stem", "nozzle", "neck"), labels=("stem", "spout"), related=(PartKind.LEVER,),
                  affordances=("raise", "lower")),

@@ -357,3 +357,7 @@ POPPING_VERBS = frozenset({"pop", "spring"})
 WHEEL_SHAPED = frozenset({"wheel", "spoked", "spoke", "spokes", "star", "capstan"})
 """Words that describe a handle as a big spoked wheel ("the wheel handle", "the spoked handle"): among several turning
 controls, the clearly largest one."""
+EVERYDAY_WORDS = frozenset({"someone", "somebody", "clothes", "laundry", "dishes", "plates", "load", "loaded", "unload", "washing",
+                            "again", "please", "leftovers", "groceries", "food", "stuff", "things", "inside"})
+"""Everyday words of requests that are no part and no motion ("someone left ...", "load some clothes in"): typos are
+corrected to them, and never from them to a lexicon word ("clothse" is "clothes", not "close")."""

@@ -8,9 +8,10 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.errors import GroundingError
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
+from app.engine.offline.reading.holders import side_of_object
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -30,6 +31,11 @@ def condition(builder: Builder, act: Act) -> None:
     frame = act.goal
     if frame.heading:
         builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
+        said = VERBS.get(frame.text.split()[0]) if frame.text else None
+        if said is not None and said.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes):
+            from app.engine.offline.completion import shut_open_doors
+
+            shut_open_doors(builder, act, "locks")  # "Lock up the safe, give the dial a spin": shut, then the steps after
         builder.refs.scene = next((m.sides for m in frame.themes if m.is_object and m.sides), builder.refs.scene)  # "top oven:"
         if frame.themes and all(m.is_object for m in frame.themes):
             builder.refs.last_object = True  # "Chest: slide it 60 cm forward": the object named as a topic is "it"
@@ -113,6 +119,9 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     if frame.stative and frame.themes and frame.themes[0].kind is None:
         places += frame.themes[1:]  # "the ketchup is in the left-hand door, open that one": where the thing is
     places = [m for m in places if m.kind is not None]
+    side = side_of_object(frame.text.split())
+    if frame.stative and side is not None and not builder.refs.scene:
+        builder.refs.scene = (side,)  # "the milk is on the left side of the fridge, get that door open": the left one
     told = [m for m in frame.themes[:1] if m.kind is not None and not m.pronoun] if frame.verb is None or frame.stative else []
     if len(told) == 1:
         places = told  # "The clasps on this box are spring-loaded, so both of them snap shut", "The little knob on the far right is

@@ -167,11 +167,11 @@ def _fits(part: Part, kind: PartKind, up: np.ndarray) -> bool:
     return True
 
 
-def by_kind(parts: list[Part], kind: PartKind, up: np.ndarray) -> tuple[list[Part], How]:
+def by_kind(parts: list[Part], kind: PartKind, up: np.ndarray, *, singular: bool = False) -> tuple[list[Part], How]:
     exact = [p for p in parts if p.kind is kind]
     if exact:
         return exact, "kind"
-    for related in info(kind).related:
+    for related in (*info(kind).related, *(info(kind).related_one if singular else ())):
         found = [p for p in parts if p.kind is related and _fits(p, kind, up)]
         if found:
             return found, "related"

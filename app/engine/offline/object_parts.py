@@ -12,6 +12,7 @@ from app.engine.lexicon.words import OPERATED_OBJECTS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.grounding import Part, narrow, openable
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.holders import side_of_object
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import tie_break
 
@@ -80,7 +81,8 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
     group = [p for p in found if p.kind == first_kind]
     if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):
         return group
-    sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ()) or (
+    told = side_of_object(frame.text.split())  # "open the left side of the fridge"
+    sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ()) or ((told,) if told else ()) or (
         builder.refs.scene if any(m.pronoun for m in frame.themes) else ())  # "the casserole is in the bottom oven - open it up"
     if sides and len(group) > 1:  # "open the lower oven": the door on that side
         placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())

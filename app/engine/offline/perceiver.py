@@ -33,7 +33,7 @@ from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release
-from app.engine.offline.told import answer_stored, told_codes, wanted_things
+from app.engine.offline.told import answer_stored, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.whole_object import whole_named
 
@@ -97,7 +97,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     category = object_category(asset)
     frames = [whole_named(f, category) for f in read_frames(clauses)]
     builder = Builder(asset)
-    frames, fetched = wanted_things(builder, told_codes(frames))  # "I need the napkins from the drawer": open it
+    frames, fetched = wanted_things(builder, told_how(told_codes(frames)))  # "I need the napkins from the drawer": open it
     builder.notes.extend(fetched)
     acts = build_acts(frames)
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])

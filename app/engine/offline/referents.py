@@ -105,7 +105,7 @@ class Referents:
             if not candidates and generic and (mention.sides or mention.size or mention.relation is not None):
                 candidates, how = list(self.parts), "kind"  # "the topmost piece", "the left-hand section": any movable part, placed
         else:
-            candidates, how = by_kind(self.parts, kind, self.obj.up)
+            candidates, how = by_kind(self.parts, kind, self.obj.up, singular=not (mention.plural or mention.collective))
             if not candidates:
                 named = [p for p in by_name(self.parts, (mention.head,), self.asset) if p.kind is None or p.kind is kind]
                 candidates, how = (named, "name") if named else ([], "none")

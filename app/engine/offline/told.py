@@ -7,8 +7,9 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
-from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.words import FUNCTION_VERBS
 from app.engine.offline.complaints import mishap
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.mentions import parse_mentions
@@ -93,6 +94,25 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
                 out.append(replace(entered, link=Link.MEANS, marker="by"))  # shut first, then the code locks it
             else:  # "open the safe, the code is 1-5-9": the code, then the door
                 out[-1:] = [replace(entered, link=out[-1].link, clause=out[-1].clause), replace(out[-1], link=Link.SEQUENCE, clause=frame.clause)]
+            continue
+        out.append(frame)
+    return out
+
+
+_APPOSED = frozenset({",", "-", "—", ":", ";"})
+
+
+def told_how(frames: list[Frame]) -> list[Frame]:
+    """"Start the washer, turn the big dial a quarter turn clockwise", "Start a wash - turn the big dial ...": a request to
+    set the object going, then the control that does it: the control is worked, said as "turn the dial to start the
+    wash" (what is open is shut first)."""
+    out: list[Frame] = []
+    for frame in frames:
+        before = out[-1] if out else None
+        if before is not None and before.verb in FUNCTION_VERBS and frame.verb is not None and frame.marker in _APPOSED and frame.themes and all(
+                m.kind is not None and info(m.kind).control for m in frame.themes):
+            out[-1:] = [replace(frame, link=before.link, clause=before.clause, marker=before.marker),
+                        replace(before, link=Link.PURPOSE, clause=frame.clause, marker="to", themes=())]
             continue
         out.append(frame)
     return out

@@ -4,7 +4,7 @@ request is to open what holds them."""
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import OBJECT_NOUNS, PLACES
+from app.engine.lexicon.words import OBJECT_NOUNS, PLACES, SPATIAL, Side
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -76,7 +76,7 @@ def stowed(tokens: list[Token], i: int) -> int:
     k += k + 1 < len(tokens) and tokens[k].text == "out" and tokens[k + 1].text in ("of", "from")
     if k + 1 >= len(tokens) or tokens[k + 1].is_punct:
         return 0  # "drop the bread in — lever down": no holder named
-    holder = [t.text for t in tokens[k + 1:k + 5]]  # "off the very bottom rack"
+    holder = [t.text for t in tokens[k + 1:k + 7]]  # "off the very bottom rack", "in the left side of the fridge"
     if holder and holder[0] not in ("the", "this", "that", "its", "my"):
         holder = ["the", *holder]  # "inside microwave"
     if len(holder) < 2 or not any((w in OBJECT_NOUNS and w not in PLACES and tokens[k].text != "off") or kind_of_word(w) is not None
@@ -210,3 +210,12 @@ def looked_inside(tokens: list[Token], i: int) -> int | None:
     while end < len(tokens) and tokens[end].text in ("inside", "in_there", "in", "there", "here"):
         end += 1
     return end
+
+
+_SIDE_NOUNS = frozenset({"side", "half", "part", "end", "bit"})
+
+
+def side_of_object(words: list[str]) -> tuple[Side, bool] | None:
+    """"the left side of the fridge", "the bottom half of the oven": the one side named before "side/half ... of"."""
+    sides = [SPATIAL[w] for w, noun, of in zip(words, words[1:], words[2:], strict=False) if w in SPATIAL and noun in _SIDE_NOUNS and of == "of"]
+    return sides[0] if len(sides) == 1 else None

@@ -21,6 +21,7 @@ from app.engine.lexicon.words import (
     COLLECTIVE,
     DETERMINERS,
     DIRECTIONS,
+    EVERYDAY_WORDS,
     FILLERS,
     LENGTH_UNITS,
     MULTIWORD,
@@ -65,7 +66,7 @@ def domain_words() -> frozenset[str]:
                   TURN_UNITS, TIME_UNITS, STATES, NUMBER_WORDS):
         for key in table:
             words.update(str(key).replace("-", " ").split())
-    for group in (COLLECTIVE, DETERMINERS, PRONOUNS, OTHER_WORDS, NEGATIONS, FILLERS, OBJECT_NOUNS, MULTIWORD):
+    for group in (COLLECTIVE, DETERMINERS, PRONOUNS, OTHER_WORDS, NEGATIONS, FILLERS, OBJECT_NOUNS, MULTIWORD, EVERYDAY_WORDS):
         for phrase in group:
             words.update(phrase.replace("-", " ").split())
     return frozenset(w for w in words if w.isalpha())

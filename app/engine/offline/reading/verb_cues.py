@@ -61,7 +61,9 @@ def aside(tokens: list[Token]) -> bool:
         return True  # "(while) it brews": what the object does, not a part's motion
     remark = first in ("that's", "nothing") or (first in ("that", "this") and second in ("is", "was", "will"))  # "that's the whole anim"
     remark = remark or (1 < len(tokens) <= 4 and tokens[-1].text == "here")  # "Game dev here - ...": who is asking
-    return first in PERSONS or (first in ("they", "it", "that") and second in MODALS) or weather or remark
+    kept = first == "my" and any(t.text in ("is", "are") for t in tokens[1:4]) and any(t.text in ("in", "inside", "on", "behind") for t in tokens[2:6])
+    return (first in PERSONS and not kept) or (first in ("they", "it", "that") and second in MODALS) or weather or remark  # not "my socks
+    # are in the lower drawer": where a thing is kept
 
 
 def intransitive(tokens: list[Token], verb_index: int | None) -> bool:
