@@ -31,8 +31,8 @@ def condition(builder: Builder, act: Act) -> None:
     frame = act.goal
     if frame.heading:
         builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
-        said = VERBS.get(frame.text.split()[0]) if frame.text else None
-        if said is not None and said.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes):
+        summary = VERBS.get(frame.text.split()[0]) if frame.text else None
+        if summary is not None and summary.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes):
             from app.engine.offline.completion import shut_open_doors
 
             shut_open_doors(builder, act, "locks")  # "Lock up the safe, give the dial a spin": shut, then the steps after
