@@ -12,6 +12,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.holders import side_of_object
+from app.engine.offline.told import held_in
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -42,6 +43,8 @@ def condition(builder: Builder, act: Act) -> None:
             return
         if any(not m.is_object for m in frame.themes):
             frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))
+        if any(m.kind is not None for m in frame.themes):  # "The sodas are behind the left-hand fridge door - ...": the door
+            frame = replace(frame, themes=tuple(m for m in frame.themes if m.kind is not None or m.pronoun))
         try:
             builder.refs.remember(builder.ground(frame, VerbSense.OPEN, frame.themes)[0], [], topic=True)
         except GroundingError:
@@ -118,6 +121,8 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     places = [*frame.instruments, *(m.owner for m in frame.themes if m.kind is None and not m.is_object and m.owner is not None)]
     if frame.stative and frame.themes and frame.themes[0].kind is None:
         places += frame.themes[1:]  # "the ketchup is in the left-hand door, open that one": where the thing is
+        if not places and (holder := held_in(frame, frame.themes[0])) is not None and holder.kind is not None:
+            places = [holder]  # "the sodas are behind the left-hand fridge door - get one out for me"
     places = [m for m in places if m.kind is not None]
     side = side_of_object(frame.text.split())
     if frame.stative and side is not None and not builder.refs.scene:

@@ -100,10 +100,11 @@ class Referents:
         if kind is None:
             candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
             how: How = "name" if candidates else "none"
-            generic = mention.head in GENERIC_PART_NOUNS or (mention.anaphor and "one" in mention.words.split() and any(
-                m.head in GENERIC_PART_NOUNS and m.plural for m in self.said))  # "of the two pieces on top, the upper one"
+            generic = mention.head in GENERIC_PART_NOUNS or (mention.anaphor and "one" in mention.words.split() and (any(
+                m.head in GENERIC_PART_NOUNS and m.plural for m in self.said) or not self.last))  # "the upper one"; "open the top one"
             if not candidates and generic and (mention.sides or mention.size or mention.relation is not None):
                 candidates, how = list(self.parts), "kind"  # "the topmost piece", "the left-hand section": any movable part, placed
+                notes.extend([f"read '{mention.words}' among all the movable parts: nothing was named before"] if mention.anaphor else [])
         else:
             candidates, how = by_kind(self.parts, kind, self.obj.up, singular=not (mention.plural or mention.collective))
             if not candidates:

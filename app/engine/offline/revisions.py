@@ -193,7 +193,8 @@ def same_as_last(builder: Builder, frame: Frame) -> bool:
 def take_hold(builder: Builder, goal: Frame, sense: VerbSense) -> bool:
     """"grab the bucket by its handle", "take hold of the lid": nothing moves; what is held becomes what "it" means next
     (the whole object when the object is named). False when ``goal`` is no taking hold."""
-    if (sense is VerbSense.GRASP or (sense is VerbSense.HOLD and goal.instruments)) and goal.themes and goal.themes[0].is_object:
+    kept = bool(set(goal.text.split()) & _KEPT_STATES)  # "keep the bin open with the pedal": a state held, no grasp
+    if (sense is VerbSense.GRASP or (sense is VerbSense.HOLD and goal.instruments and not kept)) and goal.themes and goal.themes[0].is_object:
         from app.engine.offline.sequences import ready_handle  # sequences builds on this module
 
         readied = ready_handle(builder, Act(goal=goal))

@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
     from app.engine.offline.reading.acts import Act
     from app.engine.offline.reading.frames import Frame
+    from app.engine.offline.reading.mention import Mention
 
 
 _KEPT_PLACES = frozenset({"in", "inside", "on", "behind", "under", "at"})
@@ -52,6 +53,7 @@ def answer_stored(builder: Builder, acts: list[Act]) -> bool:
     return True
 
 
+_FETCHING = frozenset({"get", "take", "grab", "fetch", "bring", "pull"})
 _FETCHED_FROM = frozenset({"from", "in", "inside", "out_of", "behind", "under", "on"})
 
 
@@ -60,18 +62,21 @@ def wanted_things(builder: Builder, frames: list[Frame]) -> tuple[list[Frame], l
     part of the object, where a part holds it, becomes opening that part (with a note)."""
     out, notes = [], []
     wishing = False
+    kept: Mention | None = None  # where the things just told of are ("the sodas are behind the left-hand fridge door")
     for frame in frames:
+        first = frame.themes[0] if frame.themes else None
+        if frame.stative and first is not None and first.kind is None and not (first.is_object or first.pronoun):
+            kept = held_in(frame, first)
+        elif kept is not None and frame.verb in _FETCHING and first is not None and first.head in ("one", "some", "them") and first.kind is None:
+            out.append(open_holder(frame, kept))  # "... - get one out for me": one of them, out of where they are
+            notes.append(f"'{frame.text}': opened {kept.words or kept.head}, where they are kept")
+            continue
         wishing = frame.wish or (wishing and frame.verb is None)
         thing = frame.themes[0] if wishing and frame.verb is None and frame.themes else None
         if thing is None or thing.is_object or thing.pronoun or (thing.kind is not None and builder.refs.of_kind(thing.kind)):
             out.append(frame)
             continue
-        holder = thing.relation[1] if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind else None
-        if holder is None:
-            words = frame.text.split()
-            at = next((k for k in range(thing.end, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
-            tail = parse_mentions(tokenize(" ".join(words[at + 1:])), 0) if at is not None else []
-            holder = tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None
+        holder = held_in(frame, thing)
         if holder is None:
             out.append(frame)
             continue
@@ -116,3 +121,14 @@ def told_how(frames: list[Frame]) -> list[Frame]:
             continue
         out.append(frame)
     return out
+
+
+def held_in(frame: Frame, thing: Mention) -> Mention | None:
+    """The part (or the object) that holds ``thing`` in ``frame``: "the napkins from the drawer", "the sodas are behind
+    the left-hand fridge door", "the plates behind the cabinet door"; None when no such place is said."""
+    if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind:
+        return thing.relation[1]
+    words = frame.text.split()
+    at = next((k for k in range(thing.end, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
+    tail = parse_mentions(tokenize(" ".join(words[at + 1:])), 0) if at is not None else []
+    return tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None

@@ -114,8 +114,6 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
 
 _PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
 _STAYS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
-
-
 _CAUSING = frozenset({"make", "have", "help", "cause", "allow"})
 
 
@@ -124,6 +122,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     j = i
     while j < len(tokens) and (tokens[j].text in FILLERS or tokens[j].text in SPEEDS or tokens[j].text in SEQUENCE):
         j += 1
+    if j + 1 < len(tokens) and tokens[j].text in ("shut", "closed", "open") and tokens[j + 1].is_punct and any(t.text in ("is", "are", "was", "were") for t in tokens[max(0, i - 5):i]):
+        return False  # "the dishwasher is loaded and shut, start it": how it is, said twice
     if j < len(tokens) and (verb_at(tokens, j, strict=True) or tokens[j].text in CAUSATIVES or tokens[j].lemma in LIGHT_VERBS):
         return True
     if j + 1 < len(tokens) and tokens[j].text == "back" and tokens[j + 1].text in ("in", "shut", "closed", "down", "up", "again", "home", "to", "into"):

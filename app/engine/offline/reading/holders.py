@@ -37,8 +37,11 @@ def inside_end(tokens: list[Token], i: int) -> int:
     """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
     object, and nothing else said in the sentence), else 0."""
     end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+    if (clause := next((k for k in range(i, end) if tokens[k].is_punct), end)) < end and any(t.lemma in ("close", "shut") for t in tokens[clause:end]):
+        end = clause  # "peek at the roast in the oven, then close it up again": the look, then the shutting
     words = [t.text for t in tokens[i + 1:end]]
-    inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"])
+    inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"]) or (
+        words[-3:-1] == ["in", "the"] and words[-1] in OBJECT_NOUNS)  # "peek at the roast in the oven"
     if not inside or any(names_kind(w) for w in words):
         return 0
     return end

@@ -196,6 +196,9 @@ def _let_through(tokens: list[Token], i: int) -> int:
     if [t.text for t in tokens[end:end + 2]] in (["from", "the"], ["out_of", "the"], ["from", "its"]) and end + 2 < len(tokens) and (
             tokens[end + 2].text in OBJECT_NOUNS):
         end += 3  # "let a bit of steam escape from the pot"
+    elif [t.text for t in tokens[end:end + 2]] == ["through", "the"] and end + 2 < len(tokens) and (
+            tokens[end + 2].text in OBJECT_NOUNS or kind_of_word(tokens[end + 2].text) is not None):
+        end += 3  # "let some fresh air in through the window"
     end += end < len(tokens) and tokens[end].text in ("please", "pls", "plz")  # "let some fresh air in please"
     return end if end == len(tokens) or tokens[end].is_sentence_end else 0  # "let some steam out - crack the lid 3 cm": the how follows
 
@@ -298,7 +301,7 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
         out.append(replace(t, text="spoke", lemma="spoke"))  # "a big three-spoke wheel": a spoke wheel (a handle)
         return i + 1
-    if t.text in ("check", "look") and after[:1] and after[0] in ("on", "at", "in_on") and (end := inside_end(tokens, i)):
+    if t.text in ("check", "look", "peek", "peep", "glance") and after[:1] and after[0] in ("on", "at", "in_on") and (end := inside_end(tokens, i)):
         out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
                 Token("it", "it", t.start, t.start)]  # "let me check on the roast in there": open it to look inside
         return end
