@@ -291,7 +291,8 @@ VERBLESS_SENSES: Mapping[str, VerbSense] = MappingProxyType({
     "closed": VerbSense.CLOSE,
 })
 """What a clause with no verb asks by its particle ("lid up to 90 deg", "screen down until it's shut")."""
-WISHED_SENSES: Mapping[str, VerbSense] = MappingProxyType({**VERBLESS_SENSES, "opened": VerbSense.OPEN, "in": VerbSense.PUSH_IN})
+WISHED_SENSES: Mapping[str, VerbSense] = MappingProxyType({**VERBLESS_SENSES, "opened": VerbSense.OPEN, "in": VerbSense.PUSH_IN,
+                                                          "covered": VerbSense.CLOSE, "uncovered": VerbSense.OPEN})
 """What a wish with no verb asks by the state it names ("I need the rack out", "the lid has to be shut")."""
 STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
 """Particles that name where a part ends ("shove it back in", "swing it shut")."""

@@ -5,11 +5,13 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import DETERMINERS, WISHES
+from app.engine.lexicon.verbs import VERBS, WISHED_SENSES, VerbSense
+from app.engine.lexicon.words import DETERMINERS, STATES, WISHES
 from app.engine.offline.reading.mentions import kind_of_word
 from app.engine.offline.reading.token import Token
 
+_STATE_OF = {VerbSense.CLOSE: "closed", VerbSense.OPEN: "open", VerbSense.RAISE: "up", VerbSense.LOWER: "down", VerbSense.PULL_OUT: "out",
+             VerbSense.PUSH_IN: "in"}
 _WISH_LEADS = frozenset({"but", "so", "and", "ok", "okay", "for", "now", "right", "well", "anyway"})
 _WISH_ADVERBS = frozenset({"just", "really", "only", "also", "still", "actually"})
 
@@ -29,7 +31,10 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
         must = 3 if words[j:j + 3] in (["needs", "to", "be"], ["need", "to", "be"], ["has", "to", "be"], ["have", "to", "be"]) else (
             2 if words[j:j + 2] in (["should", "be"], ["must", "be"]) else 0)
         if must and words[k] in DETERMINERS and j + must < len(tokens) and tokens[j + must].text not in ("a", "an", "the"):
-            return True, tokens[k:j] + tokens[j + must:]  # "the oven door needs to be halfway down": the part and its wanted state
+            done = tokens[j + must]
+            if done.text in WISHED_SENSES and done.text not in STATES:  # "the pot needs to be covered": closed
+                done = replace(done, text=_STATE_OF[WISHED_SENSES[done.text]], lemma=_STATE_OF[WISHED_SENSES[done.text]])
+            return True, [*tokens[k:j], done, *tokens[j + must + 1:]]  # "the oven door needs to be halfway down": the part and its wanted state
     if len(words) >= 2 and words[-1] in ("needs", "has") and (words[k] in DETERMINERS or kind_of_word(words[-2]) is not None):
         return True, tokens[:-1]  # "drawer needs | to come out 8 inches": the part, then what it should do
     return False, tokens
