@@ -59,6 +59,28 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 42 (the same mix, written after round 41's fixes) ---
+    R("storage_19179", "My socks are in the lower drawer, pull it out for me.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "The milk is on the left side of the fridge, get that door open for me.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("washing_machine_103508", "Start a wash - turn the big dial a quarter turn clockwise.",  # the dial is how; the lid shut first
+      joints={"joint_0": E(end="lower"), "joint_1": E(abs_end=PI / 2)}, order=(("joint_0", "joint_1"),)),
+    R("safe_102387", "Lock up the safe, give the dial a spin.", joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(moves=True)},
+      order=(("joint_0", "joint_1"),)),
+    R("safe_101593", "turn the big wheel a quarter turn clockwise", joints={"joint_1": E(abs_end=PI / 2), "joint_2": E(still=True)}),
+    R("safe_101593", "spin the wheels", refuse=True),  # "wheels": the safe has none (one wheel said is its wheel handle)
+    R("dishwasher_12553", "The dishwasher is loaded and shut, start it.", joints={"joint_1": E(peak=0.052, end=0.0)}),
+    R("trash_can_102181", "Keep the bin open with the pedal for a few seconds while I scrape my plate.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
+    R("oven_7138", "Peek at the roast in the oven, then close it up again.", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("window_103135", "It's stuffy in here, let some fresh air in through the window.", joints={"joint_0": E(end="upper")}),
+    R("refrigerator_11178", "The sodas are behind the left-hand fridge door — get one out for me.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("storage_23472", "Open the top one.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("kitchen_pot_100038", "lift the lid off, then pop it back on", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("laptop_10101", "Shut the laptop, leave it closed for a second, then open it back up halfway.",
+      joints={"joint_1": E(end=(LAPTOP_10101_CLOSED + 1.0367) / 2)}),
+    R("kitchen_pot_100038", "the pot needs to be covered", joints={"joint_0": E(end="lower")}),
     # --- blind round 41 (state-dependent and coupled cases, prompts half indirect, on variant dev assets) ---
     R("extra/box_100214", "someone left the box lid open again", joints={"joint_0": E(end=-1.6755)}),  # a complaint: shut it
     R("extra/box_100214", "the lid is open and I keep banging my elbow on it", joints={"joint_0": E(end=-1.6755)}),
