@@ -195,7 +195,8 @@ def lock_object(builder: Builder, act: Act) -> bool:
     from app.engine.offline.completion import shut_open_doors
 
     goal = act.goal
-    if builder.frame_sense(goal) is not VerbSense.LOCK or not goal.themes or not all(m.is_object for m in goal.themes):
+    named = builder.object_named or builder.refs.last_object  # "shut the safe and lock it by keying in 1-5-9": "it" is the safe
+    if builder.frame_sense(goal) is not VerbSense.LOCK or not goal.themes or not all(m.is_object or (m.pronoun and named) for m in goal.themes):
         return False
     latches = [p for p in builder.parts if p.kind is not None and info(p.kind).latches_host]
     if act.means is None and not goal.instruments and not latches:
