@@ -15,7 +15,7 @@ _PUTTING = frozenset({"put", "place", "pop", "stick", "set", "load", "insert", "
 _FETCHING = frozenset({"get", "take", "fetch", "grab", "remove", "pull", "bring", "lift", "retrieve"})
 _INTO = frozenset({"in", "into", "inside"})
 _OUT_OF = frozenset({"out_of", "from", "out", "off"})
-_BROUGHT = frozenset({"a", "an", "some", "my", "our"})
+_BROUGHT = frozenset({"a", "an", "some", "my", "our", "this", "these"})
 """Before what is put in or taken out: a thing of the user's, not a part of the object ("the tray" may be a part)."""
 
 
