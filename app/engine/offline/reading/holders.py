@@ -80,6 +80,7 @@ def stowed(tokens: list[Token], i: int) -> int:
     if k + 1 >= len(tokens) or tokens[k + 1].is_punct:
         return 0  # "drop the bread in — lever down": no holder named
     holder = [t.text for t in tokens[k + 1:k + 7]]  # "off the very bottom rack", "in the left side of the fridge"
+    holder = holder[:next((n for n, w in enumerate(holder) if w in ("until", "till", "so", "and", "then", "while", "to", "it's")), len(holder))]
     if holder and holder[0] not in ("the", "this", "that", "its", "my"):
         holder = ["the", *holder]  # "inside microwave"
     if len(holder) < 2 or not any((w in OBJECT_NOUNS and w not in PLACES and tokens[k].text != "off") or kind_of_word(w) is not None
