@@ -81,6 +81,8 @@ ROWS: list[Row] = [
     R("laptop_10101", "Shut the laptop, leave it closed for a second, then open it back up halfway.",
       joints={"joint_1": E(end=(LAPTOP_10101_CLOSED + 1.0367) / 2)}),
     R("kitchen_pot_100038", "the pot needs to be covered", joints={"joint_0": E(end="lower")}),
+    R("refrigerator_11178", "Get the milk out - it's on the shelf inside the right door.", joints={"joint_1": E(end="upper"),
+                                                                                                  "joint_0": E(still=True)}),
     R("extra/storage_20279", "That drawer is poking out a few inches; shove it back in until it's flush with the cabinet.",
       joints={"joint_0": E(end=-0.188)}),  # "until ... the cabinet" names no holder
     # --- blind round 41 (state-dependent and coupled cases, prompts half indirect, on variant dev assets) ---
