@@ -328,7 +328,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
             particle, _ = _particle(tokens, inner, objects)
             themes = [m for m in themes if not m.start <= inner < m.end]  # "make some toast": toast is the action
     sense = _sense(verb, particle) if verb in VERBS or verb == GENERIC.lemma else None
-    if sense is VerbSense.RETURN and verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.OPEN and quantities.amount is not None and quantities.amount.unit == "fraction":
+    if sense is VerbSense.RETURN and verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.OPEN and quantities.amount is not None and quantities.amount.unit == "fraction" and quantities.amount.value < 1:
         sense = VerbSense.OPEN  # "then open it back up halfway": half of its range, not half of the way back
     if wish and verb is None:
         sense = next((WISHED_SENSES[t.text] for t in tokens if t.text in WISHED_SENSES), VerbSense.OPEN)
