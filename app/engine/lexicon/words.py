@@ -304,6 +304,8 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
                    "cannot", "can't", "can", "will", "would", "should", "must", "no",
                    "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "farther", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
+_ONLY_BODY = frozenset({"knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
+"""A person's body, hurt on the object ("I keep bumping my knee on it"): never a part (unlike "head", "arm", "foot")."""
 NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
@@ -314,9 +316,7 @@ NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", 
                         # the scene and the people (or robot) in it: they act on the object, they are no part of it
                         "montage", "sequence", "episode", "gag", "peek", "routine", "spec", "prop", "camera", "viewer", "audience",
                         "character", "actor", "person", "user", "operator", "gripper", "thumb", "finger", "fingers",
-                        "hands", "seal", "rotation", "clean",
-                        # a person's body, hurt on or used against the object ("I keep bumping my knee on it")
-                        "knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
+                        "hands", "seal", "rotation", "clean"}) | _ONLY_BODY
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
                           "to_the_middle", "to_the_centre", "to_the_center"})
@@ -338,8 +338,8 @@ OBJECT_TILTS = frozenset({"tilt", "tip", "lean", "rock"})
 MISHAP_VERBS = frozenset({"bump", "trip", "stumble", "stub", "snag", "whack", "smack", "graze", "bang", "knock", "hit", "catch", "hurt"})
 """What happens to a person who runs into a part ("I keep bumping my knee on it", "the kids trip over it"): with a body
 part said ("hit my head"), or one of the first five alone, a complaint about where the part is, never a motion."""
-BODY_WORDS = frozenset({"knee", "knees", "shin", "shins", "toe", "toes", "elbow", "elbows", "hip", "hips", "ankle", "ankles", "forehead",
-                        "thigh", "thighs", "head", "leg", "legs", "foot", "feet", "hand", "hands", "finger", "fingers", "arm", "arms"})
+BODY_WORDS = _ONLY_BODY | {f"{w}s" for w in _ONLY_BODY} | frozenset({"head", "leg", "legs", "foot", "feet", "hand", "hands", "finger",
+                                                                      "fingers", "arm", "arms"})
 BELONGING_KEYS = frozenset({"keys", "keyring", "key-ring"})
 """Keys a person owns ("my keys", "the car keys"): things kept somewhere, never the keys of a keypad."""
 COMPLAINED_STATES: Mapping[str, str] = MappingProxyType({

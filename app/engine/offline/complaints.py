@@ -74,9 +74,7 @@ def answer_complaint(builder: Builder, acts: list[Act]) -> bool:
     act, (sense, state) = told[0]
     verb = {VerbSense.CLOSE: "close", VerbSense.OPEN: "open", VerbSense.LOWER: "lower", VerbSense.RAISE: "raise",
             VerbSense.SWITCH_OFF: "turn off"}[sense]
-    steps = len(builder.steps)
-    builder.add(replace(act, condition=False, goal=replace(act.goal, verb=verb.split()[0], sense=sense, heading=False, stative=False)))
-    if len(builder.steps) == steps:
+    if not added(builder, replace(act, condition=False, goal=replace(act.goal, verb=verb.split()[0], sense=sense, heading=False, stative=False))):
         return False
     builder.turned.add(act.goal.clause)
     _superseded(builder, act.goal.text)
@@ -94,10 +92,9 @@ def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
     sense = VerbSense(said[0])
     act = acts[0]
     mention = Mention(head="switch", kind=PartKind.SWITCH, words="the switch")
-    steps = len(builder.steps)
-    builder.add(replace(act, condition=False, goal=replace(act.goal, verb="turn", sense=sense, themes=(mention,), heading=False, stative=False,
-                                                                 particle=None, wish=False, quantities=replace(act.goal.quantities, amount=None))))
-    if len(builder.steps) == steps:
+    if not added(builder, replace(act, condition=False, goal=replace(act.goal, verb="turn", sense=sense, themes=(mention,), heading=False,
+                                                                    stative=False, particle=None, wish=False,
+                                                                    quantities=replace(act.goal.quantities, amount=None)))):
         return False
     _superseded(builder, act.goal.text)
     builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to turn the light {'on' if sense is VerbSense.SWITCH_ON else 'off'}")
@@ -107,3 +104,10 @@ def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
 def _superseded(builder: Builder, text: str) -> None:
     """The earlier notes on a clause now read as a complaint ("ignored '...'", "read '...' as a summary") no longer hold."""
     builder.notes[:] = [n for n in builder.notes if not n.startswith((f"ignored '{text}'", f"read '{text}' as a summary"))]
+
+
+def added(builder: Builder, act: Act) -> bool:
+    """``act`` added to ``builder``; whether it made a step (a part already where it was asked moves nothing)."""
+    steps = len(builder.steps)
+    builder.add(act)
+    return len(builder.steps) > steps

@@ -104,7 +104,8 @@ class Referents:
                 m.head in GENERIC_PART_NOUNS and m.plural for m in self.said) or not self.last))  # "the upper one"; "open the top one"
             if not candidates and generic and (mention.sides or mention.size or mention.relation is not None):
                 candidates, how = list(self.parts), "kind"  # "the topmost piece", "the left-hand section": any movable part, placed
-                notes.extend([f"read '{mention.words}' among all the movable parts: nothing was named before"] if mention.anaphor else [])
+                if mention.anaphor:
+                    notes.append(f"read '{mention.words}' among all the movable parts: nothing was named before")
         else:
             candidates, how = by_kind(self.parts, kind, self.obj.up, singular=not (mention.plural or mention.collective))
             if not candidates:

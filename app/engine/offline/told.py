@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.verbs import VerbSense
 from app.engine.lexicon.words import FUNCTION_VERBS
-from app.engine.offline.complaints import mishap
+from app.engine.offline.complaints import added, mishap
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.mentions import parse_mentions
 from app.engine.offline.reading.stored import open_holder
@@ -44,9 +44,7 @@ def answer_stored(builder: Builder, acts: list[Act]) -> bool:
     places = [m for m in frame.themes if m.start > at and (m.kind is not None or m.is_object)]
     if len(places) != 1:
         return False
-    steps = len(builder.steps)
-    builder.add(replace(told[0], condition=False, goal=open_holder(replace(frame, heading=False, stative=False), places[0])))
-    if len(builder.steps) == steps:
+    if not added(builder, replace(told[0], condition=False, goal=open_holder(replace(frame, heading=False, stative=False), places[0]))):
         return False
     thing = " ".join(words[:copula])
     builder.notes.append(f"no action was asked: '{thing}' is no part; opened {places[0].words or places[0].head}, where it is kept")

@@ -148,9 +148,7 @@ def going_in(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     holder = [t.text for t in tokens[i + 2:i + 6]]
     if not any((w in OBJECT_NOUNS and w not in PLACES) or names_kind(w) for w in holder):
         return None
-    start = len(out)
-    while start > 0 and not out[start - 1].is_punct and out[start - 1].text not in ("and", "so", "then", "but"):
-        start -= 1
+    start = clause_start(out)
     said = [t.text for t in out[start:]]
     if not said or any(names_part(said, n) or w in OBJECT_NOUNS for n, w in enumerate(said)):
         return None  # "the tray needs to go in the oven", "the laptop has to go in my bag": a part or the object itself
@@ -166,9 +164,7 @@ def packed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, str, int
     stowed: (where the request starts in ``out``, the object's name, the index after the carrier); else None."""
     verb = tokens[i].text
     if verb in _GOING:
-        k, start = i + 1, len(out)
-        while start > 0 and not out[start - 1].is_punct and out[start - 1].text not in ("and", "so", "then", "but"):
-            start -= 1
+        k, start = i + 1, clause_start(out)
         named = [t.text for t in out[start:]]
     elif verb in ("put", "pack", "slip", "stow", "stick", "shove"):
         k = next((n for n in range(i + 1, min(len(tokens), i + 6)) if tokens[n].text in _INTO), len(tokens))
@@ -223,3 +219,11 @@ def side_of_object(words: list[str]) -> tuple[Side, bool] | None:
     """"the left side of the fridge", "the bottom half of the oven": the one side named before "side/half ... of"."""
     sides = [SPATIAL[w] for w, noun, of in zip(words, words[1:], words[2:], strict=False) if w in SPATIAL and noun in _SIDE_NOUNS and of == "of"]
     return sides[0] if len(sides) == 1 else None
+
+
+def clause_start(out: list[Token]) -> int:
+    """Where the clause being written into ``out`` starts: after its last punctuation or joining word."""
+    start = len(out)
+    while start > 0 and not out[start - 1].is_punct and out[start - 1].text not in ("and", "so", "then", "but"):
+        start -= 1
+    return start

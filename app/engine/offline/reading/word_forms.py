@@ -139,8 +139,8 @@ def _in_compartment(tokens: list[Token], i: int, out: list[Token]) -> tuple[int,
     while the >= 0 and out[the].text in SIDE_OF | {"middle"}:
         the -= 1  # "the upper rack in the bottom compartment"
     inside = 1 if words[0] in ("inside", "within") else 2 if words[:2] == ["in", "there"] else 0  # "the rack in there (all the way) out"
-    clause = out[max((n + 1 for n, t in enumerate(out) if t.is_punct), default=0):]
-    out_before = any(t.text in ("out", "remove", "withdraw") for t in clause[-6:])  # "slide out the rack inside it" (this clause's own)
+    clause = out[max((n + 1 for n, t in enumerate(out) if t.is_punct), default=0):][-6:]
+    out_before = any(t.text in ("out", "remove", "withdraw") for t in clause)  # "slide out the rack inside it" (this clause's own)
     if inside and out and names_kind(out[-1].text) and ("out" in words[inside:inside + 3] or out_before):
         first = next((k for k in range(len(out) - 1, max(-1, len(out) - 7), -1) if out[k].text == "the"), None)  # "the higher of the 2 racks"
         if first is not None:  # "open the door and slide the rack inside (all the way) out": the rack behind that door
