@@ -7,7 +7,7 @@ an asset whose category is not listed here is never second-guessed.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from types import MappingProxyType
 
 from app.engine.lexicon.kinds import PartKind
@@ -66,17 +66,23 @@ def names_other_object(noun: str, category: str | None, words: str = "") -> bool
     return family is not None and noun in NAMED_OBJECTS and noun not in family and not family & set(words.split())
 
 
-CARRIED: Mapping[str, tuple[frozenset[str], PartKind]] = MappingProxyType({
-    "toaster": (frozenset({"bread", "toast", "slice", "bagel", "waffle", "crumpet", "muffin", "pop-tart"}), PartKind.LEVER),
+CARRIED: Mapping[str, tuple[frozenset[str], tuple[PartKind, ...]]] = MappingProxyType({
+    "toaster": (frozenset({"bread", "toast", "slice", "bagel", "waffle", "crumpet", "muffin", "pop-tart"}), (PartKind.LEVER,)),
+    "faucet": (frozenset({"water"}), (PartKind.HANDLE, PartKind.LEVER, PartKind.SWITCH, PartKind.KNOB)),
+    "microwave": (frozenset({"mug", "cup", "bowl", "dish", "food", "soup", "coffee", "tea", "meal", "leftovers"}), (PartKind.TURNTABLE,)),
 })
-"""Asset category -> what users put in it and the part that carries it ("sink the bread down into the slots": the
-toaster's carriage lever)."""
+"""Asset category -> what users put in it or get from it, and the kinds of part that carry or let it ("sink the bread down
+into the slots": the toaster's carriage lever; "turn on the water": the tap's handle, whichever kind it has; "turn the mug
+around": the microwave's turntable)."""
 
 
-def carrier_of(noun: str, category: str | None) -> PartKind | None:
-    """The kind of part that carries ``noun`` in an object of ``category`` (None when it carries nothing by that name)."""
+def carrier_of(noun: str, category: str | None, has: Callable[[PartKind], bool] | None = None) -> PartKind | None:
+    """The kind of part that carries ``noun`` in an object of ``category`` (the first of them it ``has``; None when it
+    carries nothing by that name)."""
     carried = CARRIED.get(category or "")
-    return carried[1] if carried is not None and noun in carried[0] else None
+    if carried is None or noun not in carried[0]:
+        return None
+    return next((kind for kind in carried[1] if has is None or has(kind)), carried[1][0])
 
 
 SPOUTED = frozenset({"faucet"})

@@ -285,7 +285,7 @@ COUPLING_WORDS = frozenset({"linked", "connected", "coupled", "hooked", "attache
 STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
                            "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks",
-                           "starts", "begins", "started", "has", "features", "contains", *COUPLING_WORDS})
+                           "starts", "begins", "started", "has", "features", "contains", "live", "lives", "belong", "belongs", *COUPLING_WORDS})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
 PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
                     "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})
@@ -348,10 +348,22 @@ COMPLAINED_STATES: Mapping[str, str] = MappingProxyType({
     "closed": "open", "shut": "open"})
 """A part's state told with no action ("the lower drawer is sticking out and I keep bumping my knee on it", "the toilet
 seat is up again"): the sense of the verb that puts it the other way, when nothing else in the prompt asks for a step."""
-LIGHTING_COMPLAINTS: Mapping[str, str] = MappingProxyType({"dark": "switch_on", "dim": "switch_on", "gloomy": "switch_on", "pitch-black": "switch_on",
-                                                           "bright": "switch_off", "glaring": "switch_off"})
-"""How the room is, told with no action ("it's way too dark in here"): the sense a light switch is worked in, on an
-object whose one switch is all it has to offer."""
+_STUFFY = ("open", ("window", "door"), "")
+_DRAUGHTY = ("close", ("window", "door"), "")
+_GETTING_IN = ("close", ("lid", "door", "window"), "")
+_DARK = ("switch_on", ("switch",), "")
+_BRIGHT = ("switch_off", ("switch",), "")
+_WASHING = ("switch_on", ("handle", "lever", "switch", "knob"), "faucet")
+"""On a tap only ("my hands are all soapy"): its one handle, lever or switch turned on."""
+ROOM_COMPLAINTS: Mapping[str, tuple[str, tuple[str, ...], str]] = MappingProxyType({
+    "dark": _DARK, "dim": _DARK, "gloomy": _DARK, "pitch-black": _DARK, "bright": _BRIGHT, "glaring": _BRIGHT,
+    "stuffy": _STUFFY, "muggy": _STUFFY, "stifling": _STUFFY, "airless": _STUFFY, "stale": _STUFFY,
+    "draft": _DRAUGHTY, "draught": _DRAUGHTY, "drafty": _DRAUGHTY, "draughty": _DRAUGHTY, "chilly": _DRAUGHTY, "freezing": _DRAUGHTY,
+    "dust": _GETTING_IN, "bugs": _GETTING_IN, "flies": _GETTING_IN, "mosquitoes": _GETTING_IN, "rain": _GETTING_IN,
+    "soapy": _WASHING, "sticky": _WASHING, "greasy": _WASHING, "thirsty": _WASHING, "rinse": _WASHING})
+"""How the room is, told with no action ("it's way too dark in here", "it's stuffy in here", "there's a cold draft coming
+through the doorway", "I don't want dust getting into this box"): the sense to work the part in, the kinds of part
+that answer it (the first the object has one of), and the one category of object it is said of ("" for any)."""
 POPPING_VERBS = frozenset({"pop", "spring"})
 """Verbs that say a shut part is let go by its release ("pop the microwave open"): its one release control is worked."""
 WHEEL_SHAPED = frozenset({"wheel", "spoked", "spoke", "spokes", "star", "capstan"})

@@ -11,12 +11,13 @@ from typing import TYPE_CHECKING
 
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.verbs import VerbSense
-from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, LIGHTING_COMPLAINTS, MISHAP_VERBS, PERSONS
+from app.engine.lexicon.words import BODY_WORDS, COMPLAINED_STATES, MISHAP_VERBS, PERSONS, ROOM_COMPLAINTS
+from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.mention import Mention
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
-    from app.engine.offline.reading.acts import Act
+    from app.engine.offline.reading.frames import Frame
 
 _COPULAS = frozenset({"is", "are", "was", "were", "been", "left", "keeps", "stays", "still", "always", "again", "now", "all", "the", "way",
                       "wide", "sticking", "hanging", "standing", "poking", "sitting", "partly", "half", "a", "bit", "little", "slightly"})
@@ -44,11 +45,13 @@ def _stem(word: str) -> str:
 def complained(act: Act) -> tuple[VerbSense, str] | None:
     """The sense that puts the part of a told state the other way, and the state word ("sticking out")."""
     frame = act.goal
-    if not frame.themes or (frame.verb is not None and frame.verb not in ("have", "leave", "keep", "stick", "hang")):
+    if not frame.themes or (frame.verb is not None and frame.verb not in ("have", "leave", "keep", "stick", "hang", "get")):
         return None
     words = frame.text.split()
     end = max(m.end for m in frame.themes)
     tail = [w for w in words[end:] if w not in ("again", "still", "now", "please", ".", "!", ",")]
+    if _in_the_way(tail):
+        return VerbSense.TOGGLE, "in the way"  # the pose decides which way is out of the way (``_out_of_the_way``)
     for a, b in pairwise(tail):
         if (a, b) in _TWO_WORD:
             return VerbSense(COMPLAINED_STATES[_TWO_WORD[a, b]]), f"{a} {b}"
@@ -59,6 +62,20 @@ def complained(act: Act) -> tuple[VerbSense, str] | None:
     return None
 
 
+_WAY_OWNERS = frozenset({"the", "my", "our", "your"})
+_BLOCKING = frozenset({"blocking", "obstructing"})
+
+
+def _in_the_way(tail: list[str]) -> bool:
+    """"the lid is in the way", "keeps getting in my way", "it's blocking": a part whose pose is the trouble."""
+    return any(tail[k:k + 3] in (["in", o, "way"] for o in _WAY_OWNERS) for k in range(len(tail))) or bool(_BLOCKING & set(tail))
+
+
+def _bumped_into(act: Act) -> tuple[VerbSense, str] | None:
+    """"I keep banging my knee on that drawer": the part named in a mishap sticks out, so it is shut."""
+    return (VerbSense.CLOSE, "running into it") if mishap(act) and any(m.kind is not None for m in act.goal.themes) else None
+
+
 def left_open(act: Act) -> bool:
     """"somebody left the bottom drawer open" (read as "somebody had ..."): a complaint whatever the part's pose."""
     words = act.goal.text.split()
@@ -67,11 +84,17 @@ def left_open(act: Act) -> bool:
 
 def answer_complaint(builder: Builder, acts: list[Act]) -> bool:
     """The one told state, put the other way (with a note that says it was read from a complaint); False when none.
-    The clause is added to ``builder.turned`` (the audit does not flag its direction)."""
-    told = [(act, found) for act in acts if (found := complained(act)) is not None]
+    A mishap on a part with no state told ("I keep banging my knee on that drawer") finds the part in the way. The
+    clause is added to ``builder.turned`` (the audit does not flag its direction)."""
+    told = [(act, found) for act in acts if (found := complained(act) or _bumped_into(act)) is not None]
     if len(told) != 1:
         return False
     act, (sense, state) = told[0]
+    if sense is VerbSense.TOGGLE:
+        way = _out_of_the_way(builder, act)
+        if way is None:
+            return False
+        sense = way
     verb = {VerbSense.CLOSE: "close", VerbSense.OPEN: "open", VerbSense.LOWER: "lower", VerbSense.RAISE: "raise",
             VerbSense.SWITCH_OFF: "turn off"}[sense]
     if not added(builder, replace(act, condition=False, goal=replace(act.goal, verb=verb.split()[0], sense=sense, heading=False, stative=False))):
@@ -82,23 +105,69 @@ def answer_complaint(builder: Builder, acts: list[Act]) -> bool:
     return True
 
 
-def answer_lighting(builder: Builder, acts: list[Act]) -> bool:
-    """"It's way too dark in here" on a light switch, and nothing asked: the switch is turned on (off for "too bright"),
-    with a note; False when the words say nothing of the light or the object has not exactly one switch."""
-    said = [LIGHTING_COMPLAINTS[w] for a in acts for w in a.goal.text.split() if w in LIGHTING_COMPLAINTS]
-    switches = builder.refs.of_kind(PartKind.SWITCH)
-    if len(set(said)) != 1 or len(switches) != 1:
+def _out_of_the_way(builder: Builder, act: Act) -> VerbSense | None:
+    """The way a part "in the way" goes: open when it rests nearer its closed end (a lid over the seat), else shut (a
+    door standing open); None when the clause names no one part with two ends."""
+    parts, _ = builder.refs.resolve(act.goal.themes[0])
+    geometry = parts[0].geometry if len(parts) == 1 else None
+    if geometry is None or geometry.closed_value is None or not geometry.span:
+        return None
+    share = abs(builder.tracker.value(parts[0].joint) - geometry.closed_value) / geometry.span
+    return VerbSense.OPEN if share < 0.5 else VerbSense.CLOSE
+
+
+def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
+    """"It's way too dark in here" on a light switch, "it's stuffy in here" on a window, "there's a cold draft coming
+    through the doorway", "I don't want dust getting into this box", and nothing asked: the one part that answers it is
+    worked (the switch on, the window open, the door or lid shut), with a note; False when the words say nothing of the
+    room or the object has not exactly one such part."""
+    told = [f.text for f in frames]  # "I don't want dust getting in": said as what not to have (no act)
+    said = {ROOM_COMPLAINTS[w] for text in told for w in text.split() if w in ROOM_COMPLAINTS}
+    if len(said) != 1:
         return False
-    sense = VerbSense(said[0])
-    act = acts[0]
-    mention = Mention(head="switch", kind=PartKind.SWITCH, words="the switch")
-    if not added(builder, replace(act, condition=False, goal=replace(act.goal, verb="turn", sense=sense, themes=(mention,), heading=False,
+    (sense_name, kinds, category), = said
+    if category and category != builder.refs.obj.category:
+        return False
+    found = next((parts for kind in kinds if (parts := builder.refs.of_kind(PartKind(kind)))), [])
+    if len(found) != 1:
+        return False
+    sense, part = VerbSense(sense_name), found[0]
+    act = acts[0] if acts else Act(goal=frames[0])
+    mention = Mention(head=str(part.kind), kind=part.kind, words=f"the {part.kind}")
+    verb = {VerbSense.SWITCH_ON: "turn", VerbSense.SWITCH_OFF: "turn"}.get(sense, sense.value)
+    if not added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=replace(
+            act.goal, verb=verb, sense=sense, themes=(mention,), instruments=(), heading=False,
                                                                     stative=False, particle=None, wish=False,
                                                                     quantities=replace(act.goal.quantities, amount=None)))):
         return False
     _superseded(builder, act.goal.text)
-    builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to turn the light {'on' if sense is VerbSense.SWITCH_ON else 'off'}")
+    thing = "the light" if kinds == ("switch",) else f"the {part.kind}"
+    done = {VerbSense.SWITCH_ON: f"turn {thing} on", VerbSense.SWITCH_OFF: f"turn {thing} off"}.get(sense, f"{sense.value} {thing}")
+    builder.notes.append(f"no action was asked: read '{' '.join(told)}' as a wish to {done}")
     return True
+
+
+_FINISHED = frozenset({"done", "finished", "through"})
+_USER_IS = (("i'm",), ("i", "am"), ("we're",), ("we", "are"), ("i've", "been"))
+
+
+def answer_finished(builder: Builder, acts: list[Act]) -> bool:
+    """"I'm done working for today", "I'm finished with the laptop" and nothing asked: the object is shut (a laptop
+    folded), with a note; False when no clause says so or nothing of it is open."""
+    for act in acts:
+        words = act.goal.text.split()
+        said = next((len(lead) for lead in _USER_IS if tuple(words[:len(lead)]) == lead), 0)
+        if not said or words[said:said + 1] == [] or words[said] not in _FINISHED or any(m.kind is not None for m in act.goal.themes):
+            continue
+        whole = Mention(head="it", is_object=True, words=builder.asset.name)
+        goal = replace(act.goal, verb="close", sense=VerbSense.CLOSE, themes=(whole,), instruments=(), heading=False, stative=False,
+                       particle=None, wish=False, guessed_verb=None, quantities=replace(act.goal.quantities, amount=None))
+        if added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=goal)):
+            _superseded(builder, act.goal.text)
+            builder.notes[:] = [n for n in builder.notes if not n.startswith(f"read the verb '{act.goal.guessed_verb}'")]
+            builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to shut {builder.asset.name}")
+            return True
+    return False
 
 
 def _superseded(builder: Builder, text: str) -> None:

@@ -8,6 +8,7 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.errors import GroundingError
+from app.engine.lexicon.objects import carrier_of
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
@@ -127,7 +128,8 @@ def set_topic(builder: Builder, frame: Frame) -> None:
     side = side_of_object(frame.text.split())
     if frame.stative and side is not None and not builder.refs.scene:
         builder.refs.scene = (side,)  # "the milk is on the left side of the fridge, get that door open": the left one
-    told = [m for m in frame.themes[:1] if m.kind is not None and not m.pronoun] if frame.verb is None or frame.stative else []
+    told = [m for m in frame.themes[:1] if (m.kind is not None or carrier_of(m.head, builder.refs.obj.category)) and not m.pronoun] if (
+        frame.verb is None or frame.stative) else []  # "the toast is sitting too low": what carries it
     if len(told) == 1:
         places = told  # "The clasps on this box are spring-loaded, so both of them snap shut", "The little knob on the far right is
         # the lid release. Give it a quarter turn": the subject of a description is what "it" / "them" means next

@@ -207,6 +207,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     value, unit = _amount(quantities.amount)
     if value is not None and unit == "fraction" and geometry.type == "continuous" and {"round", "around"} & set(frame.text.split()):
         value, unit = value * 2 * math.pi, "rad"  # "half way round": a share of a whole turn of a part that turns for ever
+    if value is None and sense is VerbSense.YAW and geometry.type == "continuous" and quantities.times <= 1:
+        value, unit = math.pi, "rad"  # "turn the mug around" (on the turntable): a half turn, as an object turned around
     if value is not None and unit == "m" and geometry.type != "prismatic":
         value, unit = None, None
     if value is not None and unit == "rad" and geometry.type == "prismatic":

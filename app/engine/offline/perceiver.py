@@ -22,7 +22,7 @@ from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
-from app.engine.offline.complaints import answer_complaint, answer_lighting, left_open, mishap
+from app.engine.offline.complaints import answer_complaint, answer_finished, answer_room, left_open, mishap
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
@@ -33,7 +33,7 @@ from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release
-from app.engine.offline.told import answer_stored, told_codes, told_how, wanted_things
+from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.whole_object import whole_named
 
@@ -71,8 +71,12 @@ def _incidental(frame: Frame) -> bool:
     return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
             or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press ...": why, told first
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
-            or (frame.guessed_verb is not None and frame.link in (Link.PARALLEL, Link.CONDITION))  # "while the narrator talks"
+            or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split()))))
+            # "while the narrator talks", "dishes are all loaded"
             or (not frame.themes and not frame.instruments and _said_of_someone(frame)))  # "... when the arm lets go": about who acts
+
+
+_BE = frozenset({"is", "are", "was", "were"})
 
 
 def _said_of_someone(frame: Frame) -> bool:
@@ -116,7 +120,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if len(acts) > 1 and mishap(act):
                 builder.notes.append(f"ignored '{act.goal.text}': it is about what happens to a person, not a step")  # "I keep bumping my knee on it"
                 continue
-            if left_open(act) and sum(not mishap(a) for a in acts) == 1 and answer_complaint(builder, [act]):
+            if ((left_open(act) and sum(not mishap(a) for a in acts) == 1) or (len(acts) == 1 and mishap(act))) and answer_complaint(builder, [act]):
                 continue  # "somebody left the bottom drawer open": shut it, whatever its pose
             if not builder.steps and len(acts) == 1 and answer_stored(builder, acts):
                 continue  # "my keys are in the top drawer": open it
@@ -134,6 +138,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)
+                fetched_through(builder, act, list(clauses[act.goal.clause].tokens) if act.goal.clause < len(clauses) else [], steps)
             except GroundingError as exc:
                 if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:
                     # "get the door down, which makes room to slide the baking tray in": the purpose names nothing here
@@ -144,6 +149,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
+                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, acts)):
+                    break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
                 if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
                     raise  # a clause that names parts but not which one is never skipped
                 skipped.append(exc)
@@ -151,7 +158,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
-    if not builder.steps and (answer_complaint(builder, acts) or answer_lighting(builder, acts)):
+    if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, acts)):
         skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)
     if not builder.steps:
         if skipped:

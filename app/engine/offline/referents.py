@@ -85,7 +85,7 @@ class Referents:
         """The parts ``mention`` names (pronouns and objects are the caller's: see :meth:`pronoun`)."""
         kind = mention.kind if not mention.anaphor else (mention.kind or self.last_kind)
         notes: list[str] = []
-        if kind is None and (kind := carrier_of(mention.head, self.obj.category)) is not None:
+        if kind is None and (kind := carrier_of(mention.head, self.obj.category, lambda k: bool(self.of_kind(k)))) is not None:
             notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
         if kind is None and mention.anaphor and "one" in mention.words.split() and not mention.other and (
                 mention.sides or mention.ordinal is not None) and len(only := {p.kind for p in self.parts}) == 1 and (

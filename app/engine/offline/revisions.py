@@ -30,11 +30,17 @@ def replay(builder: Builder) -> None:
         builder.tracker.apply(step)
 
 
+_WAYS = frozenset({VerbSense.RAISE, VerbSense.LOWER, VerbSense.OPEN, VerbSense.CLOSE, VerbSense.PULL_OUT, VerbSense.PUSH_IN})
+
+
 def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: tuple[list[Part], list[str]]) -> tuple[list[Part], list[str]]:
     """"Spin the dial a full turn to unlock it": a purpose whose parts are all parts its means already moves says
     why the means is done, not a second motion of them; it moves nothing more."""
     parts = grounded[0]
     if not controls or not parts or not {p.joint for p in parts} <= {m.part.joint for m in controls}:
+        return grounded
+    if act.means is None and act.goal.sense in _WAYS and {p.joint for p in parts} == {m.part.joint for m in controls}:
+        controls.clear()  # "raise the toast up with the lever": the lever carries the toast, so it goes the way the goal says
         return grounded
     moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
     builder.notes.append(f"read '{act.goal.text}' as what working {moved} does: nothing more moves")

@@ -8,11 +8,16 @@ from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.lexicon.kinds import PartKind, info
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.objects import names_other_object
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import FUNCTION_VERBS
+from app.engine.offline.collisions import blocking_joints
 from app.engine.offline.complaints import added, mishap
 from app.engine.offline.reading.clauses import Link
+from app.engine.offline.reading.holders import side_of_object
+from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.mentions import parse_mentions
+from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.reading.stored import open_holder
 from app.engine.offline.reading.tokens import tokenize
 
@@ -20,11 +25,11 @@ if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
     from app.engine.offline.reading.acts import Act
     from app.engine.offline.reading.frames import Frame
-    from app.engine.offline.reading.mention import Mention
+    from app.engine.offline.reading.token import Token
 
 
 _KEPT_PLACES = frozenset({"in", "inside", "on", "behind", "under", "at"})
-_COPULA = frozenset({"is", "are", "was", "were", "'s"})
+_COPULA = frozenset({"is", "are", "was", "were", "'s", "live", "lives", "belong", "belongs"})
 
 
 def answer_stored(builder: Builder, acts: list[Act]) -> bool:
@@ -51,7 +56,9 @@ def answer_stored(builder: Builder, acts: list[Act]) -> bool:
     return True
 
 
-_FETCHING = frozenset({"get", "take", "grab", "fetch", "bring", "pull"})
+_FETCHING = frozenset({"get", "take", "grab", "fetch", "bring", "pull", "open"})
+"""Verbs of reaching a thing told of before ("the casserole is in the bottom oven, I want to see how it's doing": read as
+"open it" by then)."""
 _FETCHED_FROM = frozenset({"from", "in", "inside", "out_of", "behind", "under", "on"})
 
 
@@ -61,26 +68,84 @@ def wanted_things(builder: Builder, frames: list[Frame]) -> tuple[list[Frame], l
     out, notes = [], []
     wishing = False
     kept: Mention | None = None  # where the things just told of are ("the sodas are behind the left-hand fridge door")
+    told_where: set[int] = set()
     for frame in frames:
         first = frame.themes[0] if frame.themes else None
-        if frame.stative and first is not None and first.kind is None and not (first.is_object or first.pronoun):
-            kept = held_in(frame, first)
-        elif kept is not None and frame.verb in _FETCHING and first is not None and first.head in ("one", "some", "them") and first.kind is None:
-            out.append(open_holder(frame, kept))  # "... - get one out for me": one of them, out of where they are
-            notes.append(f"'{frame.text}': opened {kept.words or kept.head}, where they are kept")
-            continue
-        wishing = frame.wish or (wishing and frame.verb is None)
-        thing = frame.themes[0] if wishing and frame.verb is None and frame.themes else None
-        if thing is None or thing.is_object or thing.pronoun or (thing.kind is not None and builder.refs.of_kind(thing.kind)):
+        category = builder.refs.obj.category
+        if first is not None and (_told_of(frame, first, category) or _kept_by_user(frame, first)) and (place := held_in(frame, first)) is not None and _fetched_later(
+                frames[frames.index(frame) + 1:]):
+            kept = place  # "the lasagna on the very bottom rack should be done by now, I want to get it out": the rack, below
             out.append(frame)
             continue
-        holder = held_in(frame, thing)
+        if first is not None and _told_of(frame, first, category):
+            kept = held_in(frame, first) or kept
+        elif kept is not None and frame.verb in _FETCHING and first is not None and first.head in _TAKEN and first.kind is None:
+            out.append(open_holder(frame, kept))  # "... - get one out for me": one of them, out of where they are
+            notes.append(f"'{frame.text}': opened {kept.words or kept.head}, where {'it is' if first.head == 'it' else 'they are'} kept")
+            continue
+        later = frames[frames.index(frame) + 1] if frame is not frames[-1] else None
+        if frame.verb in _FETCHING and first is not None and _thing(first, builder.refs.obj.category) and held_in(frame, first) is None and (
+                later is not None and (place := _where_it_is(later)) is not None and (place.is_object or (
+                    place.kind is not None and builder.refs.of_kind(place.kind)))):
+            out.append(open_holder(frame, place))  # "grab me the milk, it's on the right-hand side of the fridge"
+            notes.append(f"'{first.words or first.head}' is no part: opened {place.words or place.head}, where it is kept")
+            told_where.add(id(later))
+            continue
+        if id(frame) in told_where:
+            continue  # where the thing just asked for is: said already
+        wishing = frame.wish or (wishing and frame.verb is None)
+        thing = frame.themes[0] if wishing and frame.verb is None and frame.themes else None
+        if thing is None or thing.is_object or thing.pronoun or (thing.kind is not None and builder.refs.of_kind(thing.kind)) or (
+                (thing.head in VERBS or thing.head in _LOOKING) and thing.words.split()[:1] == [thing.head]):  # "I need to check what's on ..."
+            out.append(frame)
+            continue
+        holder = held_in(frame, thing) or kept  # "I keep my socks in the left drawer and I need a pair": from there
         if holder is None:
             out.append(frame)
             continue
         out.append(open_holder(replace(frame, wish=False), holder))
         notes.append(f"'{thing.words or thing.head}' is no part: opened {holder.words or holder.head}, where it is kept")
     return out, notes
+
+
+_TAKEN = frozenset({"one", "some", "them", "it"})
+_LOOKING = frozenset({"check", "see", "look", "find", "peek", "know"})
+"""A wish to look ("I need to check what's on the bottom rack"): a verb after the wish, no thing wanted."""
+
+
+def _told_of(frame: Frame, first: Mention | None, category: str | None) -> bool:
+    """A clause about a thing that is no part, with no verb of its own: "the sodas are behind the left-hand door", "the
+    lasagna on the very bottom rack should be done by now" (where it is, for a later "get it out")."""
+    thing = first is not None and first.kind is None and not first.pronoun and (
+        not first.is_object or names_other_object(first.head, category))  # "the casserole" on an oven is a dish in it
+    return first is not None and thing and (
+        frame.stative or (frame.wish and frame.verb is None and frame.link is Link.FIRST))
+
+
+def _thing(mention: Mention, category: str | None) -> bool:
+    return mention.kind is None and not mention.pronoun and (not mention.is_object or names_other_object(mention.head, category))
+
+
+def _where_it_is(frame: Frame) -> Mention | None:
+    """"it's on the right-hand side of the fridge", "they're in the top drawer": where the thing just asked for is."""
+    words = frame.text.split()
+    if words[:1] not in (["it's"], ["they're"]) and words[:2] not in (["it", "is"], ["they", "are"]):
+        return None
+    place = held_in(frame, Mention(head=words[0], pronoun=True, start=0, end=1)) if frame.stative or frame.verb is None else None
+    side = side_of_object(words)
+    return replace(place, sides=(side,)) if place is not None and place.is_object and side is not None else place  # "the right-hand side of the fridge"
+
+
+def _kept_by_user(frame: Frame, first: Mention | None) -> bool:
+    """"I keep my socks in the left drawer": where the user keeps a thing that is no part."""
+    return frame.verb == "keep" and frame.text.split()[:1] in (["i"], ["we"]) and first is not None and first.kind is None and not (
+        first.is_object or first.pronoun)
+
+
+def _fetched_later(frames: list[Frame]) -> bool:
+    """A later clause reaches for the thing told of: "get it out", "get one out", "I need a pair"."""
+    return any((f.verb in _FETCHING or (f.wish and f.verb is None)) and f.themes and f.themes[0].kind is None and (
+        f.themes[0].head in _TAKEN or (f.wish and not f.themes[0].is_object)) for f in frames)
 
 
 def told_codes(frames: list[Frame]) -> list[Frame]:
@@ -127,6 +192,39 @@ def held_in(frame: Frame, thing: Mention) -> Mention | None:
     if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind:
         return thing.relation[1]
     words = frame.text.split()
-    at = next((k for k in range(thing.end, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
-    tail = parse_mentions(tokenize(" ".join(words[at + 1:])), 0) if at is not None else []
+    said = next((k for k, w in enumerate(words) if w in (thing.head, f"{thing.head}s", f"{thing.head}es")), None)
+    begin = min(thing.end, said + 1 if said is not None else thing.end)  # the mention may reach over its place
+    at = next((k for k in range(begin, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
+    tail = parse_mentions(tokenize(" ".join(words[at + 1:]).replace(" 's", "'s")), 0) if at is not None else []  # "the lower oven 's rack"
     return tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None
+
+
+_SLIDING = frozenset({PartKind.TRAY, PartKind.SHELF, PartKind.DRAWER})
+_TAKING_OUT = frozenset({"take", "get", "grab", "fetch", "remove", "retrieve", "pull", "bring"})
+
+
+def fetched_through(builder: Builder, act: Act, tokens: list[Token], before: int) -> None:
+    """"Take the pizza out of the top oven": a thing taken out of a compartment, read as opening its door (the steps from
+    ``before`` on), comes out on the one rack behind that door, which slides out too (with a note); nothing when the
+    door hides no sliding part or several."""
+    if not any(t.text == "open" and t.corrected_from and t.corrected_from.split()[0] in _TAKING_OUT and " out" in f" {t.corrected_from}"
+               for t in tokens):
+        return
+    opened = {m.joint for step in builder.steps[before:] for m in step.effects}
+    doors = [p for p in builder.parts if p.joint in opened and p.kind is not None and info(p.kind).hinged]
+    closed = doors[0].geometry.closed_value if len(doors) == 1 else None
+    if closed is None:
+        return
+    door = doors[0]
+    shut = {**builder.tracker.now, door.joint: closed}
+    behind = [p for p in builder.parts if p.kind in _SLIDING and p.joint not in opened and p.geometry.open_value is not None and door.joint in
+              blocking_joints(builder.asset, p.joint, p.geometry.open_value, shut)]
+    if len(behind) != 1:
+        return
+    rack = behind[0]
+    frame = replace(act.goal, verb="pull", sense=VerbSense.PULL_OUT, particle="out", themes=(), instruments=(), wish=False, heading=False,
+                    stative=False, quantities=Quantities(speed_factor=act.goal.quantities.speed_factor))
+    builder.complete(replace(act, goal=frame, means=None, condition=False), VerbSense.PULL_OUT, [],
+                     builder.moves(frame, VerbSense.PULL_OUT, [rack], [rack.link], None))
+    builder.notes.append(f"'{act.goal.text}': also slid out {rack.link} ({rack.joint}), the one {rack.kind} behind {door.link}, "
+                         "to take the thing out on it")

@@ -149,4 +149,10 @@ def whole_named(frame: Frame, category: str | None) -> Frame:
     family = OBJECT_FAMILIES.get(category or "", frozenset())
     themes = tuple(replace(m, is_object=True, kind=None) if _WHOLE & set(m.modifiers) and (m.head == category or (m.head in family and m.kind is None)) else m
                    for m in frame.themes)
-    return frame if themes == frame.themes else replace(frame, themes=themes)
+    frame = frame if themes == frame.themes else replace(frame, themes=themes)
+    if frame.particle == "away" and frame.verb in _STOWING and frame.themes and all(m.is_object for m in frame.themes):
+        return replace(frame, sense=VerbSense.CLOSE, particle="shut")  # "put my laptop away": folded shut, not pushed 1 m
+    return frame
+
+
+_STOWING = frozenset({"put", "pack", "stow", "tuck"})

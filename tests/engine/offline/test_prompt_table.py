@@ -59,6 +59,40 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 43 (indirect prompts: complaints about the room, things kept, "too far"; spatial and sequenced) ---
+    R("toilet_102622", "I need to use the toilet and the lid is in the way.", joints={"joint_0": E(end="upper")}),  # shut: in the way
+    R("toaster_103477", "I'd like some toast.", joints={"joint_1": E(end=0.428)}),  # what it makes: the lever down, not up
+    R("toaster_103477", "The toast is sitting too low to grab, raise it up with the lever.", joints={"joint_1": E(end=-0.092)}),
+    R("extra/storage_20279", "I keep banging my knee on that drawer sticking out.", joints={"joint_0": E(end=-0.188)}),
+    R("laptop_10101", "I'm done working for today.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED)}),
+    R("laptop_10101", "I'm done working for today, put my laptop away.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED)}),  # no base motion
+    R("laptop_10101", "The screen is tilted too far toward me, I can't see it properly.", joints={"joint_1": E(sign=1)}),  # back a little
+    R("window_103135", "There's a cold draft coming through the window.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),
+    R("window_103135", "It's getting stuffy in here.", joints={"joint_0": E(end="upper")}),
+    R("box_102456", "I don't want dust getting into this box.", joints={"joint_0": E(end=BOX_102456_CLOSED)}),
+    R("extra/storage_25308", "I keep my socks in the left drawer and I need a pair.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("storage_19179", "The spare towels live in the drawer nearest the floor.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("storage_19179", "Pull out the top drawer after you've pulled out the bottom one.", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")},
+      order=(("joint_0", "joint_1"),)),
+    R("refrigerator_11178", "Grab me the milk, it's on the right-hand side of the fridge.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),
+    R("extra/oven_7179", "The casserole is in the bottom oven and I want to see how it's doing.",
+      joints={"joint_3": E(end="upper"), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "Take the pizza out of the top oven.", joints={"joint_4": E(end="upper"), "joint_0": E(end="upper")},
+      order=(("joint_4", "joint_0"),)),  # the one rack behind that door comes out with it
+    R("extra/oven_7179", "The lasagna on the very bottom rack should be done by now, I want to get it out.",
+      joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_4": E(still=True)}),
+    R("kitchen_pot_100038", "Let me see how the soup is doing.", joints={"joint_0": E(sign=1)}),
+    R("oven_7138", "Open the oven all the way, and when it's fully open bring it back up to halfway.", joints={"joint_0": E(end=PI / 4)}),
+    R("faucet_991", "My hands are all soapy.", joints={"joint_0": E(moves=True)}),
+    R("faucet_991", "turn on the water", joints={"joint_0": E(moves=True)}),
+    R("washing_machine_103508", "See the dial sitting off on its own to the right? Give it a half turn.",
+      joints={"joint_1": E(abs_end=PI), "joint_2": E(still=True), "joint_3": E(still=True)}),
+    R("storage_20453", "This cabinet sticks out ten centimetres too far from the wall.", base=(0.1, 0.0, 0.0)),
+    R("trash_can_102181", "I want to toss this wrapper in without touching the lid with my hands.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}, order=(("joint_0", "joint_1"),)),
+    R("dishwasher_12553", "Dishes are all loaded, get the dishwasher going.", joints={"joint_1": E(peak=0.052, end=0.0)}),
+    R("microwave_7119", "The mug in the microwave has its handle facing the back - I'd like it turned around to face me.",
+      joints={"joint_1": E(abs_end=PI)}),  # the turntable carries the mug; the microwave itself does not turn
     # --- blind round 42 (the same mix, written after round 41's fixes) ---
     R("storage_19179", "My socks are in the lower drawer, pull it out for me.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
     R("refrigerator_11178", "The milk is on the left side of the fridge, get that door open for me.",

@@ -15,6 +15,7 @@ from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.ellipsis import carry
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.measured_from import measured_from
+from app.engine.offline.reading.pointed import pointed_out
 from app.engine.offline.reading.quantities import Quantities, Reference
 from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
@@ -58,9 +59,9 @@ _STAY_WORDS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses",
 
 
 _SELECTING = frozenset({"take", "grab", "get"})
+"""Verbs that pick a part out for the next clause's "it" when nothing else follows them."""
 _BY_HAND = frozenset({"reach", "wipe", "grab", "touch", "clean"})
 """What a person's aim does by hand ("so I can reach the mess"): the step before is done by hand, reaching in."""
-"""Verbs that pick a part out for the next clause's "it" when nothing else follows them."""
 _GOAL_SENSES = frozenset({VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPERATE, VerbSense.SWITCH_ON, VerbSense.SWITCH_OFF})
 """What a task states as its goal on the whole object ("secure the safe", "start the microwave")."""
 
@@ -247,8 +248,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.verb is None and frame.text.split()[0].isdigit() and frame.themes and any(m.plural for m in frame.themes) and (
                 index + 1 < len(frames) and frames[index + 1].verb is not None):
             frame = replace(frame, heading=True)  # "Two catches on the front of this toolbox. Swing the one on the right ...": there are two
-        if _topic(frame, frames[index + 1:]):
-            frame = replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad": the part, then what "it" does
+        if (seen := pointed_out(frame, frames[index + 1:])) is not None or _topic(frame, frames[index + 1:]):
+            frame = seen or replace(frame, heading=True)  # "Upper knob - rotate it 1.5 rad", "See the dial ...? Give it a turn"
         if (frame.text.startswith("of ") or (frame.verb is None and frame.text.split()[0] in ("on", "at"))) and frame.themes and index + 1 < len(frames):
             frame = replace(frame, heading=True, verb=None, sense=None)  # "Of the three knobs on the washer, twist ...", "On the keypad, tap ..."
         if frame.sense is VerbSense.LOCK and frame.themes and all(m.is_object for m in frame.themes) and any(
@@ -285,8 +286,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue
         said = frame
         if frame.heading and frame is not frames[-1]:
-            # "Turn both knobs at the same time: the top one ..., the bottom one ...": a summary of what follows;
-            # it names the parts ("it"), the clauses after the colon say what each does
+            # "Turn both knobs at once: the top one ..., the bottom one ...": a summary naming the parts; what follows says what each does
             parts_named = tuple(m for m in frame.themes if not m.is_object or m.sides) or frame.themes  # "On the washer, the third knob: ..."
             acts.append(Act(goal=replace(frame, sense=None, verb=None, themes=parts_named, quantities=replace(frame.quantities, amount=None)),
                             condition=True))

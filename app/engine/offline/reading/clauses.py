@@ -25,14 +25,12 @@ from app.engine.lexicon.words import (
     LIGHT_VERBS,
     MODALS,
     NEGATIONS,
-    ORDINALS,
     PARALLEL,
     PAUSE_NOUNS,
     PERSONS,
     PURPOSE,
     SEQUENCE,
     SIMULTANEOUS,
-    SIZES,
     SPATIAL,
     SPEEDS,
     STATIVE_VERBS,
@@ -41,6 +39,7 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.mentions import kind_at
 from app.engine.offline.reading.tokens import Token, finite_unknown_verb, inflected_verb
+from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB, verb_at
 
 
 class Link(StrEnum):
@@ -80,38 +79,6 @@ class Clause:
         return " ".join(t.text.replace("_", " ") for t in self.tokens)
 
 
-_NOT_BEFORE_VERB = DETERMINERS | frozenset(SPATIAL) | frozenset(ORDINALS) | frozenset(SIZES) | frozenset(
-    {"of", "each", "every", "both", "all", "another", "other", "this", "that", "no", "any", "some", "toggle", "rocker", "light", "power",
-     "control", "wall"})
-_VERB_CUE = frozenset({"and", ",", "then", "but", "to", "by", "after", "before", "once", "when", "while", "whilst", "so", "please", "now",
-                       "first", "firstly", "just", "only", "simply", "kindly", "also", "and_then", "next", "finally", "lastly", "afterwards", "afterward",
-                       "after_that", "subsequently", "in_order_to", "so_as_to", "without", "until", "or", "as", "at_the_same_time",
-                       "simultaneously", "which", "that", "then,", "gently", "slowly", "quickly", "carefully", "fully",
-                       "don't", "dont", "not", "never", "do", "again", "meanwhile", "i", "you", "we", "let's", "lets", "using",
-                       "immediately", "briefly", "partially", "halfway", "slightly", "completely", "thereafter"})
-_AUX = frozenset({"is", "are", "was", "were", "be", "being", "been", "stays", "remains", "stay", "remain", "gets", "get"})
-
-
-def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
-    """Whether ``tokens[i]`` is a verb here (not a noun that looks like one: "the switch", "the left")."""
-    token = tokens[i]
-    if token.lemma not in VERBS or token.number is not None:
-        return False
-    previous = tokens[i - 1].text if i > 0 else ""
-    if previous in _NOT_BEFORE_VERB:
-        return False
-    if token.text in STATIVE_VERBS and (token.text.endswith("ing") or token.text != token.lemma):
-        return False  # "standing at the sink, ...": where the user is, not an action
-    if token.text in SPATIAL and token.text != token.lemma:
-        return False  # "left" is not "leave"
-    if token.text in SPATIAL or kind_at(tokens, i) is not None:
-        # "lower", "step", "switch", "dial": a verb only where a verb must start
-        return i == 0 or previous in _VERB_CUE
-    if strict:
-        return i == 0 or previous in _VERB_CUE or previous in _AUX
-    return True
-
-
 _PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
 _STAYS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 _CAUSING = frozenset({"make", "have", "help", "cause", "allow"})
@@ -142,10 +109,10 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
-        if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in _NOT_BEFORE_VERB:
+        if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in NOT_BEFORE_VERB:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
-        if (tokens[k].text in _AUX or stative) and k > j:
+        if (tokens[k].text in AUX or stative) and k > j:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
         if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
             return True  # "so the steam can escape", "so the camera can see inside"
@@ -256,7 +223,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
             boundary = (Link.PARALLEL, word, False)
         elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not (_bare_verb(current) and not (
-                link is Link.NEGATED and word == ",")) and not (
+                link in (Link.NEGATED, Link.PURPOSE) and word == ",")) and not (
                 word == "and" and link is Link.NEGATED and kind_at(tokens, nxt) is not None):  # "without the lid and latches"
             boundary = (Link.SEQUENCE, word, True)
         elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
@@ -286,7 +253,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.SEQUENCE, word, True)  # "toilet lid up, stay 2.5 seconds, back down": one step after another
         elif word == "until" and current:
             boundary = (Link.RESULT, word, False)  # "raise it until it stands upright": the end state
-        elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt))):
+        elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt) or _someone_does(tuple(tokens[nxt:])))):
             boundary = (Link.SEQUENCE, word, False)
         elif marker in ("once", "when", "after") and len(current) >= 2 and current[-1].text in _DONE_STATES and (word == "," or (
                 verb_at(tokens, i) and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
@@ -301,7 +268,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             continue
         elif word == "to" and current and current[-1].text in ASPECT_VERBS:
             boundary = None  # "the plate starts to turn": one verb, not a purpose
-        elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current:
+        elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current and not (
+                len(current) > 1 and current[-2].text == "too"):  # "the toast is sitting too low to grab": how low, not what for
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)
@@ -370,7 +338,7 @@ def _condition(tokens: list[Token], i: int) -> bool:
     for k, token in enumerate(tokens[i:i + 8]):
         if token.is_punct:
             return False
-        if token.text in _AUX:
+        if token.text in AUX or token.text in ("it's", "they're"):  # "when it's fully open"
             after = tokens[i + k + 1:i + k + 3]
             return not any(t.text.endswith("ing") and t.lemma in VERBS for t in after)  # "while it is opening": at the same time
     return False
@@ -381,7 +349,12 @@ _DOERS = frozenset({"you", "we", "i", "you've", "we've", "i've", "someone", "som
 
 def _someone_does(tokens: tuple[Token, ...]) -> bool:
     """"(after) you spin the handle", "(once) you've turned it": a person's action, told like a gerund."""
-    return len(tokens) > 1 and tokens[0].text in _DOERS and any(verb_at(list(tokens), k, strict=True) for k in (1, 2) if k < len(tokens))
+    if len(tokens) < 2 or tokens[0].text not in _DOERS:
+        return False
+    if any(verb_at(list(tokens), k, strict=True) for k in (1, 2) if k < len(tokens)):
+        return True
+    k = 2 if tokens[1].text == "have" else 1 if tokens[0].text.endswith("'ve") else 0
+    return 0 < k < len(tokens) and verb_at(list(tokens), k)  # "after you've pulled out ...", "after you have closed ..."
 
 
 def _order(clauses: list[Clause]) -> list[Clause]:

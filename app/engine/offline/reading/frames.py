@@ -25,6 +25,7 @@ from app.engine.lexicon.words import (
     CAUSATIVES,
     CENTRE_WORDS,
     DETERMINERS,
+    FUNCTION_VERBS,
     INSTRUMENT,
     OBJECT_NOUNS,
     PLACES,
@@ -152,6 +153,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
             continue  # "the third drawer down": how it is counted, not where it goes
         own = VERBS.get(tokens[verb].lemma)
+        if word == "back" and [t.text for t in tokens[i + 1:i + 3]] == ["down", "on"] and own is not None and "down" in own.particles:
+            return "down", i + 1  # "set it back down on the pot": resting on it (its closed end), not where it was (``back_before``)
         if word == "back" and i + 1 < len(tokens) and ends_after_back(own, tokens[i + 1].text):
             return tokens[i + 1].text, i + 1  # "shove it back in": the end state (the return is said too); "spring back up" keeps "back"
         if word == "back" and i > 0 and (tokens[i - 1].text in ("the", "its", "toward", "towards") or (
@@ -330,7 +333,12 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     sense = _sense(verb, particle) if verb in VERBS or verb == GENERIC.lemma else None
     if sense is VerbSense.RETURN and verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.OPEN and quantities.amount is not None and quantities.amount.unit == "fraction" and quantities.amount.value < 1:
         sense = VerbSense.OPEN  # "then open it back up halfway": half of its range, not half of the way back
-    if wish and verb is None:
+    made = next((m for m in themes if m.kind is None and m.head in FUNCTION_VERBS and m.head in VERBS), None) if (
+        wish and verb is None and particle is None and not any(t.text in WISHED_SENSES or t.text in STATE_PARTICLES for t in tokens)) else None
+    if made is not None:  # "I'd like some toast": the wish is what the object makes, so it does its work
+        verb, themes = made.head, [m for m in themes if m is not made]
+        sense = _sense(verb, particle)
+    elif wish and verb is None:
         sense = next((WISHED_SENSES[t.text] for t in tokens if t.text in WISHED_SENSES), VerbSense.OPEN)
     if let and verb in CAUSATIVES:
         sense = VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)  # "let the door down", "let go"
@@ -354,7 +362,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         t.text in ("rest", "resting") and k > 0 and tokens[k - 1].text in ("it's", "is", "its", "where", "currently")) and not (
         t.text in _RETURN_ADJECTIVES and (k == 0 or tokens[k - 1].text not in _POSSESSIVE_DETS))}  # "from where it's resting now", "you're starting"
     back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back" and (
-        particle_at < 2 or tokens[particle_at - 2].text not in ("the", "its", "toward", "towards"))  # "set it back down", not "the one at the back down"
+        particle_at < 2 or tokens[particle_at - 2].text not in ("the", "its", "toward", "towards")) and not (
+        particle == "down" and [t.text for t in tokens[particle_at + 1:particle_at + 2]] == ["on"])  # "set it back down", not "the one at the back down"
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
         words & CENTRE_WORDS) or back_before
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra

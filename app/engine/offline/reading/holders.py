@@ -47,6 +47,19 @@ def inside_end(tokens: list[Token], i: int) -> int:
     return end
 
 
+_DOING = frozenset({"doing", "done", "cooked", "ready", "coming", "getting"})
+
+
+def asked_after(tokens: list[Token], i: int) -> int:
+    """At "see"/"check" of "see how the soup is doing", "check if the cake is done" (a thing that is no part, its state
+    asked after, and nothing else in the sentence): the index after it, else 0."""
+    end = next((k for k in range(i, len(tokens)) if tokens[k].is_sentence_end), len(tokens))
+    words = [t.text for t in tokens[i + 2:end]]
+    if not words or not _DOING & set(words) or any(names_kind(w) for w in words) or any(w in ("and", "then", "and_then") for w in words):
+        return 0
+    return end
+
+
 def stowed(tokens: list[Token], i: int) -> int:
     """At a verb of putting in or taking out: the index after the preposition in "put a bowl of soup in | the microwave",
     "get it out of | the oven", "put my leftovers inside |" when what is moved is no part (a pronoun only when no part

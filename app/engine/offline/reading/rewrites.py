@@ -130,6 +130,8 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             token = replace(token, text="about", lemma="about")  # "..., like 90°", "something like 45 degrees": about 90 degrees
             if out and out[-1].text in ("something", "somewhere"):
                 out.pop()
+        if token.text == "going" and (not after or after in (".", ",", "!", "now", "again", "please")) and any(t.lemma == "get" for t in out[-4:]):
+            token = replace(token, text="running", lemma="run", corrected_from="going")  # "get the dishwasher going": running
         if token.text == "by" and after in ("itself", "themselves"):
             skip = 1  # "both of them snap shut by themselves": on their own, no step of the user's
             continue

@@ -26,6 +26,7 @@ from app.engine.offline.reading.holders import (
     COMPARTMENTS,
     SIDE_OF,
     accessed,
+    asked_after,
     going_in,
     heated,
     inside_end,
@@ -306,6 +307,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
                 Token("it", "it", t.start, t.start)]  # "let me check on the roast in there": open it to look inside
         return end
+    if t.text in ("see", "check") and after[:1] and after[0] in ("how", "if", "whether") and (end := asked_after(tokens, i)):
+        out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
+                Token("it", "it", t.start, t.start)]  # "let me see how the soup is doing": open it to look inside
+        return end
     if (reached := accessed(tokens, i, out)) is not None:
         end, opened = reached
         out.append(Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text.replace("_", " ") for w in tokens[i:end])))
@@ -338,7 +343,7 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if holder := stowed(tokens, i):
         said = " ".join(w.text.replace("_", " ") for w in tokens[i:holder])
         out.append(Token("open", "open", t.start, tokens[holder - 1].end, corrected_from=said))  # "put a bowl of soup in the microwave"
-        if holder == len(tokens) or tokens[holder].is_punct or tokens[holder].text in ("to", "for", "and", "so"):
+        if holder == len(tokens) or tokens[holder].is_punct or tokens[holder].text in ("to", "for", "and", "so", "without", "then", "before", "but"):
             out.append(Token("it", "it", t.start, t.start))  # "put my leftovers inside": the object holds them
         return holder
     if t.text in ("inside", "within", "in_there") and out and kind_of_word(out[-1].text) is not None and after[:1] and after[0].endswith("ed") and motion_verb(after[0]):
