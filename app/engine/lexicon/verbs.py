@@ -144,6 +144,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("retract", S.PUSH_IN),
     VerbInfo("insert", S.PUSH_IN),
     VerbInfo("tuck", S.PUSH_IN, _p(**{"in": S.PUSH_IN})),
+    VerbInfo("zip", S.CLOSE, _p(up=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN)),  # "zip the suitcase back up"
+    VerbInfo("unzip", S.OPEN, _p(open=S.OPEN)),
     VerbInfo("yank", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
     VerbInfo("tug", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
     # turn / spin

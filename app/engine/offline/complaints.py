@@ -148,14 +148,17 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
 
 
 _FINISHED = frozenset({"done", "finished", "through"})
-_USER_IS = (("i'm",), ("i", "am"), ("we're",), ("we", "are"), ("i've", "been"))
+_LEADS = frozenset({"ok", "okay", "right", "so", "well", "alright", "and", ","})
+_USER_IS = (("i'm",), ("i", "am"), ("we're",), ("we", "are"), ("i've", "been"), ("i've",), ("we've",), ("i", "have"))
 
 
-def answer_finished(builder: Builder, acts: list[Act]) -> bool:
-    """"I'm done working for today", "I'm finished with the laptop" and nothing asked: the object is shut (a laptop
-    folded), with a note; False when no clause says so or nothing of it is open."""
-    for act in acts:
+def answer_finished(builder: Builder, frames: list[Frame]) -> bool:
+    """"I'm done working for today", "I'm finished with the laptop", "OK, I've finished packing the suitcase" and nothing
+    asked: the object is shut (a laptop folded), with a note; False when no clause says so or nothing of it is open."""
+    for act in (Act(goal=frame) for frame in frames):
         words = act.goal.text.split()
+        while words and words[0] in _LEADS:
+            words = words[1:]  # "OK, I've finished packing the suitcase"
         said = next((len(lead) for lead in _USER_IS if tuple(words[:len(lead)]) == lead), 0)
         if not said or words[said:said + 1] == [] or words[said] not in _FINISHED or any(m.kind is not None for m in act.goal.themes):
             continue

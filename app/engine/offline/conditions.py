@@ -56,6 +56,8 @@ def condition(builder: Builder, act: Act) -> None:
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
             set_topic(builder, frame)  # "Quick anim: ...": a summary that names no part; "the chicken is on the lowest shelf - ..."
         return
+    if _placed_on(builder, frame):
+        return  # "the baking tray is sitting on the rack nearest the floor; slide that rack out": a thing on the rack
     if any(m.is_object for m in frame.themes) and not all(m.is_object for m in frame.themes):
         frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))  # "the safe has two dials": the dials
     copula = next((k for k, word in enumerate(frame.text.split()) if word in ("is", "are")), None)
@@ -114,6 +116,28 @@ def _each_alone(builder: Builder, frame: Frame) -> list[Part] | None:
             return None
         parts += [p for p in found if p not in parts]
     return parts if len({p.kind for p in parts}) == 1 else None
+
+
+_SITTING = frozenset({"sitting", "sits", "resting", "rests", "lying", "lies", "placed", "standing", "stands"})
+
+
+def _placed_on(builder: Builder, frame: Frame) -> bool:
+    """"The baking tray is sitting on the rack nearest the floor": what sits on a part is a thing of the user's, whatever
+    its name; the part it sits on is what comes next ("that rack"). False when the clause says no such thing."""
+    words = frame.text.split()
+    if frame.verb is not None or len(frame.themes) != 1 or frame.themes[0].kind is None or not _SITTING & set(words):
+        return False
+    place = held_in(frame, frame.themes[0])
+    if place is None or place.kind is None:
+        return False
+    try:
+        parts, _ = builder.refs.resolve(place)
+    except GroundingError:
+        return False
+    builder.refs.remember(parts, [], topic=True)
+    builder.refs.assigned.setdefault(place.head, parts[0])
+    builder.notes.append(f"read '{frame.themes[0].words or frame.themes[0].head}' as a thing on {place.words or place.head}, not a part")
+    return True
 
 
 def set_topic(builder: Builder, frame: Frame) -> None:

@@ -149,7 +149,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
-                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, acts)):
+                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
                 if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
                     raise  # a clause that names parts but not which one is never skipped
@@ -158,7 +158,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
-    if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, acts)):
+    if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, frames)):
         skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)
     if not builder.steps:
         if skipped:

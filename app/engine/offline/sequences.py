@@ -195,13 +195,18 @@ def lock_object(builder: Builder, act: Act) -> bool:
     from app.engine.offline.completion import shut_open_doors
 
     goal = act.goal
-    named = builder.object_named or builder.refs.last_object  # "shut the safe and lock it by keying in 1-5-9": "it" is the safe
+    named = builder.object_named or builder.refs.last_object or not builder.refs.last  # "shut the safe and lock it ...": "it" is the safe
     if builder.frame_sense(goal) is not VerbSense.LOCK or not goal.themes or not all(m.is_object or (m.pronoun and named) for m in goal.themes):
         return False
     latches = [p for p in builder.parts if p.kind is not None and info(p.kind).latches_host]
-    if act.means is None and not goal.instruments and not latches:
+    dials = [p for p in builder.parts if p.kind is PartKind.KNOB and p.geometry.type == "continuous"]
+    if act.means is None and not goal.instruments and not latches and len(dials) != 1:
         return False
     shut_open_doors(builder, act, "locks")
+    if act.means is None and not goal.instruments and not latches:  # "lock up the safe": shut, then its one dial spun
+        builder.notes.append(f"read '{goal.text}' as its door shut, then {dials[0].link} (its one dial) spun to scramble it")
+        builder.complete(replace(act, parallel=False), VerbSense.SPIN, [], builder.moves(goal, VerbSense.SPIN, dials, ["dial"], None))
+        return True
     if act.means is not None:
         builder.add(replace(act, goal=act.means, means=None))
         return True

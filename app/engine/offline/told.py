@@ -47,6 +47,8 @@ def answer_stored(builder: Builder, acts: list[Act]) -> bool:
     if words[at:at + 1] == [] or words[at] not in _KEPT_PLACES or any(m.start < copula and m.kind is not None for m in frame.themes):
         return False
     places = [m for m in frame.themes if m.start > at and (m.kind is not None or m.is_object)]
+    if not places and frame.themes and (place := held_in(frame, frame.themes[0])) is not None:
+        places = [place]  # "the milk is behind the fridge door on the left": the place is said with the thing
     if len(places) != 1:
         return False
     if not added(builder, replace(told[0], condition=False, goal=open_holder(replace(frame, heading=False, stative=False), places[0]))):
@@ -119,7 +121,7 @@ def _told_of(frame: Frame, first: Mention | None, category: str | None) -> bool:
     thing = first is not None and first.kind is None and not first.pronoun and (
         not first.is_object or names_other_object(first.head, category))  # "the casserole" on an oven is a dish in it
     return first is not None and thing and (
-        frame.stative or (frame.wish and frame.verb is None and frame.link is Link.FIRST))
+        frame.stative or (frame.verb is None and frame.link is Link.FIRST))  # "the chicken on the top shelf needs basting"
 
 
 def _thing(mention: Mention, category: str | None) -> bool:
@@ -189,14 +191,18 @@ def told_how(frames: list[Frame]) -> list[Frame]:
 def held_in(frame: Frame, thing: Mention) -> Mention | None:
     """The part (or the object) that holds ``thing`` in ``frame``: "the napkins from the drawer", "the sodas are behind
     the left-hand fridge door", "the plates behind the cabinet door"; None when no such place is said."""
-    if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind:
-        return thing.relation[1]
+    related = thing.relation[1] if thing.relation is not None and thing.relation[0] in _FETCHED_FROM and thing.relation[1].kind else None
+    if related is not None and related.sides:
+        return related
     words = frame.text.split()
-    said = next((k for k, w in enumerate(words) if w in (thing.head, f"{thing.head}s", f"{thing.head}es")), None)
+    head = thing.head.split()[-1]  # "baking tray": its noun
+    said = next((k for k, w in enumerate(words) if w in (head, f"{head}s", f"{head}es")), None)
     begin = min(thing.end, said + 1 if said is not None else thing.end)  # the mention may reach over its place
     at = next((k for k in range(begin, len(words)) if words[k] in _FETCHED_FROM or words[k:k + 2] == ["out", "of"]), None)
     tail = parse_mentions(tokenize(" ".join(words[at + 1:]).replace(" 's", "'s")), 0) if at is not None else []  # "the lower oven 's rack"
-    return tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None
+    if related is not None and not (tail and tail[0].head == related.head and tail[0].sides):
+        return related
+    return tail[0] if tail and (tail[0].kind is not None or tail[0].is_object) else None  # "behind the fridge door on the left"
 
 
 _SLIDING = frozenset({PartKind.TRAY, PartKind.SHELF, PartKind.DRAWER})

@@ -59,6 +59,28 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 44 (state-dependent and coupled cases; spatial, sequenced, control and hold prompts, a third indirect) ---
+    R("extra/oven_7179", "The baking tray is sitting on the rack nearest the floor; slide that rack out for me.",  # a thing on the rack
+      joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
+    R("extra/oven_7179", "I need to get at the bottom rack in the oven.", joints={"joint_3": E(end="upper"), "joint_2": E(end="upper")}),
+    R("extra/oven_7179", "The chicken on the top shelf needs basting, bring it out where I can reach it.",
+      joints={"joint_4": E(end="upper"), "joint_0": E(end="upper"), "joint_3": E(still=True)}),
+    R("refrigerator_11178", "The milk is behind the fridge door on the left.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("refrigerator_11178", "Grab me a drink from the left side of the fridge, and don't leave the door hanging open.",
+      joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(still=True)}),
+    R("kitchen_pot_100038", "I just want to peek at the soup, then keep the heat in.", joints={"joint_0": E(peak=0.5, end=0.0)}),
+    R("oven_7138", "I need to check on the roast.", joints={"joint_0": E(end="upper")}),
+    R("extra/kitchen_pot_100015", "Let a bit of steam out of the pot.", joints={"joint_0": E(moves=True)}),
+    R("toilet_102622", "Somebody forgot to flush.", joints={"joint_1": E(peak=-0.012, end=0.0), "joint_0": E(still=True)}),
+    R("extra/safe_101623", "Open the safe door, but turn the little knob before you do.", joints={"joint_1": E(end="upper"), "joint_2": E(moves=True)},
+      order=(("joint_2", "joint_1"),)),
+    R("window_103135", "Close the window, but before that, open it all the way.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),
+    R("extra/box_100214", "Snap both clasps on the front of the box closed.",  # the lid they hold is shut first
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),
+    R("extra/box_100214", "I'm about to carry this box down the stairs, make sure it can't pop open on the way.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("safe_102387", "Lock up the safe.", joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
+    R("extra/suitcase_100550", "Pack a sweater into the suitcase and zip it back up.", joints={"joint_0": E(peak="upper", end=0.0)}),
     # --- blind round 43 (indirect prompts: complaints about the room, things kept, "too far"; spatial and sequenced) ---
     R("toilet_102622", "I need to use the toilet and the lid is in the way.", joints={"joint_0": E(end="upper")}),  # shut: in the way
     R("toaster_103477", "I'd like some toast.", joints={"joint_1": E(end=0.428)}),  # what it makes: the lever down, not up

@@ -363,7 +363,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         t.text in _RETURN_ADJECTIVES and (k == 0 or tokens[k - 1].text not in _POSSESSIVE_DETS))}  # "from where it's resting now", "you're starting"
     back_before = particle in ("up", "down", "in", "out") and particle_at is not None and particle_at > 0 and tokens[particle_at - 1].text == "back" and (
         particle_at < 2 or tokens[particle_at - 2].text not in ("the", "its", "toward", "towards")) and not (
-        particle == "down" and [t.text for t in tokens[particle_at + 1:particle_at + 2]] == ["on"])  # "set it back down", not "the one at the back down"
+        particle == "down" and [t.text for t in tokens[particle_at + 1:particle_at + 2]] == ["on"]) and not (
+        verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.CLOSE)  # "set it back down", not "the one at the back down"; "zip it back up": shut
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
         words & CENTRE_WORDS) or back_before
     hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra

@@ -33,6 +33,9 @@ def names_part(words: list[str], k: int) -> bool:
     return names_kind(words[k]) and not (k > 0 and words[k - 1] in _THING_MODIFIERS)
 
 
+_THINGS_OWNED = frozenset({"the", "my", "our", "that", "this", "his", "her"})
+
+
 def inside_end(tokens: list[Token], i: int) -> int:
     """The index after "check on the roast in there" / "look at what's inside" at ``i`` (a thing that is no part, inside the
     object, and nothing else said in the sentence), else 0."""
@@ -41,7 +44,8 @@ def inside_end(tokens: list[Token], i: int) -> int:
         end = clause  # "peek at the roast in the oven, then close it up again": the look, then the shutting
     words = [t.text for t in tokens[i + 1:end]]
     inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"]) or (
-        words[-3:-1] == ["in", "the"] and words[-1] in OBJECT_NOUNS)  # "peek at the roast in the oven"
+        words[-3:-1] == ["in", "the"] and words[-1] in OBJECT_NOUNS) or (  # "peek at the roast in the oven"
+        2 <= len(words) <= 4 and words[0] in ("on", "at") and words[1] in _THINGS_OWNED and words[-1] not in OBJECT_NOUNS)  # "check on the roast"
     if not inside or any(names_kind(w) for w in words):
         return 0
     return end

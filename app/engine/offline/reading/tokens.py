@@ -376,12 +376,14 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
     from app.engine.offline.reading.spelling import correct, correct_noun
+    from app.engine.offline.reading.told_order import told_order
+    from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = too_far(facing(drop_asides(corrections(drop_framing(known_forms(_join_numbers(_join_phrases(everyday_words(same_words(tokens))))))))))
+    tokens = told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens))))))))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

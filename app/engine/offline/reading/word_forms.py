@@ -187,7 +187,7 @@ def _let_through(tokens: list[Token], i: int) -> int:
     """The index after "let (some fresh) air in" / "let the steam out" at ``i`` when that is the whole request (something
     that is no part let through the object, and no motion said with it), else 0."""
     k = i + 1
-    while k < len(tokens) and k < i + 5 and tokens[k].text not in ("in", "out", "inside", "escape") and not tokens[k].is_punct:
+    while k < len(tokens) and k < i + 5 and tokens[k].text not in ("in", "out", "inside", "escape", "out_of") and not tokens[k].is_punct:
         k += 1
     thing = [w.text for w in tokens[i + 1:k]]
     if not thing or k >= len(tokens) or tokens[k].is_punct or any(w in ("it", "them", "go") or kind_of_word(w) is not None or w in OBJECT_NOUNS for w in thing):
@@ -195,7 +195,9 @@ def _let_through(tokens: list[Token], i: int) -> int:
     if i and tokens[i - 1].text in ("to", "and", "so"):
         return 0  # "hold the lid up to let the steam out": why, the motion is said
     end = k + 1
-    if [t.text for t in tokens[end:end + 2]] in (["from", "the"], ["out_of", "the"], ["from", "its"]) and end + 2 < len(tokens) and (
+    if tokens[k].text == "out_of" and [t.text for t in tokens[end:end + 1]] in (["the"], ["its"]) and end + 1 < len(tokens) and tokens[end + 1].text in OBJECT_NOUNS:
+        end += 2  # "let a bit of steam out of the pot"
+    elif [t.text for t in tokens[end:end + 2]] in (["from", "the"], ["out_of", "the"], ["from", "its"]) and end + 2 < len(tokens) and (
             tokens[end + 2].text in OBJECT_NOUNS):
         end += 3  # "let a bit of steam escape from the pot"
     elif [t.text for t in tokens[end:end + 2]] == ["through", "the"] and end + 2 < len(tokens) and (

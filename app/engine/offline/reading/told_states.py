@@ -1,0 +1,137 @@
+"""Requests told as states or as what was left undone, rewritten as the plain request the frame reader knows:
+
+- "somebody forgot to flush", "I forgot to lock it": flush, lock it;
+- "don't leave the door hanging open" (after a step that opened it): then close the door;
+- "keep the heat in", "keep the cold in": close it;
+- "the lid isn't sitting right", "the lid is not on properly": the lid is open (a complaint: it is shut);
+- "I need to get at the bottom rack": open it;
+- "make sure it can't pop open on the way": lock it (shut, then fastened).
+"""
+
+from __future__ import annotations
+
+from app.engine.lexicon.kinds import PartKind
+from app.engine.offline.reading.part_words import kind_of_word
+from app.engine.offline.reading.token import Token
+
+_SOMEONE = frozenset({"somebody", "someone", "i", "you", "we", "they", "he", "she", "the_kids", "kids"})
+_FORGOT = frozenset({"forgot", "forget", "forgets"})
+_DONT = (("don't",), ("dont",), ("do", "not"), ("never",))
+_LEFT_OPEN = (("hanging", "open"), ("open",), ("ajar",), ("wide", "open"), ("sticking", "out"), ("out",))
+_KEPT_IN = frozenset({"heat", "warmth", "cold", "steam", "smell", "flies", "bugs"})
+_NOT = (("isn't",), ("is", "not"), ("aren't",), ("are", "not"), ("not",))
+_SEATED = frozenset({"sitting", "seated", "on", "closed", "shut", "sealed"})
+_RIGHT = frozenset({"right", "to_the_right", "properly", "straight", "flat", "all_the_way", "fully", "tight"})
+
+
+def told_states(tokens: list[Token]) -> list[Token]:
+    out: list[Token] = []
+    k = 0
+    while k < len(tokens):
+        step = (_forgot_to(tokens, k, out) or _dont_leave(tokens, k, out) or _keep_in(tokens, k, out) or _not_seated(tokens, k, out)
+                or _get_at(tokens, k, out) or _cannot_open(tokens, k, out))
+        if step:
+            k += step
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
+
+
+def _words(tokens: list[Token], k: int, n: int) -> tuple[str, ...]:
+    return tuple(t.text for t in tokens[k:k + n])
+
+
+def _said(tokens: list[Token], k: int, n: int) -> str:
+    return " ".join(t.text for t in tokens[k:k + n])
+
+
+def _forgot_to(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"somebody forgot to flush": the step left undone (the person and "forgot to" go)."""
+    if k + 2 >= len(tokens) or tokens[k].text not in _SOMEONE or tokens[k + 1].text not in _FORGOT or tokens[k + 2].text != "to":
+        return 0
+    if out and not (out[-1].is_punct or out[-1].text in ("and", "but", "so")):
+        return 0
+    if k + 3 >= len(tokens) or tokens[k + 3].is_punct:
+        return 0
+    done = tokens[k + 3]
+    out.append(Token(done.text, done.lemma, done.start, done.end, corrected_from=_said(tokens, k, 4)))  # the step: "flush"
+    return 4
+
+
+def _dont_leave(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"(and) don't leave the door hanging open": close the door, as the next step."""
+    lead = next((len(d) for d in _DONT if _words(tokens, k, len(d)) == d), 0)
+    if not lead or _words(tokens, k + lead, 1) != ("leave",) or not out:
+        return 0
+    j = k + lead + 1
+    end = next((e for e in range(j + 1, min(len(tokens), j + 6)) for s in _LEFT_OPEN if _words(tokens, e, len(s)) == s), None)
+    if end is None:
+        return 0
+    state = next(s for s in _LEFT_OPEN if _words(tokens, end, len(s)) == s)
+    at = tokens[k]
+    if out[-1].text not in (",", "and", "then", "but"):
+        out.append(Token(",", ",", at.start, at.end))
+    out += [Token("then", "then", at.start, at.end), Token("close", "close", at.start, at.end, corrected_from=_said(tokens, k, end + len(state) - k)),
+            *tokens[j:end]]
+    return end + len(state) - k
+
+
+def _keep_in(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"keep the heat in": close it."""
+    words = _words(tokens, k, 4)
+    if words[:1] != ("keep",) or len(words) < 3:
+        return 0
+    n = 3 if words[1] in _KEPT_IN and words[2] == "in" else 4 if len(words) == 4 and words[1] == "the" and words[2] in _KEPT_IN and words[3] == "in" else 0
+    if not n:
+        return 0
+    at = tokens[k]
+    out += [Token("close", "close", at.start, at.end, corrected_from=_said(tokens, k, n)), Token("it", "it", at.start, at.end)]
+    return n
+
+
+def _not_seated(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"the lid isn't sitting right": the lid is open (told as a complaint)."""
+    lead = next((len(n) for n in _NOT if _words(tokens, k, len(n)) == n), 0)
+    if not lead or not out or out[-1].is_punct or _words(tokens, k + lead, 1)[:1] == () or tokens[k + lead].text not in _SEATED:
+        return 0
+    if _words(tokens, k + lead + 1, 1)[:1] == () or tokens[k + lead + 1].text not in _RIGHT:
+        return 0
+    at = tokens[k]
+    out += [Token("is", "is", at.start, at.end), Token("open", "open", at.start, at.end, corrected_from=_said(tokens, k, lead + 2))]
+    return lead + 2
+
+
+def _get_at(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"I need to get at the bottom rack": open it (a rack or drawer comes out) to reach it; a control is only reached."""
+    if tokens[k].text != "get_at" or not _words(tokens, k + 1, 1) or tokens[k + 1].text not in ("the", "that", "this", "my", "its"):
+        return 0
+    kinds = [kind for t in tokens[k + 2:k + 6] if (kind := kind_of_word(t.text)) is not None]
+    if not kinds or kinds[0] not in _REACHED_BY_OPENING:
+        return 0
+    at = tokens[k]
+    out.append(Token("open", "open", at.start, at.end, corrected_from="get at"))
+    return 1
+
+
+_REACHED_BY_OPENING = frozenset({PartKind.SHELF, PartKind.TRAY, PartKind.DRAWER, PartKind.DOOR, PartKind.LID, PartKind.FLAP})
+
+
+_CANNOT = frozenset({"can't", "cannot", "won't", "doesn't", "don't", "wont", "cant"})
+_COMES_OPEN = frozenset({"pop", "come", "fall", "swing", "spring", "fly", "slide", "get"})
+
+
+def _cannot_open(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"make sure it can't pop open (on the way)": lock it."""
+    if _words(tokens, k, 2) != ("make", "sure"):
+        return 0
+    neg = next((j for j in range(k + 2, min(len(tokens), k + 7)) if tokens[j].text in _CANNOT), None)
+    if neg is None or neg == k + 2:
+        return 0
+    j = neg + 1 + (neg + 1 < len(tokens) and tokens[neg + 1].text in _COMES_OPEN)
+    if _words(tokens, j, 1) != ("open",):
+        return 0
+    end = next((e for e in range(j + 1, len(tokens)) if tokens[e].is_punct), len(tokens))  # "on the way": when, not what
+    at = tokens[k]
+    out += [Token("lock", "lock", at.start, at.end, corrected_from=_said(tokens, k, end - k)), *tokens[k + 2:neg]]
+    return end - k
