@@ -231,7 +231,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("unclasp", S.UNLATCH),
     VerbInfo("free", S.UNLATCH),
     VerbInfo("lock", S.LOCK, _p(up=S.LOCK)),
-    VerbInfo("latch", S.LOCK),
+    VerbInfo("latch", S.LOCK, _p(up=S.LOCK, shut=S.LOCK, closed=S.LOCK)),  # "latch it up": fastened, not lifted
     # generic operation
     VerbInfo("operate", S.OPERATE),
     VerbInfo("use", S.OPERATE),

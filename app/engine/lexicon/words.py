@@ -343,7 +343,7 @@ BODY_WORDS = _ONLY_BODY | {f"{w}s" for w in _ONLY_BODY} | frozenset({"head", "le
 BELONGING_KEYS = frozenset({"keys", "keyring", "key-ring"})
 """Keys a person owns ("my keys", "the car keys"): things kept somewhere, never the keys of a keypad."""
 COMPLAINED_STATES: Mapping[str, str] = MappingProxyType({
-    "open": "close", "opened": "close", "ajar": "close", "out": "close", "sticking_out": "close", "hanging_open": "close",
+    "open": "close", "opened": "close", "ajar": "close", "wide_open": "close", "out": "close", "sticking_out": "close", "hanging_open": "close",
     "up": "lower", "raised": "lower", "down": "raise", "lowered": "raise", "on": "switch_off", "running": "switch_off",
     "closed": "open", "shut": "open"})
 """A part's state told with no action ("the lower drawer is sticking out and I keep bumping my knee on it", "the toilet
@@ -351,6 +351,7 @@ seat is up again"): the sense of the verb that puts it the other way, when nothi
 _STUFFY = ("open", ("window", "door"), "")
 _DRAUGHTY = ("close", ("window", "door"), "")
 _GETTING_IN = ("close", ("lid", "door", "window"), "")
+_SMELLY = ("close", ("lid",), "")
 _DARK = ("switch_on", ("switch",), "")
 _BRIGHT = ("switch_off", ("switch",), "")
 _WASHING = ("switch_on", ("handle", "lever", "switch", "knob"), "faucet")
@@ -360,7 +361,9 @@ ROOM_COMPLAINTS: Mapping[str, tuple[str, tuple[str, ...], str]] = MappingProxyTy
     "stuffy": _STUFFY, "muggy": _STUFFY, "stifling": _STUFFY, "airless": _STUFFY, "stale": _STUFFY,
     "draft": _DRAUGHTY, "draught": _DRAUGHTY, "drafty": _DRAUGHTY, "draughty": _DRAUGHTY, "chilly": _DRAUGHTY, "freezing": _DRAUGHTY,
     "dust": _GETTING_IN, "bugs": _GETTING_IN, "flies": _GETTING_IN, "mosquitoes": _GETTING_IN, "rain": _GETTING_IN,
-    "soapy": _WASHING, "sticky": _WASHING, "greasy": _WASHING, "thirsty": _WASHING, "rinse": _WASHING})
+    "soapy": _WASHING, "sticky": _WASHING, "greasy": _WASHING, "thirsty": _WASHING, "rinse": _WASHING,
+    "cat": _GETTING_IN, "dog": _GETTING_IN, "mice": _GETTING_IN, "mouse": _GETTING_IN,
+    "stinkin": _SMELLY, "stinking": _SMELLY, "stinks": _SMELLY, "smelly": _SMELLY, "reeks": _SMELLY, "stench": _SMELLY})
 """How the room is, told with no action ("it's way too dark in here", "it's stuffy in here", "there's a cold draft coming
 through the doorway", "I don't want dust getting into this box"): the sense to work the part in, the kinds of part
 that answer it (the first the object has one of), and the one category of object it is said of ("" for any)."""

@@ -22,7 +22,8 @@ if TYPE_CHECKING:
 _COPULAS = frozenset({"is", "are", "was", "were", "been", "left", "keeps", "stays", "still", "always", "again", "now", "all", "the", "way",
                       "wide", "sticking", "hanging", "standing", "poking", "sitting", "partly", "half", "a", "bit", "little", "slightly"})
 _SOMEONE = frozenset({"someone", "somebody", "they", "you", "he", "she", "kids", "i", "we", "who"})
-_TWO_WORD = {("sticking", "out"): "sticking_out", ("poking", "out"): "sticking_out", ("hanging", "open"): "hanging_open"}
+_TWO_WORD = {("sticking", "out"): "sticking_out", ("poking", "out"): "sticking_out", ("hanging", "open"): "hanging_open",
+             ("sticking", "up"): "up", ("straight", "up"): "up"}
 
 
 def mishap(act: Act) -> bool:
@@ -48,18 +49,24 @@ def complained(act: Act) -> tuple[VerbSense, str] | None:
     if not frame.themes or (frame.verb is not None and frame.verb not in ("have", "leave", "keep", "stick", "hang", "get")):
         return None
     words = frame.text.split()
-    end = max(m.end for m in frame.themes)
+    copula = next((k for k, w in enumerate(words) if w in ("is", "are", "was", "were")), len(words))
+    end = max((m.end for m in frame.themes if m.start < copula), default=max(m.end for m in frame.themes))  # not "... anyone can see my stuff"
     tail = [w for w in words[end:] if w not in ("again", "still", "now", "please", ".", "!", ",")]
     if _in_the_way(tail):
         return VerbSense.TOGGLE, "in the way"  # the pose decides which way is out of the way (``_out_of_the_way``)
     for a, b in pairwise(tail):
         if (a, b) in _TWO_WORD:
             return VerbSense(COMPLAINED_STATES[_TWO_WORD[a, b]]), f"{a} {b}"
+    at = next((k for k, w in enumerate(tail) if w in COMPLAINED_STATES and k + 1 < len(tail) and tail[k + 1] in _WHO_ELSE), len(tail) - 1)
+    tail = tail[:at + 1]  # "the safe is wide open anyone can see my stuff": the state, then what it lets happen
     state = tail[-1] if tail else ""
     told = any(w in ("is", "are", "was", "were", "left", "been") for w in tail[:-1]) or (words[0] in _SOMEONE and words[1:2] == ["had"])
     if state in COMPLAINED_STATES and all(w in _COPULAS for w in tail[:-1]) and told:
         return VerbSense(COMPLAINED_STATES[state]), state
     return None
+
+
+_WHO_ELSE = frozenset({"anyone", "anybody", "everyone", "everybody", "someone", "somebody", "people", "and", "so", "the", "it", "i", "you", "we"})
 
 
 _WAY_OWNERS = frozenset({"the", "my", "our", "your"})
@@ -141,14 +148,15 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
                                                                     quantities=replace(act.goal.quantities, amount=None)))):
         return False
     _superseded(builder, act.goal.text)
+    builder.turned.update(f.clause for f in frames)  # "... is hanging open and the cat keeps getting in": shut, as asked
     thing = "the light" if kinds == ("switch",) else f"the {part.kind}"
     done = {VerbSense.SWITCH_ON: f"turn {thing} on", VerbSense.SWITCH_OFF: f"turn {thing} off"}.get(sense, f"{sense.value} {thing}")
     builder.notes.append(f"no action was asked: read '{' '.join(told)}' as a wish to {done}")
     return True
 
 
-_FINISHED = frozenset({"done", "finished", "through"})
-_LEADS = frozenset({"ok", "okay", "right", "so", "well", "alright", "and", ","})
+_FINISHED = frozenset({"done", "finished", "through", "packed"})
+_LEADS = frozenset({"ok", "okay", "right", "so", "well", "alright", "and", ",", "all"})
 _USER_IS = (("i'm",), ("i", "am"), ("we're",), ("we", "are"), ("i've", "been"), ("i've",), ("we've",), ("i", "have"))
 
 
@@ -159,8 +167,8 @@ def answer_finished(builder: Builder, frames: list[Frame]) -> bool:
         words = act.goal.text.split()
         while words and words[0] in _LEADS:
             words = words[1:]  # "OK, I've finished packing the suitcase"
-        said = next((len(lead) for lead in _USER_IS if tuple(words[:len(lead)]) == lead), 0)
-        if not said or words[said:said + 1] == [] or words[said] not in _FINISHED or any(m.kind is not None for m in act.goal.themes):
+        said = next((len(lead) for lead in _USER_IS if tuple(words[:len(lead)]) == lead), 0)  # "done with work for today": the user
+        if words[said:said + 1] == [] or words[said] not in _FINISHED or any(m.kind is not None for m in act.goal.themes):
             continue
         whole = Mention(head="it", is_object=True, words=builder.asset.name)
         goal = replace(act.goal, verb="close", sense=VerbSense.CLOSE, themes=(whole,), instruments=(), heading=False, stative=False,

@@ -69,7 +69,10 @@ def condition(builder: Builder, act: Act) -> None:
     try:
         parts, words = builder.ground(frame, VerbSense.OPEN, frame.themes) if frame.themes else ([], [])
     except GroundingError:
-        if (each := _each_alone(builder, frame)) is None:
+        if (each := _each_alone(builder, frame)) is None and "already" in frame.text.split():
+            builder.notes.append(f"ignored '{frame.text}': how things already are, no step")  # "The combination is already dialled in."
+            return
+        if each is None:
             raise
         parts, words = each, []  # "There's a big wheel on the door and a smaller dial higher up": both, each named alone
     words_in = set(frame.text.split())

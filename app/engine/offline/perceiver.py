@@ -32,7 +32,7 @@ from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
-from app.engine.offline.stated import record_release
+from app.engine.offline.stated import record_release, stated_latched
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.whole_object import whole_named
@@ -134,7 +134,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"did not animate '{act.goal.text}': tilting the whole {asset.name} is not animated, only moving and turning it")
                 builder.refs.last_object = True
                 continue  # "tilt the bin back and wheel it backwards": the wheeling is animated, and "it" is the bin
-            if act is not acts[-1] and record_release(builder, act):
+            if act is not acts[-1] and (record_release(builder, act) or stated_latched(builder, act)):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)
@@ -151,8 +151,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
                 if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
-                if len(acts) < 2 or not _incidental(act.goal) or exc.candidates:
-                    raise  # a clause that names parts but not which one is never skipped
+                if len(acts) < 2 or not _incidental(act.goal) or (exc.candidates and not {"already"} & set(act.goal.text.split())):
+                    raise  # a clause that names parts but not which one is never skipped, unless it tells how things already are
                 skipped.append(exc)
                 set_topic(builder, act.goal)
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")

@@ -57,3 +57,31 @@ def record_release(builder: Builder, act: Act) -> bool:
     builder.notes.append(f"read '{act.goal.text}' as how {builder.asset.name} works: the {control_words.head} ({controls[0].joint}) "
                          f"releases {'the ' + host_words.head if host_words is not None else 'what holds it shut'}")
     return True
+
+
+_STUCK = frozenset({"latched", "locked", "stuck", "jammed"})
+
+
+def stated_latched(builder: Builder, act: Act) -> bool:
+    """"The microwave door is latched and won't pull open. Get it open.": the part is held shut, so opening it works the
+    one control that releases it (recorded, with a note; True). False when the clause says no such thing or the part has
+    no such control."""
+    from app.engine.offline import mechanisms as mech
+
+    words = act.goal.text.split()
+    said = next((k for k, w in enumerate(words) if w in _STUCK), None)
+    if said is None or said == 0 or words[said - 1] not in ("is", "are", "'s", "seems", "feels") or len(act.goal.themes) != 1:
+        return False
+    try:
+        parts, _ = builder.refs.resolve(act.goal.themes[0])
+    except GroundingError:
+        return False
+    if len(parts) != 1 or parts[0].joint in builder.tracker.releases:
+        return False
+    release = mech.controls_for(parts[0], builder.parts, builder.tracker, builder.excluded, popped=True)
+    if not release:
+        return False
+    builder.tracker.releases[parts[0].joint] = release[0]
+    builder.refs.remember(parts, [])
+    builder.notes.append(f"read '{act.goal.text}' as {parts[0].link} held shut: {release[0].link} ({release[0].joint}) releases it")
+    return True

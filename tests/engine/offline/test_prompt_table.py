@@ -81,6 +81,24 @@ ROWS: list[Row] = [
       joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
     R("safe_102387", "Lock up the safe.", joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
     R("extra/suitcase_100550", "Pack a sweater into the suitcase and zip it back up.", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("extra/microwave_7128", "The microwave door is latched and won't pull open. Get it open.",  # held shut: its release is worked
+      joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
+    R("extra/box_100214", "latch it up", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),  # not lifted
+    R("extra/box_100214", "Make sure this chest can't flop open - latch it up.",
+      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
+    R("laptop_10101", "Done with work for today, don't leave the screen sticking up.", joints={"joint_1": E(end=LAPTOP_10101_CLOSED)}),
+    R("storage_23472", "Where did I put the cleaning stuff? Have a look in the cupboard at the bottom.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),
+    R("extra/safe_102380", "teh safe is wide opne anyone can see my stuff", joints={"joint_2": E(end="lower")}),
+    R("suitcase_103762", "All packed - the case shouldn't be gaping open like that.", joints={"joint_0": E(end="lower"), "joint_1": E(still=True)}),
+    R("bucket_100454", "I can't stack buckets with that handle sticking straight up.", joints={"joint_0": E(moves=True)}),
+    R("safe_101593", "The combination is already dialled in. Get the safe open using the spoked wheel.",
+      joints={"joint_0": E(end="upper"), "joint_1": E(moves=True), "joint_2": E(still=True)}, order=(("joint_1", "joint_0"),)),
+    R("microwave_7304", "Peek inside the microwave, then leave the door the way you found it.", joints={"joint_1": E(peak="upper", end=0.0)}),
+    R("safe_102387", "Swing the safe door all the way open, then leave it as it was.", joints={"joint_0": E(peak="upper", end=0.0)}),
+    R("faucet_991", "Run the hot water for a moment, then turn it off.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
+    R("refrigerator_11178", "I need to look in the left side of the fridge for about five seconds, then it should be shut again.",
+      joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(still=True)}),
     # --- blind round 43 (indirect prompts: complaints about the room, things kept, "too far"; spatial and sequenced) ---
     R("toilet_102622", "I need to use the toilet and the lid is in the way.", joints={"joint_0": E(end="upper")}),  # shut: in the way
     R("toaster_103477", "I'd like some toast.", joints={"joint_1": E(end=0.428)}),  # what it makes: the lever down, not up

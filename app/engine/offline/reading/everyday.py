@@ -220,6 +220,16 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         elif t.text == "left" and before in ("i", "you", "we", "they", "he", "she", "who", "someone", "somebody", "kids", "people"):
             t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
+        elif t.text in _TAP_SIDES and after == "water" and before in ("the", "me", "some"):
+            if [w.text for w in out[-2:]] == ["give", "me"]:
+                out[-2:] = [Token("run", "run", out[-2].start, out[-2].end, corrected_from="give me")]  # "give me cold water": run it
+            if out and out[-1].text == "some":
+                out.pop()
+            out += [Token("the", "the", t.start, t.start)] if not out or out[-1].text != "the" else []
+            out += [Token("water", "water", t.start, t.end), *(Token(w, w, t.start, t.end) for w in ("to", "the")),
+                    Token(_TAP_SIDES[t.text], _TAP_SIDES[t.text], t.start, t.end, corrected_from=f"{t.text} water")]
+            skip = i + 1
+            continue  # "run the hot water", "give me cold water": the water, run on that side
         elif t.text in _TAP_SIDES and before in ("toward", "towards", "to", "max", "full", "fully", "the", "all_the_way"):
             side = _TAP_SIDES[t.text]  # a mixer tap: hot is the viewer's left, cold the right (the convention the notes state)
             if before in ("max", "full", "fully") or t.text.endswith("est"):

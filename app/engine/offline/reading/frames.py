@@ -39,6 +39,7 @@ from app.engine.lexicon.words import (
 from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.first_one import first_of
+from app.engine.offline.reading.held_for import held_for
 from app.engine.offline.reading.light_verbs import light_verb
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
@@ -367,7 +368,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.CLOSE)  # "set it back down", not "the one at the back down"; "zip it back up": shut
     returning = sense is VerbSense.RETURN or bool(said_return) or (particle == "back" and sense in (VerbSense.RETURN, None)) or bool(
         words & CENTRE_WORDS) or back_before
-    hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra
+    hold = sense is VerbSense.HOLD or verb in ("hold", "keep", "prop") or "hold" in extra or "keep" in extra or held_for(
+        tokens, sense, quantities.speed_mps is not None or quantities.omega_radps is not None or quantities.speed_factor != 1.0)
     return Frame(
         clause=clause.index, text=clause.text, verb=verb, sense=sense, particle=particle, themes=tuple(themes), instruments=tuple(instruments),
         subject_theme=subject_theme, quantities=quantities, returning=returning, hold=hold, let=let, link=clause.link,

@@ -51,6 +51,17 @@ def inside_end(tokens: list[Token], i: int) -> int:
     return end
 
 
+def looked_into(tokens: list[Token], i: int) -> int:
+    """At "peek"/"look" of "peek inside the microwave", "look in the cupboard at the bottom" (the object, or a part that
+    holds things, and nothing else in the clause): the index after it, else 0."""
+    end = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("and", "then", "and_then", "to", "for", "so")), len(tokens))
+    words = [t.text for t in tokens[i + 2:end]]
+    if not 2 <= len(words) <= 6 or words[0] not in ("the", "that", "this", "its"):
+        return 0
+    named = [w for w in words[1:] if w in OBJECT_NOUNS or names_kind(w)]
+    return end if named and (named[0] in OBJECT_NOUNS or named[0] in COMPARTMENTS) else 0
+
+
 _DOING = frozenset({"doing", "done", "cooked", "ready", "coming", "getting"})
 
 

@@ -5,7 +5,11 @@
 - "keep the heat in", "keep the cold in": close it;
 - "the lid isn't sitting right", "the lid is not on properly": the lid is open (a complaint: it is shut);
 - "I need to get at the bottom rack": open it;
-- "make sure it can't pop open on the way": lock it (shut, then fastened).
+- "make sure it can't pop open on the way": lock it (shut, then fastened);
+- "then leave it as it was", "leave the door the way you found it": put it back;
+- "Where did I put the cleaning stuff? Have a look in ...": the question asks for no step (it goes);
+- "the case shouldn't be gaping open", "I can't stack buckets with that handle sticking straight up": the part is open
+  (up), told as a complaint.
 """
 
 from __future__ import annotations
@@ -17,7 +21,8 @@ from app.engine.offline.reading.token import Token
 _SOMEONE = frozenset({"somebody", "someone", "i", "you", "we", "they", "he", "she", "the_kids", "kids"})
 _FORGOT = frozenset({"forgot", "forget", "forgets"})
 _DONT = (("don't",), ("dont",), ("do", "not"), ("never",))
-_LEFT_OPEN = (("hanging", "open"), ("open",), ("ajar",), ("wide", "open"), ("sticking", "out"), ("out",))
+_LEFT_OPEN = (("hanging", "open"), ("open",), ("ajar",), ("wide", "open"), ("sticking", "out"), ("out",), ("sticking", "up"), ("standing", "up"),
+              ("up",))
 _KEPT_IN = frozenset({"heat", "warmth", "cold", "steam", "smell", "flies", "bugs"})
 _NOT = (("isn't",), ("is", "not"), ("aren't",), ("are", "not"), ("not",))
 _SEATED = frozenset({"sitting", "seated", "on", "closed", "shut", "sealed"})
@@ -29,7 +34,8 @@ def told_states(tokens: list[Token]) -> list[Token]:
     k = 0
     while k < len(tokens):
         step = (_forgot_to(tokens, k, out) or _dont_leave(tokens, k, out) or _keep_in(tokens, k, out) or _not_seated(tokens, k, out)
-                or _get_at(tokens, k, out) or _cannot_open(tokens, k, out))
+                or _get_at(tokens, k, out) or _cannot_open(tokens, k, out) or _left_as_found(tokens, k, out) or _asked_where(tokens, k, out)
+                or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out))
         if step:
             k += step
             continue
@@ -118,7 +124,7 @@ _REACHED_BY_OPENING = frozenset({PartKind.SHELF, PartKind.TRAY, PartKind.DRAWER,
 
 
 _CANNOT = frozenset({"can't", "cannot", "won't", "doesn't", "don't", "wont", "cant"})
-_COMES_OPEN = frozenset({"pop", "come", "fall", "swing", "spring", "fly", "slide", "get"})
+_COMES_OPEN = frozenset({"pop", "come", "fall", "swing", "spring", "fly", "slide", "get", "flop", "flip", "drop"})
 
 
 def _cannot_open(tokens: list[Token], k: int, out: list[Token]) -> int:
@@ -135,3 +141,66 @@ def _cannot_open(tokens: list[Token], k: int, out: list[Token]) -> int:
     at = tokens[k]
     out += [Token("lock", "lock", at.start, at.end, corrected_from=_said(tokens, k, end - k)), *tokens[k + 2:neg]]
     return end - k
+
+
+_AS_FOUND = (("as_it_was",), ("as_they_were",), ("the", "way", "it", "was"), ("the", "way", "you", "found", "it"), ("how", "you", "found", "it"),
+             ("as", "you", "found", "it"), ("the", "way", "they", "were"), ("the", "way", "you", "found", "them"), ("how", "it", "was"))
+
+
+def _left_as_found(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"then leave it as it was", "leave the door the way you found it": put it back (where it was before)."""
+    if tokens[k].text != "leave":
+        return 0
+    for n in range(1, 5):
+        said = next((a for a in _AS_FOUND if _words(tokens, k + 1 + n, len(a)) == a), None)
+        if said is not None:
+            at = tokens[k]
+            out += [Token("put", "put", at.start, at.end, corrected_from=_said(tokens, k, 1 + n + len(said))), *tokens[k + 1:k + 1 + n],
+                    Token("back", "back", at.start, at.end)]
+            return 1 + n + len(said)
+    return 0
+
+
+def _asked_where(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"Where did I put the cleaning stuff?" followed by a request: the question goes."""
+    if tokens[k].text not in ("where", "what") or (out and not out[-1].is_sentence_end):
+        return 0
+    end = next((j for j in range(k, len(tokens)) if tokens[j].is_sentence_end), len(tokens))
+    return end + 1 - k if end < len(tokens) - 1 and tokens[end].text == "?" else 0
+
+
+_HOW_IT_HANGS = frozenset({"gaping", "hanging", "standing", "sitting", "left", "wide", "sticking", "poking", "straight"})
+_STATE_WORDS = {"open": "open", "up": "up", "out": "out", "ajar": "ajar", "straight_up": "up"}
+
+
+def _should_not_be(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"the case shouldn't be gaping open like that": the case is open (a complaint)."""
+    lead = 2 if _words(tokens, k, 2) == ("shouldn't", "be") else 3 if _words(tokens, k, 3) == ("should", "not", "be") else 0
+    if not lead or not out:
+        return 0
+    j = k + lead
+    while j < len(tokens) and tokens[j].text in _HOW_IT_HANGS:
+        j += 1
+    if j >= len(tokens) or tokens[j].text not in _STATE_WORDS:
+        return 0
+    at = tokens[k]
+    out += [Token("is", "is", at.start, at.end), Token(_STATE_WORDS[tokens[j].text], _STATE_WORDS[tokens[j].text], at.start, at.end,
+                                                         corrected_from=_said(tokens, k, j + 1 - k))]
+    end = j + 1 + (j + 1 < len(tokens) and tokens[j + 1].text in ("like_that", "like", "again"))
+    return end - k
+
+
+def _with_sticking(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"... with that handle sticking straight up": a clause of its own, "that handle is up" (a complaint)."""
+    if tokens[k].text != "with" or not _words(tokens, k + 1, 1) or tokens[k + 1].text not in ("that", "the", "this", "its", "my"):
+        return 0
+    verb = next((j for j in range(k + 2, min(len(tokens), k + 6)) if tokens[j].text in ("sticking", "poking", "standing", "hanging")), None)
+    if verb is None:
+        return 0
+    j = verb + 1 + (verb + 1 < len(tokens) and tokens[verb + 1].text == "straight")
+    if j >= len(tokens) or tokens[j].text not in _STATE_WORDS or (j + 1 < len(tokens) and not tokens[j + 1].is_punct):
+        return 0
+    at = tokens[k]
+    out += [Token(",", ",", at.start, at.end), *tokens[k + 1:verb], Token("is", "is", at.start, at.end),
+            Token(_STATE_WORDS[tokens[j].text], _STATE_WORDS[tokens[j].text], at.start, at.end, corrected_from=_said(tokens, k, j + 1 - k))]
+    return j + 1 - k

@@ -30,7 +30,8 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
     for j in range(k + 1, len(tokens) - 1):
         must = 3 if words[j:j + 3] in (["needs", "to", "be"], ["need", "to", "be"], ["has", "to", "be"], ["have", "to", "be"]) else (
             2 if words[j:j + 2] in (["should", "be"], ["must", "be"]) else 0)
-        if must and words[k] in DETERMINERS and j + must < len(tokens) and tokens[j + must].text not in ("a", "an", "the"):
+        if must and (words[k] in DETERMINERS or (words[k] in ("it", "they") and j == k + 1)) and j + must < len(tokens) and (
+                tokens[j + must].text not in ("a", "an", "the")):  # "then it should be shut again"
             done = tokens[j + must]
             if done.text in WISHED_SENSES and done.text not in STATES:  # "the pot needs to be covered": closed
                 done = replace(done, text=_STATE_OF[WISHED_SENSES[done.text]], lemma=_STATE_OF[WISHED_SENSES[done.text]])

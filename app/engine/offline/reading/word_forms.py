@@ -31,6 +31,7 @@ from app.engine.offline.reading.holders import (
     heated,
     inside_end,
     looked_inside,
+    looked_into,
     names_kind,
     packed,
     stowed,
@@ -309,6 +310,9 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
                 Token("it", "it", t.start, t.start)]  # "let me check on the roast in there": open it to look inside
         return end
+    if t.text in ("check", "look", "peek", "peep", "glance") and after[:1] and after[0] in ("inside", "into", "in") and (end := looked_into(tokens, i)):
+        out += [Token("open", "open", t.start, tokens[i + 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])), *tokens[i + 2:end]]
+        return end  # "peek inside the microwave", "look in the cupboard at the bottom": open it to look in
     if t.text in ("see", "check") and after[:1] and after[0] in ("how", "if", "whether") and (end := asked_after(tokens, i)):
         out += [Token("open", "open", t.start, tokens[end - 1].end, corrected_from=" ".join(w.text for w in tokens[i:end])),
                 Token("it", "it", t.start, t.start)]  # "let me see how the soup is doing": open it to look inside
