@@ -82,8 +82,8 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     controls, effects, coupled = mech.couple(controls, effects, builder.tracker)
     if coupled:
         builder.notes.append(coupled)
-    if sense is VerbSense.LOCK or (sense is VerbSense.CLOSE and all(mech.kind_of(m.part) is PartKind.LATCH for m in controls + effects)):
-        _shut_before_fastening(builder, act, controls + effects)  # "snap both clasps closed" is fastening them
+    if sense is VerbSense.LOCK:
+        _shut_before_fastening(builder, act, controls + effects)
     if sense in (VerbSense.CLOSE, VerbSense.LOWER) and not controls:
         controls = _let_go_first(builder, effects)
     _prerequisites(builder, act, effects + [m for m in controls if m.role == "direct"])

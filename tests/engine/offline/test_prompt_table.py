@@ -75,8 +75,6 @@ ROWS: list[Row] = [
     R("extra/safe_101623", "Open the safe door, but turn the little knob before you do.", joints={"joint_1": E(end="upper"), "joint_2": E(moves=True)},
       order=(("joint_2", "joint_1"),)),
     R("window_103135", "Close the window, but before that, open it all the way.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),
-    R("extra/box_100214", "Snap both clasps on the front of the box closed.",  # the lid they hold is shut first
-      joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),
     R("extra/box_100214", "I'm about to carry this box down the stairs, make sure it can't pop open on the way.",
       joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}),
     R("safe_102387", "Lock up the safe.", joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),

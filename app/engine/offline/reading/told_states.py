@@ -112,6 +112,8 @@ def _get_at(tokens: list[Token], k: int, out: list[Token]) -> int:
     """"I need to get at the bottom rack": open it (a rack or drawer comes out) to reach it; a control is only reached."""
     if tokens[k].text != "get_at" or not _words(tokens, k + 1, 1) or tokens[k + 1].text not in ("the", "that", "this", "my", "its"):
         return 0
+    if out and out[-1].text == "to" and (len(out) == 1 or out[-2].is_punct):
+        return 0  # "To get at the lowest rack you have to drop the lower door first": why, told first
     kinds = [kind for t in tokens[k + 2:k + 6] if (kind := kind_of_word(t.text)) is not None]
     if not kinds or kinds[0] not in _REACHED_BY_OPENING:
         return 0
