@@ -49,6 +49,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
         return False  # "lift it halfway back up": a fraction of a part's range, not of the object's
     if pronoun and after_part and frame.returning and quantities.axis is None and quantities.direction in (None, "up", "down"):
         return False  # "then lift it back up to its starting angle": the part goes back, "back" is no direction here
+    if pronoun and after_part and (frame.sense is VerbSense.TURN or frame.verb in _TURNING) and quantities.axis is None:
+        return False  # "the handle is hanging down - turn it up so it points to the left": the handle turns
     if pronoun and after_part:
         explicit_back = frame.particle != "back" or any(w in frame.text.split() for w in ("backward", "backwards"))
         if not (quantities.axis is not None or frame.verb in _OBJECT_ONLY or (directional and explicit_back)):
@@ -156,3 +158,4 @@ def whole_named(frame: Frame, category: str | None) -> Frame:
 
 
 _STOWING = frozenset({"put", "pack", "stow", "tuck"})
+_TURNING = frozenset({"turn", "rotate", "twist", "swivel"})

@@ -97,6 +97,10 @@ ROWS: list[Row] = [
     R("faucet_991", "Run the hot water for a moment, then turn it off.", joints={"joint_0": E(peak=PI / 2, end=0.0)}),
     R("refrigerator_11178", "I need to look in the left side of the fridge for about five seconds, then it should be shut again.",
       joints={"joint_0": E(peak="upper", end=0.0), "joint_1": E(still=True)}),
+    R("extra/safe_101612", "The handle on the safe is hanging straight down - turn it up so it points to the right.",
+      joints={"joint_2": E(moves=True)}),  # the handle turns; the safe does not move
+    R("safe_102387", "Push the door shut, and only once it's closed give the knob a twist to lock it.",
+      joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(moves=True)}, order=(("joint_0", "joint_1"),)),
     # --- blind round 43 (indirect prompts: complaints about the room, things kept, "too far"; spatial and sequenced) ---
     R("toilet_102622", "I need to use the toilet and the lid is in the way.", joints={"joint_0": E(end="upper")}),  # shut: in the way
     R("toaster_103477", "I'd like some toast.", joints={"joint_1": E(end=0.428)}),  # what it makes: the lever down, not up

@@ -256,7 +256,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt) or _someone_does(tuple(tokens[nxt:])))):
             boundary = (Link.SEQUENCE, word, False)
         elif marker in ("once", "when", "after") and len(current) >= 2 and current[-1].text in _DONE_STATES and (word == "," or (
-                verb_at(tokens, i) and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
+                (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS) and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
             boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there, do the right door"
             nxt = nxt if word == "," else i
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
