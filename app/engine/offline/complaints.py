@@ -129,7 +129,7 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
     worked (the switch on, the window open, the door or lid shut), with a note; False when the words say nothing of the
     room or the object has not exactly one such part."""
     told = [f.text for f in frames]  # "I don't want dust getting in": said as what not to have (no act)
-    said = {ROOM_COMPLAINTS[w] for text in told for w in text.split() if w in ROOM_COMPLAINTS}
+    said = {ROOM_COMPLAINTS[w] for f in frames for w in f.text.split() if w in ROOM_COMPLAINTS and w not in (f.verb, f.guessed_verb)}  # not "dim the lights"
     if len(said) != 1:
         return False
     (sense_name, kinds, category), = said

@@ -188,6 +188,10 @@ def _spin(quantities: Quantities, geometry: JointGeometry, tracker: Tracker) -> 
     return Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9))
 
 
+_END_STATES = frozenset({"just a crack", "a crack", "ajar", "barely"})
+"""Loose amounts that name where a part ends ("leave the door open just a crack"), measured from closed wherever it rests."""
+
+
 def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalChoice:
     """The goal of ``sense`` (from ``frame``) on ``part``."""
     quantities = frame.quantities
@@ -228,7 +232,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     if reference is None and unit == "fraction" and state in ("up", "down") and geometry.open_value is not None and not (
             quantities.amount is not None and quantities.amount.loose) and (geometry.up_value if state == "up" else geometry.down_value) == geometry.open_value:
         measured = "closed"  # "lower the oven door halfway down": half of its closed-to-open range, wherever it rests
-    if reference is None and unit == "fraction" and state == "open" and quantities.amount is not None and quantities.amount.loose:
+    if reference is None and unit == "fraction" and state == "open" and quantities.amount is not None and quantities.amount.loose and (
+            quantities.amount.words not in _END_STATES):
         measured = "current"  # "pull the drawer out a little (more)": a little further than it is, never back toward closed
     if reference is None and unit == "m" and sense in (VerbSense.RAISE, VerbSense.LOWER):
         measured = "current"  # "raise the lid 20 cm": a distance raised is from where it is (a lid resting ajar goes 20 cm higher)

@@ -32,7 +32,7 @@ from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
 from app.engine.offline.reading.tokens import Token, tokenize
-from app.engine.offline.stated import record_release, stated_latched
+from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.whole_object import whole_named
@@ -134,7 +134,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"did not animate '{act.goal.text}': tilting the whole {asset.name} is not animated, only moving and turning it")
                 builder.refs.last_object = True
                 continue  # "tilt the bin back and wheel it backwards": the wheeling is animated, and "it" is the bin
-            if act is not acts[-1] and (record_release(builder, act) or stated_latched(builder, act)):
+            if act is not acts[-1] and (record_release(builder, act) or stated_latched(builder, act) or stated_no_handle(builder, act)):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)

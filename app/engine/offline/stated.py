@@ -85,3 +85,34 @@ def stated_latched(builder: Builder, act: Act) -> bool:
     builder.refs.remember(parts, [])
     builder.notes.append(f"read '{act.goal.text}' as {parts[0].link} held shut: {release[0].link} ({release[0].joint}) releases it")
     return True
+
+
+_LACKS = (("has", "no"), ("have", "no"), ("hasn't", "got"), ("doesn't", "have"), ("there's", "no"), ("there", "is", "no"))
+
+
+def stated_no_handle(builder: Builder, act: Act) -> bool:
+    """"This microwave door has no handle. Get it open.": a part said to lack a way to pull it opens by the one control
+    that releases it (recorded, with a note; True); the clause names nothing to move. False when it says no such thing."""
+    from app.engine.offline import mechanisms as mech
+
+    words = act.goal.text.split()
+    lacks = next((k for k in range(len(words)) for lead in _LACKS if tuple(words[k:k + len(lead)]) == lead), None)
+    if lacks is None or not act.goal.themes:
+        return False
+    named = [m for m in act.goal.themes if m.start < lacks and (m.kind is not None or m.is_object)]
+    hosts = [p for p in builder.parts if p.kind is PartKind.DOOR] if not named or named[0].is_object else None
+    if hosts is None:
+        try:
+            hosts, _ = builder.refs.resolve(named[0])
+        except GroundingError:
+            return False
+    if len(hosts) != 1:
+        return False
+    release = mech.controls_for(hosts[0], builder.parts, builder.tracker, builder.excluded, popped=True)
+    builder.refs.remember(hosts, [])
+    if not release:
+        builder.notes.append(f"ignored '{act.goal.text}': how {hosts[0].link} is, no step")
+        return True
+    builder.tracker.releases[hosts[0].joint] = release[0]
+    builder.notes.append(f"read '{act.goal.text}' as how {hosts[0].link} opens: by {release[0].link} ({release[0].joint}), its release")
+    return True

@@ -59,6 +59,21 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- blind round 45 (the held-out mix again, written after rounds 43 and 44 were fixed) ---
+    R("extra/microwave_7128", "This microwave door has no handle. Get it open for me, all the way.",  # no handle: its release
+      joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
+    R("extra/oven_7179", "I want to give the lower oven a proper clean, so I need both of its racks pulled out.",
+      joints={"joint_3": E(end="upper"), "joint_1": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_4": E(still=True)}),
+    R("extra/oven_7179", "I need to baste the chicken on the rack in the top oven.", joints={"joint_4": E(end="upper"), "joint_0": E(end="upper")},
+      order=(("joint_4", "joint_0"),)),
+    R("oven_7138", "I need to baste the roast in the oven.", joints={"joint_0": E(end="upper")}),
+    R("safe_102387", "Leave the safe door open just a crack.", joints={"joint_0": E(end=SAFE_102387_CLOSED + 0.2896)}),  # a crack from closed
+    R("storage_20453", "This cabinet is sticking out into the walkway; it should sit 40 cm further back, against the wall.", base=(0.4, 0.0, 0.0)),
+    R("trash_can_102155", "The wheelie bin is too far away for me to reach, I need it half a metre closer.", base=(-0.5, 0.0, 0.0)),
+    R("extra/suitcase_100550", "I'd rather have the lid side of the suitcase facing the wall instead of facing me.", yaw_deg=180.0),
+    R("extra/suitcase_100550", "I want to see the back of the suitcase.", yaw_deg=180.0),
+    R("kitchen_pot_100038", "I want to check whether the soup is boiling yet.", joints={"joint_0": E(sign=1)}),
+    R("extra/storage_20279", "the drawr is stickin out, i keep bumpin into it", joints={"joint_0": E(end=-0.188)}),  # the g dropped
     # --- blind round 44 (state-dependent and coupled cases; spatial, sequenced, control and hold prompts, a third indirect) ---
     R("extra/oven_7179", "The baking tray is sitting on the rack nearest the floor; slide that rack out for me.",  # a thing on the rack
       joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),

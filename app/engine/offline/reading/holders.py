@@ -62,7 +62,7 @@ def looked_into(tokens: list[Token], i: int) -> int:
     return end if named and (named[0] in OBJECT_NOUNS or named[0] in COMPARTMENTS) else 0
 
 
-_DOING = frozenset({"doing", "done", "cooked", "ready", "coming", "getting"})
+_DOING = frozenset({"doing", "done", "cooked", "ready", "coming", "getting", "boiling", "cooking", "simmering", "baking", "burning", "set"})
 
 
 def asked_after(tokens: list[Token], i: int) -> int:
@@ -117,7 +117,8 @@ def stowed(tokens: list[Token], i: int) -> int:
     return k + 1
 
 
-_ACCESSING = frozenset({"load", "unload", "empty", "clean", "wipe", "stock", "restock", "fill", "refill", "check"})
+_ACCESSING = frozenset({"load", "unload", "empty", "clean", "wipe", "stock", "restock", "fill", "refill", "check", "baste", "stir", "season",
+                        "taste", "glaze"})
 """What a person does inside an object ("load the dishes", "clean the inside of the oven"): its door or lid opened."""
 
 
@@ -129,6 +130,10 @@ def accessed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[T
         return None
     end = next((k for k in range(i + 1, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("so", "and", "then", "because")), len(tokens))
     words = [t.text for t in tokens[i + 1:end]]
+    on = next((k for k in range(1, len(words) - 1) if words[k] in ("on", "in", "inside") and words[k + 1] == "the"), None)
+    if on is not None and words[0] in _THINGS_OWNED and not any(names_part(words, k) for k in range(on)) and any(names_part(words, k) for k in range(on + 1, len(words))) and not any(
+            t.number is not None for t in tokens[i + 1:end]):
+        return end, list(tokens[i + 2 + on:end])  # "baste the chicken on the rack in the top oven": that rack
     if not words or any(names_part(words, k) for k in range(len(words))) or any(t.number is not None for t in tokens[i + 1:end]):
         return None  # "clean the lid", "fill it 3 cm": a part, or an amount
     place = next((k for k in range(len(words) - 2) if words[k] in ("in", "inside", "of") and words[k + 1] == "the" and words[k + 2] in SIDE_OF), None)

@@ -135,6 +135,8 @@ def correct(token: Token, known: frozenset[str]) -> Token:
     lemma, _ = lemma_of(word)
     if lemma in domain_words() or lemma in known:
         return token
+    if word.endswith("in") and len(word) > 4 and not _is_english(word) and _is_english(word + "g"):
+        return replace(token, text=word + "g", lemma=word + "g", corrected_from=word)  # "stickin out", "bumpin into it": the g dropped
     fixed = suggest(word, _targets() | known)
     if fixed is None and word.endswith("s") and len(word) > MIN_LENGTH:
         single = suggest(word[:-1], _targets() | known)  # "dors" -> "doors": the plural of a misspelt part word

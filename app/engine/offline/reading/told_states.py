@@ -9,7 +9,9 @@
 - "then leave it as it was", "leave the door the way you found it": put it back;
 - "Where did I put the cleaning stuff? Have a look in ...": the question asks for no step (it goes);
 - "the case shouldn't be gaping open", "I can't stack buckets with that handle sticking straight up": the part is open
-  (up), told as a complaint.
+  (up), told as a complaint;
+- "I need it half a metre closer", "it should sit 40 cm further back": move it so;
+- "I'd rather have the lid side of the suitcase facing the wall", "I want to see the back of the suitcase": turn it around.
 """
 
 from __future__ import annotations
@@ -35,7 +37,8 @@ def told_states(tokens: list[Token]) -> list[Token]:
     while k < len(tokens):
         step = (_forgot_to(tokens, k, out) or _dont_leave(tokens, k, out) or _keep_in(tokens, k, out) or _not_seated(tokens, k, out)
                 or _get_at(tokens, k, out) or _cannot_open(tokens, k, out) or _left_as_found(tokens, k, out) or _asked_where(tokens, k, out)
-                or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out))
+                or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out) or _placed_wish(tokens, k, out)
+                or _facing_wall(tokens, k, out) or _see_the_back(tokens, k, out))
         if step:
             k += step
             continue
@@ -206,3 +209,62 @@ def _with_sticking(tokens: list[Token], k: int, out: list[Token]) -> int:
     out += [Token(",", ",", at.start, at.end), *tokens[k + 1:verb], Token("is", "is", at.start, at.end),
             Token(_STATE_WORDS[tokens[j].text], _STATE_WORDS[tokens[j].text], at.start, at.end, corrected_from=_said(tokens, k, j + 1 - k))]
     return j + 1 - k
+
+
+_SHOULD = (("should",), ("must",), ("needs", "to"), ("has", "to"), ("ought", "to"))
+_PLACED = frozenset({"sit", "be", "go", "stand", "move", "end_up"})
+_WAYS = frozenset({"closer", "nearer", "back", "forward", "further", "farther", "away", "left", "right", "backward", "forwards", "backwards"})
+
+
+def _placed_wish(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"I need it half a metre closer", "it should sit 40 cm further back": move it so (a length and a way said)."""
+    if out and not (out[-1].is_punct or out[-1].text in ("and", "so", "but")):
+        return 0
+    if tokens[k].text in ("i_need", "i_want", "i'd_like") and _words(tokens, k + 1, 1) == ("it",):
+        subject, j = [tokens[k + 1]], k + 2
+    elif tokens[k].text == "it" and (lead := next((len(m) for m in _SHOULD if _words(tokens, k + 1, len(m)) == m), 0)) and (
+            _words(tokens, k + 1 + lead, 1)[:1] and tokens[k + 1 + lead].text in _PLACED):
+        subject, j = [tokens[k]], k + 2 + lead
+    else:
+        return 0
+    end = next((e for e in range(j, len(tokens)) if tokens[e].is_punct), len(tokens))
+    rest = tokens[j:end]
+    if not any(t.text in _WAYS for t in rest) or not any(t.lemma in _LENGTHS or t.text in _LENGTHS for t in rest):
+        return 0
+    at = tokens[k]
+    out += [Token("move", "move", at.start, at.end, corrected_from=_said(tokens, k, j - k)), *subject, *rest]
+    return end - k
+
+
+_LENGTHS = frozenset({"cm", "centimetre", "centimeter", "centimetres", "centimeters", "metre", "meter", "metres", "meters", "m", "mm", "inch",
+                      "inches", "foot", "feet", "ft"})
+
+
+_WISHING = (("i_want",), ("i_need",), ("i'd_like",), ("i'd", "rather", "have"), ("i'd", "prefer"), ("i'd_prefer",), ("i", "want"))
+
+
+def _facing_wall(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"I'd rather have the lid side of the suitcase facing the wall (instead of facing me)": turn it around."""
+    lead = next((len(w) for w in _WISHING if _words(tokens, k, len(w)) == w), 0)
+    if not lead or (out and not out[-1].is_punct):
+        return 0
+    end = next((e for e in range(k, len(tokens)) if tokens[e].is_sentence_end), len(tokens))
+    facing = next((j for j in range(k + lead, end - 2) if tokens[j].text in ("facing", "faces") and _words(tokens, j + 1, 2) == ("the", "wall")), None)
+    if facing is None or "side" not in [t.text for t in tokens[k + lead:facing]]:
+        return 0
+    at = tokens[k]
+    out += [Token("turn", "turn", at.start, at.end, corrected_from=_said(tokens, k, end - k)), Token("it", "it", at.start, at.end),
+            Token("around", "around", at.start, at.end)]
+    return end - k
+
+
+def _see_the_back(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"I want to see the back of the suitcase": turn it around (the object, not a part)."""
+    if tokens[k].text not in ("see", "view", "show") or _words(tokens, k + 1, 3) != ("the", "back", "of"):
+        return 0
+    end = next((e for e in range(k, len(tokens)) if tokens[e].is_punct), len(tokens))
+    if end - k > 7 or any(kind_of_word(t.text) is not None for t in tokens[k + 4:end]):
+        return 0  # "see the back of the drawer": a part
+    at = tokens[k]
+    out += [Token("turn", "turn", at.start, at.end, corrected_from=_said(tokens, k, end - k)), *tokens[k + 4:end], Token("around", "around", at.start, at.end)]
+    return end - k
