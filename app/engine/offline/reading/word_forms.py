@@ -323,10 +323,10 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.extend(opened or [Token("it", "it", t.start, t.start)])  # "time to load the dishes", "wipe out the inside of the microwave"
         return end
     if (looked := looked_inside(tokens, i)) is not None:
-        said = next((k for k in range(i + 1, looked) if tokens[k].text in ("a", "an")), i + 1)
-        named = tokens[i + 1:said] if said > i + 2 and any(w.text in OBJECT_NOUNS or names_kind(w.text) for w in tokens[i + 1:said]) else []
+        article = next((k for k in range(i + 1, looked) if tokens[k].text in ("a", "an")), i + 1)
+        cleaned = tokens[i + 1:article] if article > i + 2 and any(w.text in OBJECT_NOUNS or names_kind(w.text) for w in tokens[i + 1:article]) else []
         out += [Token("open", "open", t.start, tokens[looked - 1].end, corrected_from=" ".join(w.text for w in tokens[i:looked])),
-                *(named or [Token("it", "it", t.start, t.start)])]
+                *(cleaned or [Token("it", "it", t.start, t.start)])]
         return looked  # "give the soup a stir", "take a quick look": open it to reach in; "give the lower oven a clean": that oven
     if (stowing := packed(tokens, i, out)) is not None:
         start, name, end = stowing
