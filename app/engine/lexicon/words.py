@@ -105,7 +105,6 @@ DIRECTIONS: Mapping[str, str] = MappingProxyType({
     "backward": "backward", "backwards": "backward", "rearward": "backward", "rearwards": "backward",
     "leftward": "left", "leftwards": "left", "rightward": "right", "rightwards": "right", "sideways": "sideways",
     "upward": "up", "upwards": "up", "downward": "down", "downwards": "down", "aside": "sideways",
-    "closer": "forward", "nearer": "forward",  # "I need it half a metre closer": toward the user, in front
 })
 LENGTH_UNITS: Mapping[str, float] = MappingProxyType({
     "mm": 1e-3, "millimeter": 1e-3, "millimetre": 1e-3, "cm": 1e-2, "centimeter": 1e-2, "centimetre": 1e-2,

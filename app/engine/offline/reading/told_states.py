@@ -232,7 +232,9 @@ def _placed_wish(tokens: list[Token], k: int, out: list[Token]) -> int:
     if not any(t.text in _WAYS for t in rest) or not any(t.lemma in _LENGTHS or t.text in _LENGTHS for t in rest):
         return 0
     at = tokens[k]
-    out += [Token("move", "move", at.start, at.end, corrected_from=_said(tokens, k, j - k)), *subject, *rest]
+    toward_user = [Token("forward", "forward", t.start, t.end, corrected_from=t.text) if t.text in ("closer", "nearer") and (
+        n + 1 == len(rest) or rest[n + 1].text != "to" or _words(rest, n + 2, 1) in (("me",), ("you",))) else t for n, t in enumerate(rest)]
+    out += [Token("move", "move", at.start, at.end, corrected_from=_said(tokens, k, j - k)), *subject, *toward_user]  # "closer": to the user
     return end - k
 
 
