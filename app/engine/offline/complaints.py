@@ -129,7 +129,8 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
     worked (the switch on, the window open, the door or lid shut), with a note; False when the words say nothing of the
     room or the object has not exactly one such part."""
     told = [f.text for f in frames]  # "I don't want dust getting in": said as what not to have (no act)
-    said = {ROOM_COMPLAINTS[w] for f in frames for w in f.text.split() if w in ROOM_COMPLAINTS and w not in (f.verb, f.guessed_verb)}  # not "dim the lights"
+    said = {ROOM_COMPLAINTS[w] for f in frames for w in f.text.split() if w in ROOM_COMPLAINTS and not (
+        w in (f.verb, f.guessed_verb) and ROOM_COMPLAINTS[w][1] == ("switch",))}  # "dim the lights" asks for a dimmer, no complaint
     if len(said) != 1:
         return False
     (sense_name, kinds, category), = said
@@ -148,6 +149,7 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
                                                                     quantities=replace(act.goal.quantities, amount=None)))):
         return False
     _superseded(builder, act.goal.text)
+    builder.notes[:] = [n for n in builder.notes if not any(f.guessed_verb and n.startswith(f"read the verb '{f.guessed_verb}'") for f in frames)]
     builder.turned.update(f.clause for f in frames)  # "... is hanging open and the cat keeps getting in": shut, as asked
     thing = "the light" if kinds == ("switch",) else f"the {part.kind}"
     done = {VerbSense.SWITCH_ON: f"turn {thing} on", VerbSense.SWITCH_OFF: f"turn {thing} off"}.get(sense, f"{sense.value} {thing}")
