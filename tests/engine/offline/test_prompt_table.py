@@ -75,7 +75,7 @@ ROWS: list[Row] = [
     R("kitchen_pot_100038", "I want to check whether the soup is boiling yet.", joints={"joint_0": E(sign=1)}),
     R("extra/storage_20279", "the drawr is stickin out, i keep bumpin into it", joints={"joint_0": E(end=-0.188)}),  # the g dropped
     R("storage_20453", "Shove the whole desk back about 40 cm, closer to the wall behind it.", base=(0.4, 0.0, 0.0)),  # closer to the wall: back
-    R("extra/faucet_1343", "I need to rinse my hands.", joints={"joint_1": E(moves=True)}),  # "rinse" said as the verb is still the wish
+    R("extra/faucet_1343", "I need to rinse my hands.", joints={"joint_0": E(moves=True)}),  # "rinse" said as the verb is still the wish
     # --- blind round 44 (state-dependent and coupled cases; spatial, sequenced, control and hold prompts, a third indirect) ---
     R("extra/oven_7179", "The baking tray is sitting on the rack nearest the floor; slide that rack out for me.",  # a thing on the rack
       joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
