@@ -143,13 +143,11 @@ def answer_room(builder: Builder, acts: list[Act], frames: list[Frame]) -> bool:
     act = acts[0] if acts else Act(goal=frames[0])
     mention = Mention(head=str(part.kind), kind=part.kind, words=f"the {part.kind}")
     verb = {VerbSense.SWITCH_ON: "turn", VerbSense.SWITCH_OFF: "turn"}.get(sense, sense.value)
-    if not added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=replace(
-            act.goal, verb=verb, sense=sense, themes=(mention,), instruments=(), heading=False,
-                                                                    stative=False, particle=None, wish=False,
-                                                                    quantities=replace(act.goal.quantities, amount=None)))):
+    goal = replace(act.goal, verb=verb, sense=sense, themes=(mention,), instruments=(), heading=False, stative=False, particle=None, wish=False,
+                   quantities=replace(act.goal.quantities, amount=None))
+    if not added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=goal)):
         return False
-    _superseded(builder, act.goal.text)
-    builder.notes[:] = [n for n in builder.notes if not any(f.guessed_verb and n.startswith(f"read the verb '{f.guessed_verb}'") for f in frames)]
+    _superseded(builder, act.goal.text, frames)
     builder.turned.update(f.clause for f in frames)  # "... is hanging open and the cat keeps getting in": shut, as asked
     thing = "the light" if kinds == ("switch",) else f"the {part.kind}"
     done = {VerbSense.SWITCH_ON: f"turn {thing} on", VerbSense.SWITCH_OFF: f"turn {thing} off"}.get(sense, f"{sense.value} {thing}")
@@ -176,16 +174,17 @@ def answer_finished(builder: Builder, frames: list[Frame]) -> bool:
         goal = replace(act.goal, verb="close", sense=VerbSense.CLOSE, themes=(whole,), instruments=(), heading=False, stative=False,
                        particle=None, wish=False, guessed_verb=None, quantities=replace(act.goal.quantities, amount=None))
         if added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=goal)):
-            _superseded(builder, act.goal.text)
-            builder.notes[:] = [n for n in builder.notes if not n.startswith(f"read the verb '{act.goal.guessed_verb}'")]
+            _superseded(builder, act.goal.text, [act.goal])
             builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to shut {builder.asset.name}")
             return True
     return False
 
 
-def _superseded(builder: Builder, text: str) -> None:
-    """The earlier notes on a clause now read as a complaint ("ignored '...'", "read '...' as a summary") no longer hold."""
-    builder.notes[:] = [n for n in builder.notes if not n.startswith((f"ignored '{text}'", f"read '{text}' as a summary"))]
+def _superseded(builder: Builder, text: str, frames: list[Frame] | None = None) -> None:
+    """The earlier notes on a clause now read as a complaint ("ignored '...'", "read '...' as a summary") no longer hold,
+    nor the guesses at the verbs of ``frames`` ("read the verb 'finished' as 'move'")."""
+    stale = (f"ignored '{text}'", f"read '{text}' as a summary", *(f"read the verb '{f.guessed_verb}'" for f in frames or [] if f.guessed_verb))
+    builder.notes[:] = [n for n in builder.notes if not n.startswith(stale)]
 
 
 def added(builder: Builder, act: Act) -> bool:

@@ -15,6 +15,7 @@ from app.engine.offline.tracker import ANY_HOST
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
+    from app.engine.offline.grounding import Part
     from app.engine.offline.reading.mention import Mention
 
 _WORKING = frozenset({"turning", "twisting", "rotating", "pressing", "pushing", "pulling", "sliding", "flipping", "lifting", "spinning"})
@@ -66,8 +67,6 @@ def stated_latched(builder: Builder, act: Act) -> bool:
     """"The microwave door is latched and won't pull open. Get it open.": the part is held shut, so opening it works the
     one control that releases it (recorded, with a note; True). False when the clause says no such thing or the part has
     no such control."""
-    from app.engine.offline import mechanisms as mech
-
     words = act.goal.text.split()
     said = next((k for k, w in enumerate(words) if w in _STUCK), None)
     if said is None or said == 0 or words[said - 1] not in ("is", "are", "'s", "seems", "feels") or len(act.goal.themes) != 1:
@@ -78,13 +77,23 @@ def stated_latched(builder: Builder, act: Act) -> bool:
         return False
     if len(parts) != 1 or parts[0].joint in builder.tracker.releases:
         return False
-    release = mech.controls_for(parts[0], builder.parts, builder.tracker, builder.excluded, popped=True)
-    if not release:
+    release = _released_by_control(builder, parts[0])
+    if release is None:
         return False
-    builder.tracker.releases[parts[0].joint] = release[0]
-    builder.refs.remember(parts, [])
-    builder.notes.append(f"read '{act.goal.text}' as {parts[0].link} held shut: {release[0].link} ({release[0].joint}) releases it")
+    builder.notes.append(f"read '{act.goal.text}' as {parts[0].link} held shut: {release.link} ({release.joint}) releases it")
     return True
+
+
+def _released_by_control(builder: Builder, host: Part) -> Part | None:
+    """The one control that releases ``host``, recorded as what opens it (``host`` becomes "it"); None when it has none."""
+    from app.engine.offline import mechanisms as mech
+
+    release = mech.controls_for(host, builder.parts, builder.tracker, builder.excluded, popped=True)
+    if not release:
+        return None
+    builder.tracker.releases[host.joint] = release[0]
+    builder.refs.remember([host], [])
+    return release[0]
 
 
 _LACKS = (("has", "no"), ("have", "no"), ("hasn't", "got"), ("doesn't", "have"), ("there's", "no"), ("there", "is", "no"))
@@ -93,8 +102,6 @@ _LACKS = (("has", "no"), ("have", "no"), ("hasn't", "got"), ("doesn't", "have"),
 def stated_no_handle(builder: Builder, act: Act) -> bool:
     """"This microwave door has no handle. Get it open.": a part said to lack a way to pull it opens by the one control
     that releases it (recorded, with a note; True); the clause names nothing to move. False when it says no such thing."""
-    from app.engine.offline import mechanisms as mech
-
     words = act.goal.text.split()
     lacks = next((k for k in range(len(words)) for lead in _LACKS if tuple(words[k:k + len(lead)]) == lead), None)
     if lacks is None or not act.goal.themes:
@@ -108,11 +115,10 @@ def stated_no_handle(builder: Builder, act: Act) -> bool:
             return False
     if len(hosts) != 1:
         return False
-    release = mech.controls_for(hosts[0], builder.parts, builder.tracker, builder.excluded, popped=True)
-    builder.refs.remember(hosts, [])
-    if not release:
+    release = _released_by_control(builder, hosts[0])
+    if release is None:
+        builder.refs.remember(hosts, [])
         builder.notes.append(f"ignored '{act.goal.text}': how {hosts[0].link} is, no step")
         return True
-    builder.tracker.releases[hosts[0].joint] = release[0]
-    builder.notes.append(f"read '{act.goal.text}' as how {hosts[0].link} opens: by {release[0].link} ({release[0].joint}), its release")
+    builder.notes.append(f"read '{act.goal.text}' as how {hosts[0].link} opens: by {release.link} ({release.joint}), its release")
     return True
