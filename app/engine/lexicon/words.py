@@ -232,6 +232,7 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
+    "btn": "button", "btns": "buttons", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions", "sec": "second",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
 PLACE_SIDES: Mapping[str, Side] = MappingProxyType({
@@ -254,7 +255,7 @@ ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwa
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",
-                         "obviously", "naturally", "clearly", "evidently"})
+                         "obviously", "naturally", "clearly", "evidently", "basically", "ok", "okay", "alright"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})
@@ -299,14 +300,14 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
                    "again", "fully", "halfway", "slightly", "way", "there", "here", "away", "together", "apart",
                    "of", "on", "in", "at", "from", "inside", "behind", "near", "under", "below", "above", "beside", "next_to",
                    "in_front_of", "on_top_of", "out_of", "against", "beneath", "underneath", "where", "when", "once",
-                   "after", "before", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
+                   "after", "before", "during", "because", "which", "that's", "it's", "so_that", "in_order_to", "don't", "do", "does", "only", "even", "just", "very",
                    "hands-free", "hands_free", "straight", "upright", "vertical", "flat", "horizontal",
                    "cannot", "can't", "can", "will", "would", "should", "must", "no",
                    "still", "really", "right_away", "exactly", "too", "far", "measured", "makes", "forms", "needs", "need", "needed", "furthest", "farthest", "farther", "now", "almost", "nearly", "properly", "completely", "gets", "get", "got", "getting", "becomes", "nearest", "closest", "nearer", "closer", "tight", "tightly", "snugly", "securely", "loose", "loosely", "has", "have", "had", "immediately", "gently", "firmly", "briefly", "quickly", "slowly", "carefully"})
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 _ONLY_BODY = frozenset({"knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
 """A person's body, hurt on the object ("I keep bumping my knee on it"): never a part (unlike "head", "arm", "foot")."""
-NOT_PART_NOUNS = frozenset({"way", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
+NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
@@ -372,7 +373,11 @@ POPPING_VERBS = frozenset({"pop", "spring"})
 WHEEL_SHAPED = frozenset({"wheel", "spoked", "spoke", "spokes", "star", "capstan"})
 """Words that describe a handle as a big spoked wheel ("the wheel handle", "the spoked handle"): among several turning
 controls, the clearly largest one."""
+HEDGE_ADVERBS = frozenset({"roughly", "approximately", "approx", "nearly", "almost", "exactly", "precisely", "circa", "somewhere", "maybe",
+                           "perhaps", "about", "around", "currently", "presently"})
+"""", roughly half a revolution": how sure the amount is, never a part."""
 EVERYDAY_WORDS = frozenset({"someone", "somebody", "clothes", "laundry", "dishes", "plates", "load", "loaded", "unload", "washing",
-                            "again", "please", "leftovers", "groceries", "food", "stuff", "things", "inside"})
+                            "again", "please", "leftovers", "groceries", "food", "stuff", "things", "inside", "something", "anything",
+                            "nothing", "everything", "building", "until", "should", "the", "because"})
 """Everyday words of requests that are no part and no motion ("someone left ...", "load some clothes in"): typos are
 corrected to them, and never from them to a lexicon word ("clothse" is "clothes", not "close")."""

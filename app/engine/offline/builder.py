@@ -201,7 +201,7 @@ class Builder:
         if goal.first is not None and act.means is None:
             seq.first_then_rest(self, act)
             return
-        if act.means is None and ((goal.in_turn is not None and any(m.plural or m.collective for m in goal.themes)) or seq.keys_listed(goal)):
+        if act.means is None and ((goal.in_turn is not None and (any(m.plural or m.collective for m in goal.themes) or len(goal.themes) > 1)) or seq.keys_listed(goal)):
             seq.in_turn(self, act)
             return
         if act.means is not None and self._aimless(goal):

@@ -19,6 +19,7 @@ from app.engine.offline.reading.pointed import pointed_out
 from app.engine.offline.reading.quantities import Quantities, Reference
 from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
+from app.engine.offline.reading.told_first import put_in_order
 
 DEFAULT_WAIT_S = 1.0
 UNDERWAY_S = 0.2
@@ -184,6 +185,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
     together = False  # a summary said the steps after it go at the same time
     leading: list[Frame] = []  # negations told before any step
     zero: Reference | None = None  # "measured from fully shut, ...": what the next amount counts from
+    moved: int | None = None  # where a step told after the one it precedes went
     for index, frame in enumerate(frames):
         if (counted := measured_from(frame)) is not None:
             zero = counted
@@ -385,10 +387,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             frame = replace(frame, sense=VerbSense.GRASP)  # "take the smaller one and rotate it": which one, not a motion
         act = Act(goal=frame, parallel=parallel, conjoined=frame.conjoined, wait_before_s=pending_wait)
         pending_wait = 0.0
-        if frame.goes_first and acts:
-            acts.insert(len(acts) - 1, act)
-        else:
-            acts.append(act)
+        moved = put_in_order(acts, act, moved)
         previous_goal = frame
     for condition in pending_conditions:  # "B once the door is open": the state comes before B
         acts.insert(max(len(acts) - 1, 0), Act(goal=condition, condition=True))

@@ -38,8 +38,9 @@ from app.engine.lexicon.words import (
     WISHES,
 )
 from app.engine.offline.reading.mentions import kind_at
-from app.engine.offline.reading.tokens import Token, finite_unknown_verb, inflected_verb
+from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB, verb_at
+from app.engine.offline.reading.word_class import finite_unknown_verb, inflected_verb
 
 
 class Link(StrEnum):

@@ -33,7 +33,13 @@ def carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -
         # "blender dial: 1/8 turn clockwise": the part before the colon, moved by the amount after it
         verb = "turn" if frame.quantities.amount is not None and frame.quantities.amount.unit == "rad" else "move"
         return replace(frame, verb=verb, sense=VerbSense.TURN if verb == "turn" else VerbSense.MOVE, themes=previous.themes)
+    if frame.verb is not None and not frame.themes and not frame.instruments and not frame.let and previous is not None and (
+            previous.heading and previous.verb is None and previous.themes and frame.link in _STEPS):
+        return replace(frame, themes=previous.themes)  # "Bucket handle: grab and bring up till vertical": the part in the heading
     amount = frame.quantities.amount
+    if frame.verb is None and frame.themes and all(m.is_object for m in frame.themes) and amount is not None and amount.unit == "m" and (
+            frame.quantities.direction is not None):
+        return replace(frame, verb="move", sense=VerbSense.MOVE)  # "whole stapler, 0.2 m to my left": the object moves
     if frame.verb is None and frame.themes and amount is not None and amount.unit == "rad" and set(amount.words.split()) & _TURN_WORDS:
         return replace(frame, verb="turn", sense=VerbSense.TURN)  # "then the turntable makes a half revolution"
     if frame.same_direction and previous is not None:
@@ -98,6 +104,9 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if frame.themes and not frame.returning and own_way is not None and not _alike(own_way, previous.sense) and frame.link in _STEPS:
         # "... 2. push it back shut 3. upper drawer out 20 cm", "Steps: * top drawer out 30 cm": its own word says which way
         return replace(frame, sense=own_way)
+    if frame.stative and not amount_only and not frame.wish and not ends and frame.link is not Link.CONDITION and not (
+            set(frame.text.split()) & set(VERBLESS_SENSES)):
+        return frame  # "the clasps on this box are spring-loaded": what a part is, no step of the verb before
     if frame.themes or amount_only:
         own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
         return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),

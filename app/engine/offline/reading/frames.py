@@ -45,10 +45,11 @@ from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.quantities import Quantities, read_quantities
-from app.engine.offline.reading.tokens import Token, finite_unknown_verb
+from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part, unknown_verb
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
 from app.engine.offline.reading.wishes import wished_state
+from app.engine.offline.reading.word_class import finite_unknown_verb
 
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
@@ -255,7 +256,7 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
 _IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
-            "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top"}
+            "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top", "in_the_order_said": "said"}
 
 
 def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Frame:

@@ -30,6 +30,8 @@ _SIMILE_ENDS = frozenset({".", ";", "!", "?", "then", "and_then"})
 _BOUNDS = frozenset({"all_the_way", "fully", "completely", "entirely", "too", "the_whole_way", "to_the_end", "to_the_limit", "wide_open",
                      "all", "far", "much", "the", "way", "out", "open", "in", "quite", "whole"})
 _SIDE_WORDS = frozenset({"left", "right", "and", "or", "/", ",", "left-hand", "right-hand"})
+_SAID_SIDES = _SIDE_WORDS | {"the", "my", "your", "is", "means", "="}
+"""What a sentence that only says how a side is meant starts with ("Left = my left", "Right is your right")."""
 _HEDGES = frozenset({"think", "guess", "suppose", "believe", "reckon", "figure", "imagine"})
 _CARRIED = frozenset({"rides", "ride", "riding", "comes", "come", "goes", "go", "travels", "travel", "moves", "move", "up", "along"})
 _LEAVING = frozenset({"stepping", "walking", "heading", "leaving", "running", "popping", "nipping"})
@@ -147,10 +149,12 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     t = tokens[i]
     after = [w.text for w in tokens[i + 1:i + 5]]
     view = _viewpoint(tokens, i)
+    since = next((k + 1 for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end), 0)
+    if not view and out[since:] and {w.text for w in out[since:]} <= _SAID_SIDES and t.text in _VIEW_LEADS and after[:1] and after[0] in _VIEW_VERBS:
+        view = until_break(tokens, i, frozenset({".", "!", "?", ";"})) - i  # "Left = my left when facing the machine from the front."
     skip = view or _simile(tokens, i) or _bound_only(tokens, i) or _free_sense(tokens, i)
     if skip:
-        since = next((k + 1 for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end), 0)
-        if view and since < len(out) and {w.text for w in out[since:]} <= _SIDE_WORDS:
+        if view and since < len(out) and {w.text for w in out[since:]} <= _SAID_SIDES:
             del out[since:]  # "Left as you face the cabinet.", "Left and right as seen from the front.": how sides are meant
         if out and out[-1].text in (",", "-") and not (i + skip < len(tokens) and tokens[i + skip].is_sentence_end):
             out.pop()
@@ -170,9 +174,9 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         return until_break(tokens, i, _SIMILE_ENDS)
     if t.text in ("start", "begin") and after[:1] and after[0] in ("them", "both", "these") and len(after) > 1 and after[1] in SIMULTANEOUS:
         return i + 1  # "Start them together.": both at the same time, no motion of its own
-    if t.text in ("i.e.", "ie", "namely") or (t.text == "it" and after[:2] in (["is", "for"], ["'s", "for"])) or (t.text == "it's" and after[:1] == ["for"]):
+    if t.text in ("i.e.", "ie", "namely", "meaning") or (t.text == "it" and after[:2] in (["is", "for"], ["'s", "for"])) or (t.text == "it's" and after[:1] == ["for"]):
         if out and out[-1].text == ",":
-            out.pop()  # ", i.e. away from the side where the lid opens", ", it is for the browning level": said of it, no step
+            out.pop()  # ", i.e. away from the side where the lid opens", ", it is for the browning level", ", meaning the one on my right": said of it, no step
             return until_break(tokens, i, _SIMILE_ENDS)
     if (t.text in ("one", "another") and after[:1] and after[0] in _HANDS) or (t.text == "the" and after[:2] and after[0] == "other" and (
             len(after) > 1 and after[1] in _HANDS)):

@@ -22,6 +22,7 @@ from app.engine.lexicon.words import (
     DEFINITES,
     DETERMINERS,
     FACE_RELATIONS,
+    HEDGE_ADVERBS,
     MODALS,
     NOT_PART_NOUNS,
     OBJECT_NOUNS,
@@ -41,13 +42,11 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.part_words import control_name, kind_at, kind_of_word, side_run
-from app.engine.offline.reading.tokens import Token, can_be_verb, finite_unknown_verb, verb_ing, verb_only
+from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import can_be_verb, finite_unknown_verb, nounless, verb_ing, verb_only
 
 __all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
 
-_HEDGE_ADVERBS = frozenset({"roughly", "approximately", "approx", "nearly", "almost", "exactly", "precisely", "circa", "somewhere", "maybe",
-                            "perhaps", "about", "around", "currently", "presently"})
-"""", roughly half a revolution": how sure the amount is, never a part."""
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
@@ -59,12 +58,9 @@ _KEY_OWNERS = frozenset({"my", "your", "our", "his", "her", "their", "car", "hou
 
 
 def _line_index(word: str) -> int | None:
-    if word in ORDINALS:
-        return ORDINALS[word]
     side = SPATIAL.get(word)
-    if side is None:
-        return None
-    return {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1, Side.MIDDLE: 0}.get(side[0])
+    return ORDINALS[word] if word in ORDINALS else None if side is None else {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1,
+                                                                              Side.MIDDLE: 0}.get(side[0])
 
 
 def _nominal(token: Token) -> bool:
@@ -74,7 +70,7 @@ def _nominal(token: Token) -> bool:
     if word in _OBJECT_WORDS:
         return True  # "chest_of_drawers"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
-            and word not in STATIVE_VERBS and word not in PERSONS and word not in _HEDGE_ADVERBS and word not in PERSON_NOUNS)
+            and word not in STATIVE_VERBS and word not in PERSONS and word not in HEDGE_ADVERBS and word not in PERSON_NOUNS)
 
 
 def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = frozenset()) -> list[Mention]:
@@ -95,6 +91,8 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
             mention = replace(before, sides=(*before.sides, *mention.sides), ordinal=before.ordinal if before.ordinal is not None else mention.ordinal,
                               ordinal_from=before.ordinal_from or mention.ordinal_from, size=before.size or mention.size, end=mention.end,
                               words=_words(tokens, before.start, mention.end))
+        if mention.anaphor and mention.kind is None and mentions and mentions[-1].kind is not None:
+            mention = replace(mention, kind=mentions[-1].kind)  # "lock the left latch, and the right one": a latch
         if mention.head:
             mentions.append(mention)
     return mentions
@@ -179,7 +177,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             inner, _ = _phrase(tokens, i + 2, used)  # "one of the (two) knobs on the left": the user leaves the choice
             if inner is not None:
                 inner = _trailing(tokens, inner, used, [])
-                return replace(inner, one_of=True, plural=False, collective=False, start=begin, words=_words(tokens, begin, inner.end)), inner.end
+                return replace(inner, one_of=not sides, sides=(*inner.sides, *sides), plural=False, collective=False, start=begin,  # "the
+                               words=_words(tokens, begin, inner.end)), inner.end  # right-hand one of the doors": placed, not a free choice
             return None, i + 1
         elif word in ("any", "either", "whichever") and not nouns and not unknown:
             chosen_freely = True  # "press any key in the second row": the user leaves the choice
@@ -189,7 +188,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                               ordinal=ordinal, size=size, plural=word in ("them", "they", "ones"), collective=collective,
                               start=begin, end=i + 1, words=_words(tokens, begin, i + 1))
             return pronoun, i + 1
-        elif word in MODALS and i + 1 < len(tokens) and can_be_verb(tokens[i + 1].text) and not (i and tokens[i - 1].text in DETERMINERS):
+        elif word in MODALS and i + 1 < len(tokens) and can_be_verb(tokens[i + 1].text) and tokens[i + 1].text != "'s" and not (i and tokens[i - 1].text in DETERMINERS):
             break  # "the entire 6 cm it can travel": a modal, not the noun "can"
         elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
             nouns.append((i, 1, None, True))
@@ -203,9 +202,10 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             break
         elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
-        elif nouns and (finite_unknown_verb(word) or (word not in _ING_NOUNS and verb_ing(word))):
-            break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know
-        elif ((token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word) and not (verb_only(word) and not nouns and not unknown and not determiner):
+        elif nouns and (finite_unknown_verb(word) or (word not in _ING_NOUNS and verb_ing(word)) or nounless(word)):
+            break  # "the lever | waggles 30 degrees left": a verb the lexicon does not know; "the bin lid | manually"
+        elif ((token.lemma not in _NOT_HEADS and word.isalpha()) or "-" in word) and not (
+                (verb_only(word) or nounless(word)) and not nouns and not unknown and not determiner):
             unknown.append(i)
         elif token.lemma in _NOT_HEADS and not nouns and not unknown and not (sides or ordinal):
             i += 1

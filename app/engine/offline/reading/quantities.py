@@ -133,6 +133,10 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     after = [t.text for t in tokens[end:end + 4] if t.text != "measured"][:3]  # "90 degrees (measured) from closed"
     if after[:2] in (["up", "from"], ["down", "from"], ["out", "from"], ["open", "from"]):
         after = [t.text for t in tokens[end + 1:end + 5] if t.text != "measured"][:3]  # "90 degrees up from closed": the way, then the zero
+    later = [t.text for t in tokens[end:end + 10]]
+    since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
+    if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
+        return "closed"  # "30 degrees, measured from where it sits shut"; "by 0.52 rad, counting from where it's shut"
     if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
         return "current"
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
@@ -153,10 +157,6 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"
     if len(after) >= 2 and after[0] in ("above", "over", "clear_of") and after[1] in ("the", "its") and "current" not in after:
         return "closed"  # "so it hovers 10 cm above the pot": a height over what it closes on
-    later = [t.text for t in tokens[end:end + 10]]
-    since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
-    if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
-        return "closed"  # "30 degrees, measured from where it sits shut"
     if since is not None and {"where", "now", "current", "currently", "here", "present"} & set(later[since + 1:since + 5]):
         return "current"  # "raise the lid 30 degrees from where it is"
     if (after[:1] and after[0] in COMPARATIVES) or ("than" in later[:4] and {"now", "is", "currently"} & set(later[:7])):

@@ -99,8 +99,8 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if skip:
             skip -= 1
             continue
-        if token.text in ASIDE_WORDS:
-            continue
+        if token.text in ASIDE_WORDS or (token.text == "so" and (not out or out[-1].is_sentence_end) and i and tokens[i - 1].text in ASIDE_WORDS):
+            continue  # "ok so bottom drawer, open it 40 cm": the "so" of a filler
         if (not out or out[-1].is_sentence_end) and (convention := _side_convention(tokens, i)):
             skip = convention - 1  # "Left and right as seen from the front.": how sides are meant (always so), no step
             continue

@@ -130,7 +130,7 @@ def correct(token: Token, known: frozenset[str]) -> Token:
     word = token.text
     if len(word) < MIN_LENGTH or word in known or word in domain_words():
         return token
-    from app.engine.offline.reading.tokens import lemma_of
+    from app.engine.offline.reading.word_class import lemma_of
 
     lemma, _ = lemma_of(word)
     if lemma in domain_words() or lemma in known:

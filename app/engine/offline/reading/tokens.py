@@ -13,19 +13,19 @@ from __future__ import annotations
 import itertools
 import re
 from dataclasses import replace
-from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, SIZES
+from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, OBJECT_NOUNS, SIZES
 from app.engine.offline.reading.counts import counted_unit, tidy_counts
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.framing import drop_framing
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import lemma_of
 from app.engine.offline.reading.word_forms import known_forms
 
-__all__ = ["Token", "can_be_verb", "finite_unknown_verb", "inflected_verb", "lemma_of", "tokenize", "verb_ing", "verb_only"]
+__all__ = ["Token", "tokenize"]
 
 _TOKEN = re.compile(
     r"(?P<ord>\d+(?:st|nd|rd|th))(?![a-z])"
@@ -44,7 +44,7 @@ _TOKEN = re.compile(
     r"|(?P<slash>(?<=\s)/(?=\s))"
     r"|(?P<paren>[()])"
 )
-_ARROW_STEP_WORDS = frozenset({"up", "down", "open", "shut", "closed", "out", "back"})
+_ARROW_STEP_WORDS = frozenset({"up", "down", "open", "shut", "closed", "out", "back", "off", "first"})
 """Words that make a verbless segment before "->" a step ("lid up to 90 deg -> ..."), not a heading."""
 _LETTERS = frozenset("abcdefgh")
 """Letters that number steps: "a) close the lid b) ..."."""
@@ -98,7 +98,10 @@ def _raw_tokens(prompt: str) -> list[Token]:
             continue
         if kind == "arrow":  # "drawer: half open -> pause -> closed": then; "door -> open it": a heading
             segment = list(itertools.takewhile(lambda t: not (t.is_sentence_end or t.text in (":", "then")), reversed(tokens)))
-            verbless = bool(segment) and not any(t.text in VERBS and (t is segment[-1] or kind_of_word(t.text) is None) for t in segment) and not any(
+            compound = len(segment) >= 2 and (kind_of_word(segment[-1].text) is not None or segment[-1].text in OBJECT_NOUNS) and (
+                kind_of_word(segment[-2].text) is not None)  # "tap handle ->": a part's name, not "tap" the verb
+            verbless = bool(segment) and not any(t.text in VERBS and not (compound and t is segment[-1]) and (
+                t is segment[-1] or kind_of_word(t.text) is None) for t in segment) and not any(
                 t.number is not None or t.text in _ARROW_STEP_WORDS for t in segment)  # "combination dial ->", not "lid up to 90 deg ->"
             tokens.append(Token(":" if verbless else "then", ":" if verbless else "then", start, end))
             continue
@@ -282,77 +285,6 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
 
 
 
-@lru_cache(maxsize=4096)
-def lemma_of(word: str) -> tuple[str, bool]:
-    """(lemma, plural): the verb lemma when ``word`` is a form of a known verb, else the noun lemma."""
-    if word in VERBS or not word.isalpha() or len(word) < 2:
-        return word, False  # "s", "m": units, not words to lemmatise
-    from lemminflect import getLemma  # imported when first needed (data loads on first use)
-
-    nouns = getLemma(word, upos="NOUN")
-    plural = bool(nouns) and nouns[0] != word and word.endswith("s")
-    for lemma in getLemma(word, upos="VERB"):
-        if lemma in VERBS:
-            return lemma, plural
-    if nouns and nouns[0] != word:
-        return nouns[0], True
-    return word, False
-
-
-_AUXILIARIES = frozenset({"be", "have", "do", "need", "seem", "look", "want", "stay", "remain", "sit", "stand", "hang", "say", "mean",
-                          "use", "let", "get", "make", "keep", "happen", "start", "begin", "stop", "go", "come"})
-
-
-@lru_cache(maxsize=4096)
-def finite_unknown_verb(word: str) -> bool:
-    """A finite form of a verb the lexicon does not know and that is no noun ("the lever waggles")."""
-    if word in VERBS or not word.isalpha() or not (word.endswith("s") or word.endswith("ed")):
-        return False
-    from lemminflect import getAllLemmas
-
-    lemmas = getAllLemmas(word)
-    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and not set(lemmas["VERB"]) & _AUXILIARIES
-
-
-@lru_cache(maxsize=4096)
-def inflected_verb(word: str) -> bool:
-    """An inflected form of some English verb ("faces", "looking", "brewed")."""
-    from lemminflect import getAllLemmas
-
-    return word.isalpha() and any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
-
-
-@lru_cache(maxsize=4096)
-def verb_only(word: str) -> bool:
-    """A word English uses only as a verb form ("counted", "allows", "looking"), and no part word: never a part's head."""
-    from lemminflect import getAllLemmas
-
-    from app.engine.offline.reading.part_words import kind_of_word
-
-    lemmas = getAllLemmas(word)
-    return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and kind_of_word(word) is None
-
-
-@lru_cache(maxsize=4096)
-def can_be_verb(word: str) -> bool:
-    """A word the lexicon or English uses as a verb ("travel" after "it can")."""
-    from lemminflect import getAllLemmas
-
-    return word in VERBS or "VERB" in getAllLemmas(word)
-
-
-@lru_cache(maxsize=4096)
-def verb_ing(word: str) -> bool:
-    """A verb's -ing form ("going", "spinning")."""
-    if not word.endswith("ing") or not word.isalpha():
-        return False
-    from lemminflect import getAllLemmas
-
-    return any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
-
-
-
-
 def _halved(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     """"half-open the drawer", "half-oepn it": the verb, then "halfway" (the verb spelt as the other words are); "a
     quarter-turn": two words."""
@@ -375,15 +307,17 @@ def _halved(tokens: list[Token], known: frozenset[str]) -> list[Token]:
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
+    from app.engine.offline.reading.fronted import fronted
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
+    from app.engine.offline.reading.whose_side import whose_side
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens))))))))))))
+    tokens = whose_side(fronted(told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens))))))))))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

@@ -17,6 +17,7 @@
 from __future__ import annotations
 
 from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.words import ASIDE_WORDS
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -38,7 +39,8 @@ def told_states(tokens: list[Token]) -> list[Token]:
         step = (_forgot_to(tokens, k, out) or _dont_leave(tokens, k, out) or _keep_in(tokens, k, out) or _not_seated(tokens, k, out)
                 or _get_at(tokens, k, out) or _cannot_open(tokens, k, out) or _left_as_found(tokens, k, out) or _asked_where(tokens, k, out)
                 or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out) or _placed_wish(tokens, k, out)
-                or _facing_wall(tokens, k, out) or _see_the_back(tokens, k, out))
+                or _facing_wall(tokens, k, out) or _see_the_back(tokens, k, out) or _to_state(tokens, k, out)
+                or _bare_state(tokens, k, out) or _relative_to(tokens, k, out))
         if step:
             k += step
             continue
@@ -270,3 +272,37 @@ def _see_the_back(tokens: list[Token], k: int, out: list[Token]) -> int:
     at = tokens[k]
     out += [Token("turn", "turn", at.start, at.end, corrected_from=_said(tokens, k, end - k)), *tokens[k + 4:end], Token("around", "around", at.start, at.end)]
     return end - k
+
+
+_FULLY = frozenset({"completely", "fully", "all_the_way", "totally", "entirely", "right"})
+_ENDS = frozenset({"closed", "shut", "open", "opened"})
+
+
+def _to_state(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"drive the lid to (completely) closed", "set it to fully open": the state itself, not "to" a measure of the range."""
+    if tokens[k].text != "to" or not out or out[-1].is_punct:
+        return 0
+    j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1].text in _FULLY)
+    if j >= len(tokens) or tokens[j].text not in _ENDS or (j + 1 < len(tokens) and not (tokens[j + 1].is_punct or tokens[j + 1].text in (
+            "then", "and", "and_then", "position", "pose", "state", "again") or tokens[j + 1].text in ASIDE_WORDS)):
+        return 0
+    out.extend(tokens[k + 1:j + 1])
+    return j + 1 - k
+
+
+def _bare_state(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"once open, extend the left drawer": once it is open."""
+    if tokens[k].text not in ("once", "when", "after") or k + 2 >= len(tokens) or tokens[k + 1].text not in _ENDS | {"down", "up", "done", "in", "out"} or (
+            tokens[k + 2].text != ","):
+        return 0
+    at = tokens[k + 1]
+    out.extend([tokens[k], Token("it", "it", at.start, at.start), Token("is", "is", at.start, at.start), at])
+    return 2
+
+
+def _relative_to(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"90 degrees relative to closed": from closed."""
+    if tokens[k].text != "relative" or k + 1 >= len(tokens) or tokens[k + 1].text != "to":
+        return 0
+    out.append(Token("from", "from", tokens[k].start, tokens[k + 1].end))
+    return 2

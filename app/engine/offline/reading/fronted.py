@@ -1,0 +1,112 @@
+"""What is said first and pointed back to. Amounts: "About halfway - that's how far I want the drawer slid open", "45
+degrees - tilt the window open to that", "Half a turn on the browning dial, please - twist it". Purposes: "To open the
+dishwasher door, press the release button", "I want the door to drop open - press the release button so that it does".
+The words are rewritten in the plain order the clause splitter reads ("I want the drawer slid open about halfway", "tilt
+the window open to 45 degrees", "twist the browning dial half a turn", "press the release button to open the dishwasher
+door", "press the release button to make the door drop open"); sentences of any other shape are left as they are."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.words import AMOUNTS, WISHES
+from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import can_be_verb
+
+_BREAKS = frozenset({",", ":"})
+_HOW = frozenset({"far", "high", "much", "wide", "long", "low"})
+_BACK = frozenset({"that", "this"})
+"""The word that points back to the amount ("to that", "by about that")."""
+_HEDGES = frozenset({"about", "roughly", "around", "approximately"})
+_ON = frozenset({"on", "for", "to"})
+_IT = frozenset({"it", "that", "this"})
+_STEP_JOINS = frozenset({",", "and", "then", "and_then", "once", "after", "before", "when", "while"})
+_POINTED_BACK = (("to", "make", "that", "happen"), ("to", "make", "it", "happen"), ("so_that", "it", "does"), ("so", "it", "does"),
+                 ("so_that", "happens"), ("to", "do", "that"))
+"""A purpose that only points back to the wish before ("... press the button to make that happen")."""
+
+
+def _amount(words: list[Token]) -> bool:
+    """A measure with no verb: a number, or an amount word ("halfway", "half a turn", "all the way")."""
+    return bool(words) and any(t.number is not None or t.text in AMOUNTS for t in words) and all(
+        not t.is_punct for t in words)
+
+
+def _sentences(tokens: list[Token]) -> list[tuple[int, int]]:
+    out, start = [], 0
+    for k, token in enumerate(tokens):
+        if token.is_sentence_end:
+            out.append((start, k))
+            start = k + 1
+    if start < len(tokens):
+        out.append((start, len(tokens)))
+    return out
+
+
+def _rewritten(sentence: list[Token]) -> list[Token] | None:
+    split = next((k for k, t in enumerate(sentence) if t.text in _BREAKS), None)
+    if split is None or split == 0:
+        return None
+    head = sentence[:split]
+    rest = sentence[split:]
+    while rest and rest[0].text in _BREAKS:
+        rest = rest[1:]
+    if not rest:
+        return None
+    on = next((k for k, t in enumerate(head) if t.text in _ON), None)
+    amount, place = (head[:on], head[on + 1:]) if on is not None else (head, [])
+    if not _amount(amount):
+        return None
+    words = [t.text for t in rest]
+    told = next((k for k in range(len(words) - 2) if words[k:k + 2] == ["that's", "how"] and words[k + 2] in _HOW and (
+        k == 0 or rest[k - 1].text in _BREAKS)), None)
+    if not place and told is not None:
+        # "that's how far I want the drawer slid open": ... slid open about halfway ("30 cm - a foot - off the rim: that's
+        # how high ...": the first measure; what restates it is dropped)
+        return [*rest[told + 3:], *amount]
+    if not place and (back := next((k for k in range(len(rest) - 1, 0, -1) if words[k] in _BACK), None)) is not None and (
+            words[back - 1] in _HEDGES or words[back - 1] in ("to", "by")):
+        start = back - 1 if words[back - 1] in _HEDGES else back  # "up to about that": up to roughly 90 degrees
+        return [*rest[:start], *amount, *rest[back + 1:]]
+    if place and len(rest) > 1 and words[1] in _IT and (len(rest) == 2 or rest[2].is_punct or words[2] in ("and", "then")):
+        return [rest[0], *place, *amount, *rest[2:]]  # "half a turn on the browning dial - twist it": twist the dial half a turn
+    return None
+
+
+def _purpose_first(sentence: list[Token]) -> list[Token] | None:
+    """"To open the door, press the button": press the button to open the door."""
+    if len(sentence) < 4 or sentence[0].text != "to" or not can_be_verb(sentence[1].text):
+        return None
+    comma = next((k for k, t in enumerate(sentence) if t.text == ","), None)
+    if comma is None or comma + 1 >= len(sentence) or not can_be_verb(sentence[comma + 1].text):
+        return None
+    if any(t.text in ("it", "them", "that", "one", "ones") for t in sentence[comma + 1:]) or any(
+            t.text in _STEP_JOINS for t in sentence[comma + 1:]) or any(t.text in ("it", "them") for t in sentence[:comma]):
+        return None  # "To get at the top rack, pull it out 20 cm": "it" is the rack the purpose names; "To unlock it, punch
+        # in ..., and once that's done pull the door open": the purpose of more than one step
+    return [*sentence[comma + 1:], *sentence[:comma]]
+
+
+def _wish_then_means(sentence: list[Token]) -> list[Token] | None:
+    """"I want the door to drop open, press the release button so that it does": press the release button to make the door
+    drop open."""
+    words = tuple(t.text for t in sentence)
+    back = next((len(words) - len(tail) for tail in _POINTED_BACK if words[-len(tail):] == tail), None)
+    if back is None or not words or words[0] not in WISHES:
+        return None
+    to = next((k for k in range(2, back) if words[k] == "to"), None)
+    comma = next((k for k in range(2, back) if words[k] == ","), None)
+    if to is None or comma is None or comma < to + 2 or comma + 1 >= back or sentence[comma + 1].lemma not in VERBS:
+        return None
+    return [*sentence[comma + 1:back], sentence[to], Token("make", "make", sentence[to].start, sentence[to].end), *sentence[1:to],
+            *sentence[to + 1:comma]]
+
+
+def fronted(tokens: list[Token]) -> list[Token]:
+    """``tokens`` with each sentence that says its amount or purpose first rewritten in the plain order (see the module
+    docstring)."""
+    out: list[Token] = []
+    for start, end in _sentences(tokens):
+        sentence = tokens[start:end]
+        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or sentence
+        out += tokens[end:end + 1]
+    return out

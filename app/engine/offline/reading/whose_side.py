@@ -1,0 +1,31 @@
+"""A side of the object said with its owner: "the wheel on the bin's right side", "the knob at the toaster's front end".
+The owner is the object itself, so the words are rewritten as the plain side ("on the right side"), which the mention
+parser reads as a place among the parts."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.words import OBJECT_NOUNS, SPATIAL
+from app.engine.offline.reading.token import Token
+
+_PLACES = frozenset({"on", "at", "to", "toward", "towards", "from", "by"})
+_REGIONS = frozenset({"side", "end", "half", "part", "section", "corner", "edge"})
+
+
+_OBJECTS = frozenset(OBJECT_NOUNS)
+
+
+def whose_side(tokens: list[Token]) -> list[Token]:
+    """``tokens`` with "PLACE the OBJECT 's SIDE REGION" said as "PLACE the SIDE REGION"."""
+    out: list[Token] = []
+    k = 0
+    while k < len(tokens):
+        words = [t.text for t in tokens[k:k + 7]]
+        own = next((j for j in (3, 4) if len(words) > j + 2 and words[j] == "'s"), 0)  # "the bin's", "the trash can's"
+        if own and words[0] in _PLACES and words[1] in ("the", "its") and words[own - 1] in _OBJECTS and words[own + 1] in SPATIAL and (
+                words[own + 2] in _REGIONS):
+            out += [tokens[k], tokens[k + 1]]  # "on the bin's right side": on the right side
+            k += own + 1
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
