@@ -12,6 +12,7 @@ from app.engine.lexicon.objects import carrier_of
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
+from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.holders import side_of_object
 from app.engine.offline.told import held_in
 
@@ -78,6 +79,11 @@ def condition(builder: Builder, act: Act) -> None:
     words_in = set(frame.text.split())
     if words_in & {"starts", "begins", "started", "already"} or ("left" in words_in and words_in & {"was", "were", "been", "got"}):
         builder.refs.remember(parts, [])  # "the door starts partly open", "it was left half open": how the scene begins, not a step
+        return
+    last = {m.joint for m in (*builder.steps[-1].controls, *builder.steps[-1].effects)} if builder.steps else set()
+    if frame.link is not Link.CONDITION and parts and all(p.joint in last for p in parts):
+        builder.notes.append(f"read '{frame.text}' as how things were before the step before it, no step of its own")
+        builder.refs.remember(parts, [])  # "swing the safe door closed, the safe's standing open": why, not a new state
         return
     if words_in & {"locked", "latched"} and parts and not any(p.joint in builder.tracker.releases for p in parts):
         builder.notes.append(f"'{frame.text}': found no part that releases it; it is worked directly")  # "the door is latched until ..."

@@ -366,7 +366,9 @@ def _order(clauses: list[Clause]) -> list[Clause]:
         first = clause.tokens[0] if clause.tokens else None
         gerund = first is not None and (_ing(first) or verb_at(list(clause.tokens), 0, strict=True) or _someone_does(clause.tokens))
         previous = clauses[clause.index - 1] if clause.index > 0 else None
-        after_gerund = clause.marker in AFTER and gerund and previous is not None and previous.marker not in AFTER
+        following = clauses[clause.index + 1] if clause.index + 1 < len(clauses) else None
+        fronted = following is not None and following.conjoined and following.marker == ","  # "A, and after holding it 4 s, close it"
+        after_gerund = clause.marker in AFTER and gerund and previous is not None and previous.marker not in AFTER and not fronted
         after_before = clause.index == 1 and previous is not None and previous.marker in BEFORE and previous.link is not Link.CONDITION
         if (after_gerund or after_before) and clause.link is not Link.CONDITION:
             clause = Clause(clause.index, clause.tokens, clause.link, goes_first=True, marker=clause.marker, conjoined=clause.conjoined)

@@ -173,8 +173,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
                 continue  # "in the top row", "in 2 seconds", "over the top of the bucket"
             info = VERBS.get(tokens[verb].lemma)
             adjacent = i == verb + 1 and info is not None and word in info.particles
-            if word == "on" and not adjacent and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
-                continue  # "push the bin on its wheels"
+            if word == "on" and not adjacent and i + 1 < len(tokens) and (tokens[i + 1].text in DETERMINERS or tokens[i + 1].text in OBJECT_NOUNS):
+                continue  # "push the bin on its wheels", "turn the knob furthest left on washer ..."
             if word == "off" and i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS:
                 place = next((t for t in tokens[i + 1:i + 4] if t.text not in DETERMINERS), None)
                 if place is not None and place.lemma in PLACES:

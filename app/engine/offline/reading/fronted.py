@@ -8,7 +8,7 @@ door", "press the release button to make the door drop open"); sentences of any 
 from __future__ import annotations
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import AMOUNTS, WISHES
+from app.engine.lexicon.words import AMOUNTS, DETERMINERS, OBJECT_NOUNS, WISHES
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.word_class import can_be_verb
 
@@ -101,12 +101,38 @@ def _wish_then_means(sentence: list[Token]) -> list[Token] | None:
             *sentence[to + 1:comma]]
 
 
+def _place_first(sentence: list[Token]) -> list[Token] | None:
+    """"On the washing machine (,) rotate the knob furthest left": the object said first only sets the scene."""
+    if len(sentence) < 4 or sentence[0].text not in ("on", "for", "with") or sentence[1].text not in DETERMINERS:
+        return None
+    verb = next((k for k in range(2, len(sentence) - 1) if sentence[k].lemma in VERBS and sentence[k].text not in OBJECT_NOUNS and (
+        sentence[k + 1].text not in OBJECT_NOUNS)), None)  # not "washing" in "the washing machine"
+    if verb is None or sentence[verb - 1].text in DETERMINERS or not any(t.text in OBJECT_NOUNS for t in sentence[2:verb]) or not all(
+            t.text in OBJECT_NOUNS or t.text in DETERMINERS or t.text == "," or sentence[k + 1].text in OBJECT_NOUNS for k, t in enumerate(
+                sentence[2:verb], start=2)):
+        return None
+    return sentence[verb:]
+
+
+_EMPTY_TAILS = (("make", "it", "happen"), ("make", "that", "happen"), ("make", "this", "happen"), ("do", "it"), ("do", "that"),
+                ("handle", "it"), ("sort", "it"), ("sort", "it", "out"), ("get", "it", "done"), ("get", "that", "done"))
+"""A last clause that only asks for what was said before it ("I want some toast, make it happen")."""
+
+
+def _empty_tail(sentence: list[Token]) -> list[Token] | None:
+    words = tuple(t.text for t in sentence)
+    tail = next((tail for tail in _EMPTY_TAILS if words[-len(tail):] == tail), None)
+    if tail is None or len(words) <= len(tail) + 2 or words[-len(tail) - 1] not in (",", "and", "so", "-"):
+        return None
+    return sentence[:-len(tail) - 1]
+
+
 def fronted(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each sentence that says its amount or purpose first rewritten in the plain order (see the module
     docstring)."""
     out: list[Token] = []
     for start, end in _sentences(tokens):
         sentence = tokens[start:end]
-        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or sentence
+        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or sentence
         out += tokens[end:end + 1]
     return out

@@ -163,10 +163,10 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             if out and out[-1].text == ",":
                 out.pop()
             continue
-        if token.text == "leave" and _as_they_are(tokens, i):
+        if token.text in ("leave", "leaving") and _as_they_are(tokens, i):
             out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
             continue
-        if token.text == "leave" and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
+        if token.text in ("leave", "leaving") and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
             out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
             continue
         if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):

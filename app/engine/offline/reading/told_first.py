@@ -22,7 +22,7 @@ def put_in_order(acts: list[Act], act: Act, moved: int | None) -> int | None:
             act = replace(act, goal=replace(frame, themes=main.themes))  # "after holding it down": the lever of the step it precedes
         acts.insert(len(acts) - 1, act)
         return len(acts) - 2
-    if moved is not None and frame.conjoined and frame.link is Link.SEQUENCE and frame.verb is not None and (
+    if moved is not None and frame.conjoined and frame.marker == "and" and frame.link is Link.SEQUENCE and frame.verb is not None and (
             not frame.themes or all(m.pronoun for m in frame.themes)):
         acts.insert(moved + 1, act)  # "after you've depressed it fully and held it down for 3 s": both go first
         return moved + 1
