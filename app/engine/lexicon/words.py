@@ -307,7 +307,7 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 _ONLY_BODY = frozenset({"knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
 """A person's body, hurt on the object ("I keep bumping my knee on it"): never a part (unlike "head", "arm", "foot")."""
-NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
+NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "clear", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",

@@ -3,7 +3,7 @@
 left" (leftmost), "lever: full left", "max cold" (a mixer tap: hot is the viewer's left), "to the midpoint of its
 travel" (halfway), "give it two seconds" (wait), "no need to touch the dial" (don't), "unlatch nothing", "forget the
 pedal", "one full counterclockwise turn" (the turn, then its sense), "180 clockwise" (degrees), "back the cap off" (loosen
-it), "as far left as it will go" / "all the way left" / "hard left" (a way, not a part), "the ketchup, which
+it), "in the unscrewing direction" (counterclockwise), "as far left as it will go" / "all the way left" / "hard left" (a way, not a part), "the ketchup, which
 lives in the door" (a sentence of its own: where it is kept)."""
 
 from __future__ import annotations
@@ -30,6 +30,7 @@ _SPELLS = frozenset({"moment", "second", "sec", "couple", "few", "beat", "minute
 """What follows "give it a ..." when it is a wait ("give it a couple of seconds")."""
 
 
+_SCREWING = {"unscrewing": "counterclockwise", "loosening": "counterclockwise", "screwing": "clockwise", "tightening": "clockwise"}
 _TAP_SIDES = {"hot": "left", "cold": "right", "hottest": "left", "coldest": "right"}
 
 
@@ -126,6 +127,12 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         if t.text.endswith("-most") and t.text[:-5] in ("top", "bottom", "left", "right", "front", "back", "upper", "lower", "inner", "outer"):
             word = t.text.replace("-", "")
             t = Token(word, word, t.start, t.end)  # "the bottom-most rack": the bottommost
+        way = next((k for k in (i + 1, i + 2) if k + 1 < len(tokens) and tokens[k].text in _SCREWING and tokens[k + 1].text == "direction"), None)
+        if t.text == "in" and way is not None and (way == i + 1 or after == "the"):
+            sense = _SCREWING[tokens[way].text]  # "rotate the cap half a turn in the unscrewing direction": counterclockwise
+            out.append(Token(sense, sense, t.start, tokens[way + 1].end))
+            skip = way + 1
+            continue
         if t.text == "flush" and before in ("the", "a") and (not after or not after.isalpha() or after in ("then", "and", "once", "twice")):
             out.extend((t, Token("button", "button", t.start, t.end)))  # "press the flush": its flush button
             continue

@@ -312,12 +312,12 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
-    from app.engine.offline.reading.whose_side import whose_side
+    from app.engine.offline.reading.whose_side import row_first, whose_side
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = whose_side(fronted(told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens))))))))))))))
+    tokens = row_first(whose_side(fronted(told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))))))))))
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

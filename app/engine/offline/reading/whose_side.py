@@ -1,14 +1,17 @@
 """A side of the object said with its owner: "the wheel on the bin's right side", "the knob at the toaster's front end".
 The owner is the object itself, so the words are rewritten as the plain side ("on the right side"), which the mention
-parser reads as a place among the parts."""
+parser reads as a place among the parts. A key's row said first ("press bottom row middle key") is put after it ("the
+middle key in the bottom row")."""
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import OBJECT_NOUNS, SPATIAL
+from app.engine.lexicon.words import DETERMINERS, OBJECT_NOUNS, ORDINALS, SPATIAL
 from app.engine.offline.reading.token import Token
 
 _PLACES = frozenset({"on", "at", "to", "toward", "towards", "from", "by"})
 _REGIONS = frozenset({"side", "end", "half", "part", "section", "corner", "edge"})
+_LINES = frozenset({"row", "column"})
+_KEYS = frozenset({"key", "button", "keys", "buttons"})
 
 
 _OBJECTS = frozenset(OBJECT_NOUNS)
@@ -25,6 +28,24 @@ def whose_side(tokens: list[Token]) -> list[Token]:
                 words[own + 2] in _REGIONS):
             out += [tokens[k], tokens[k + 1]]  # "on the bin's right side": on the right side
             k += own + 1
+            continue
+        out.append(tokens[k])
+        k += 1
+    return out
+
+
+def row_first(tokens: list[Token]) -> list[Token]:
+    """``tokens`` with "(the) bottom row middle key" said as "the middle key in the bottom row"."""
+    out: list[Token] = []
+    k = 0
+    while k < len(tokens):
+        words = [t.text for t in tokens[k:k + 4]]
+        line = words[0] in SPATIAL or words[0] in ORDINALS
+        if len(words) == 4 and line and words[1] in _LINES and words[2] in SPATIAL and words[3] in _KEYS and not (out and out[-1].text in DETERMINERS):
+            at = tokens[k]
+            out += [Token("the", "the", at.start, at.start), tokens[k + 2], tokens[k + 3], Token("in", "in", at.start, at.start),
+                    Token("the", "the", at.start, at.start), tokens[k], tokens[k + 1]]
+            k += 4
             continue
         out.append(tokens[k])
         k += 1
