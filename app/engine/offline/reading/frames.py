@@ -342,8 +342,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         sense = _sense(verb, particle)
     elif wish and verb is None:
         sense = next((WISHED_SENSES[t.text] for t in tokens if t.text in WISHED_SENSES), VerbSense.OPEN)
-    if let and verb in CAUSATIVES:
-        sense = VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)  # "let the door down", "let go"
+    if let and verb in CAUSATIVES:  # "let the door down", "let go"; "get the lid off the pot": take it off
+        sense = (VERBS["take"].particles.get(particle or "") if verb == "get" else None) or VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)
     elif let and (sense is None or particle == "go"):
         sense = VerbSense.RELEASE
     if any(m.head in _BODY_PARTS for m in subject) and sense is VerbSense.RELEASE:

@@ -25,10 +25,13 @@ _POINTED_BACK = (("to", "make", "that", "happen"), ("to", "make", "it", "happen"
 """A purpose that only points back to the wish before ("... press the button to make that happen")."""
 
 
+_OPENS_AMOUNT = frozenset({"a", "an", "one", "half", "about", "roughly", "around", "approximately", "exactly", "another", "just"})
+
+
 def _amount(words: list[Token]) -> bool:
-    """A measure with no verb: a number, or an amount word ("halfway", "half a turn", "all the way")."""
-    return bool(words) and any(t.number is not None or t.text in AMOUNTS for t in words) and all(
-        not t.is_punct for t in words)
+    """A measure said first: a number, or an amount word ("halfway", "half a turn", "all the way"), from the first word on."""
+    return bool(words) and (words[0].number is not None or words[0].text in AMOUNTS or words[0].text in _OPENS_AMOUNT) and any(
+        t.number is not None or t.text in AMOUNTS for t in words) and all(not t.is_punct for t in words)
 
 
 def _sentences(tokens: list[Token]) -> list[tuple[int, int]]:
@@ -48,8 +51,8 @@ def _rewritten(sentence: list[Token]) -> list[Token] | None:
         return None
     head = sentence[:split]
     rest = sentence[split:]
-    while rest and rest[0].text in _BREAKS:
-        rest = rest[1:]
+    while rest and (rest[0].text in _BREAKS or rest[0].text in ("just", "then", "now")):
+        rest = rest[1:]  # "one full revolution on the turntable, just spin it"
     if not rest:
         return None
     on = next((k for k, t in enumerate(head) if t.text in _ON), None)
