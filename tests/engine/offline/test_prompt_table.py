@@ -59,6 +59,60 @@ def R(asset_name: str, prompt: str, **kwargs: object) -> Row:
 
 
 ROWS: list[Row] = [
+    # --- paraphrase rounds 46-47 (dev prompts said again by other writers: chatty, terse, reordered, typed on a phone) ---
+    R("extra/storage_26525", "About halfway - that's how far I want the drawer slid open.", joints={"joint_0": E(end=0.256)}),  # r46c_023
+    R("toaster_103477", "Half a turn on the browning dial, please - twist it.", joints={"joint_0": E(end=-3.1416), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r46c_039
+    R("extra/microwave_7128", "180 degrees on the lower knob (there are two), please - turn it.", joints={"joint_2": E(end=-3.1416), "joint_0": E(still=True), "joint_1": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True)}),  # r46c_054
+    R("window_103135", "45 degrees - tilt the window open to that.", joints={"joint_0": E(end=0.5089)}),  # r46c_071
+    R("box_100671", "Roughly 90 degrees - lift the chest's lid up to about that.", joints={"joint_0": E(end=1.1812)}),  # r46c_147
+    R("extra/kitchen_pot_100015", "30 cm - a foot - off the rim: that's how high I want the pot lid raised.", refuse=True),  # r46c_021
+    R("dishwasher_12553", "To make the dishwasher door drop open, hit the release button.", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r46c_113
+    R("dishwasher_12553", "I want the dishwasher's door to drop open - press the release button so that it does.", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r46c_114
+    R("extra/microwave_7128", "I'd like the microwave door to swing open - can you press the door-release button underneath the knobs to make that happen?", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708), "joint_2": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True)}, order=(("joint_1", "joint_0"),)),  # r46a_010
+    R("toaster_103483", "Let the toaster lever go back up after holding it all the way down for 2 seconds.", joints={"joint_0": E(peak=0.3)}),  # r46c_154
+    R("toaster_103483", "Robot test - release the toaster lever so it springs back up, but only after you've depressed it fully and held it down for 3 s.", joints={"joint_0": E(peak=0.3)}),  # r46c_074
+    R("extra/safe_101612", "Hold the safe's handle there for two seconds once you've turned it as far as it will go.", joints={"joint_2": E(moves=True), "joint_1": E(still=True)}),  # r46c_151
+    R("window_103135", "Shut window, it's chilly.", joints={"joint_0": E(end=-0.2765)}),  # r46b_142
+    R("suitcase_103762", "Shut the suitcase, needs to be travel-ready.", joints={"joint_0": E(end=-1.0472), "joint_1": E(still=True)}),  # r46b_036
+    R("extra/box_100214", "Shut the right-hand clasp, meaning the one on my right when I'm facing the front; just flip it closed.", joints={"joint_2": E(end=0.4363), "joint_0": E(still=True), "joint_1": E(still=True)}),  # r46c_018
+    R("extra/coffee_machine_102145", "could you lift the small lid on top of the coffee machine right up to the top, going as slow as possible", joints={"joint_1": E(end=0.036), "joint_0": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)}),  # r46c_084
+    R("window_103135", "I'd like the casement swung open by 0.52 radians, counting from where it's completely shut.", joints={"joint_0": E(end=0.2435)}),  # r46a_018
+    R("storage_23472", "I'd like the drawer up top on this door-and-drawer cabinet extended to its maximum, please.", joints={"joint_1": E(end=0.4), "joint_0": E(still=True)}),  # r46a_136
+    R("extra/box_100214", "I'd like only the catch on the right put into its locked position, please - leave everything else as it is.", joints={"joint_2": E(end=0.4363), "joint_0": E(still=True), "joint_1": E(still=True)}),  # r46a_092
+    R("extra/kitchen_pot_100015", "I want the lid seated back on the pot at the end, but first raise it by the entire 6 cm of its travel.", joints={"joint_0": E(peak=0.06)}),  # r46c_014
+    R("extra/kitchen_pot_100015", "Could you raise the pot's lid all the way up for just a sec so I can look inside, then set it back down?", joints={"joint_0": E(peak=0.06)}),  # r46a_144
+    R("trash_can_102155", "Turn the trash can's left-side wheel through half a revolution.", joints={"joint_1": E(end=3.1416), "joint_0": E(still=True), "joint_2": E(still=True)}),  # r46c_116
+    R("trash_can_102155", "Could you turn the wheel on the bin's right side through one full revolution?", joints={"joint_0": E(end=6.2832), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r46a_037
+    R("refrigerator_11178", "Could you open the right-hand one of the two fridge doors?", joints={"joint_1": E(end=3.1416), "joint_0": E(still=True)}),  # r46a_077
+    R("extra/box_100214", "The lid gets closed first; then lock the left latch, and the right one after that.", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"), ("joint_1", "joint_2"),)),  # r46c_158
+    R("bucket_102352", "Bucket handle: move from front side over to rest against the back side.", joints={"joint_0": E(end=4.7187)}),  # r46b_034
+    R("extra/coffee_machine_102145", "Little lever on top of coffee machine -> shove all the way left. Left = my left when facing the machine from front.", joints={"joint_0": E(end=-0.6095), "joint_1": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)}),  # r46b_084
+    R("extra/coffee_machine_102145", "Espresso lever: after swinging it 20 degrees over to the left and keeping it there for three seconds, let go so it springs back.", joints={"joint_0": E(peak=-0.3491), "joint_1": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)}),  # r46c_127
+    R("storage_19179", "ok so bottom drawer, open it 40 cm thx", joints={"joint_0": E(end=0.4), "joint_1": E(still=True)}),  # r47d_002
+    R("stapler_103099", "ok so whole stapler, 0.2 m to my left pls", joints={"joint_0": E(still=True)}, base=(0.0, 0.2, 0.0)),  # r47d_052
+    R("switch_100952", "ok so toggle needs to go to the opposite end of its throw, snap it over thx", joints={"joint_0": E(end=0.3142)}),  # r47d_060
+    R("kitchen_pot_100038", "pot needs lifting 15 cm off the stove pls", joints={"joint_0": E(still=True)}, base=(0.0, 0.0, 0.15)),  # r47d_053
+    R("storage_19179", "ok so pull out the lower drawer of the table, i need somthing out of it", joints={"joint_0": E(end=1.0), "joint_1": E(still=True)}),  # r47d_098
+    R("faucet_991", "Tap handle -> ~45deg left.", joints={"joint_0": E(end=0.7854)}),  # r47b_073
+    R("suitcase_103762", "Zip up suitcase -> drive lid to completely closed.", joints={"joint_0": E(end=-1.0472), "joint_1": E(still=True)}),  # r47b_008
+    R("extra/safe_102380", "Safe - drive door to closed pls.", joints={"joint_2": E(end=-1.3195), "joint_0": E(still=True)}),  # r47b_094
+    R("extra/storage_25308", "Extend right drawer first; once open, extend left drawer.", joints={"joint_0": E(end=0.524), "joint_1": E(end=0.44)}, order=(("joint_0", "joint_1"),)),  # r47b_084
+    R("box_100671", "Prop box open to 90deg relative to closed.", joints={"joint_0": E(end=1.1812)}),  # r47b_090
+    R("trash_can_102181", "Don't use pedal - raise bin lid manually until it's open.", joints={"joint_1": E(end=3.1542), "joint_0": E(still=True)}),  # r47b_106
+    R("extra/storage_25308", "Open right drawer first, left drawer after.", joints={"joint_0": E(end=0.524), "joint_1": E(end=0.44)}, order=(("joint_0", "joint_1"),)),  # r47b_080
+    R("washing_machine_103508", "Turn the knob furthest left on washer one full revolution counterclockwise.", joints={"joint_3": E(end=-6.2832), "joint_0": E(still=True), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r47b_044
+    R("washing_machine_103508", "on the washing machine rotate the knob furthest left a quarter turn clockwise", joints={"joint_3": E(end=1.5708), "joint_0": E(still=True), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r47d_084
+    R("extra/safe_102380", "can u swing the safe door closed, the safe's standing open", joints={"joint_2": E(end=-1.3195), "joint_0": E(still=True)}),  # r47d_105
+    R("dishwasher_12553", "Can you bring the front flap of the dishwasher down so it lies flat, leaving the buttons alone?", joints={"joint_0": E(end=1.5708), "joint_1": E(still=True)}),  # r47a_118
+    R("toaster_103477", "basically i want some toast, make it happen thx", joints={"joint_1": E(end=0.428), "joint_0": E(still=True), "joint_2": E(still=True)}),  # r47d_012
+    R("bottle_cap_3558", "Rotate cap half turn in unscrewing direction.", joints={"joint_0": E(end=3.14)}),  # r47b_108
+    R("safe_101564", "Keys: press bottom row middle key -> then top-right key.", joints={"joint_10": E(peak=0.004), "joint_2": E(peak=0.004), "joint_0": E(still=True), "joint_1": E(still=True), "joint_11": E(still=True), "joint_13": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True), "joint_5": E(still=True), "joint_6": E(still=True), "joint_7": E(still=True), "joint_8": E(still=True), "joint_9": E(still=True)}, order=(("joint_10", "joint_2"),)),  # r47b_053
+    R("coffee_machine_103030", "Blender: topmost piece (small cap sitting right on top of jug) -> lift straight up, fully clear off.", joints={"joint_2": E(end=0.5), "joint_0": E(still=True), "joint_1": E(still=True)}),  # r47b_017
+    R("kitchen_pot_100038", "saucepan cover, lift it as high as it can go pls", joints={"joint_0": E(end=0.5)}),  # r47d_055
+    R("kitchen_pot_100038", "theres steam building up inside so can u get the lid off the pot", joints={"joint_0": E(end=0.5)}),  # r47d_047
+    R("extra/microwave_7128", "one full revolution exactly on the microwave turntable pls, just spin it", joints={"joint_4": E(end=-6.2832), "joint_0": E(still=True), "joint_1": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)}),  # r47d_081
+    R("microwave_7236", "Open the microwave door wide, and after holding it wide open for 4 s, close it.", joints={"joint_0": E(peak=1.5708)}),  # r47c_015
+    R("refrigerator_11178", "I'd like the right-hand door swung to 90\u00b0 first, please, and after that the left-hand door opened as far as it goes.", joints={"joint_1": E(end=1.5708), "joint_0": E(end=3.1416)}, order=(("joint_1", "joint_0"),)),  # r47a_058
     # --- blind round 45 (the held-out mix again, written after rounds 43 and 44 were fixed) ---
     R("extra/microwave_7128", "This microwave door has no handle. Get it open for me, all the way.",  # no handle: its release
       joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
