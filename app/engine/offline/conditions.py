@@ -81,7 +81,8 @@ def condition(builder: Builder, act: Act) -> None:
         builder.refs.remember(parts, [])  # "the door starts partly open", "it was left half open": how the scene begins, not a step
         return
     last = {m.joint for m in (*builder.steps[-1].controls, *builder.steps[-1].effects)} if builder.steps else set()
-    if frame.link is not Link.CONDITION and parts and all(p.joint in last for p in parts):
+    if frame.link is not Link.CONDITION and frame.stative and frame.marker not in ("once", "when", "after", "until", "while") and parts and all(
+            p.joint in last for p in parts):
         builder.notes.append(f"read '{frame.text}' as how things were before the step before it, no step of its own")
         builder.refs.remember(parts, [])  # "swing the safe door closed, the safe's standing open": why, not a new state
         return

@@ -6,7 +6,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS, WISHED_SENSES, VerbSense
-from app.engine.lexicon.words import DETERMINERS, PERSON_NOUNS, PERSONS, STATES, WISHES
+from app.engine.lexicon.words import DETERMINERS, EVERYDAY_WORDS, PERSON_NOUNS, PERSONS, SPATIAL, STATES, WISHES
 from app.engine.offline.reading.mentions import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -43,7 +43,7 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
                 done = replace(done, text=_STATE_OF[WISHED_SENSES[done.text]], lemma=_STATE_OF[WISHED_SENSES[done.text]])
             return True, [*tokens[k:j], done, *tokens[j + must + 1:]]  # "the oven door needs to be halfway down": the part and its wanted state
     if len(words) >= 2 and words[-1] in ("needs", "has") and (words[k] in DETERMINERS or kind_of_word(words[-2]) is not None or (
-            len(words) == 2 and words[0] not in PERSONS and words[0] not in PERSON_NOUNS)):
+            len(words) == 2 and words[0] not in PERSONS and words[0] not in PERSON_NOUNS and words[0] not in EVERYDAY_WORDS)):
         # "drawer needs | to come out 8 inches": the part, then what it should do ("toggle needs | to go ...": a noun, not the verb)
         the = [] if words[k] in DETERMINERS else [Token("the", "the", tokens[0].start, tokens[0].start)]
         return True, [*the, *tokens[:-1]]
@@ -68,4 +68,4 @@ def _done_to(tokens: list[Token]) -> list[Token]:
 def _participle(token: Token) -> bool:
     """A past participle of a verb the lexicon knows, said after the part it is done to ("swung", "extended", "given";
     not a state word such as "closed", which the wish reads as the state wanted)."""
-    return token.lemma in VERBS and (token.text != token.lemma or token.text in ("put", "set")) and not token.text.endswith("ing") and token.text not in STATES
+    return token.lemma in VERBS and (token.text != token.lemma or token.text in ("put", "set")) and token.text not in SPATIAL and not token.text.endswith("ing") and token.text not in STATES

@@ -60,7 +60,7 @@ def verb_only(word: str) -> bool:
 
 
 def nounless(word: str) -> bool:
-    """A word English never uses as a noun ("chilly", "simultaneously", "travel-ready": the last piece of a compound),
+    """A word English uses only as a modifier ("chilly", "simultaneously", "travel-ready": the last piece of a compound),
     and no part word: a remark or a manner, never a part's head ("shut the window, it's chilly")."""
     from lemminflect import getAllLemmas
 
@@ -68,7 +68,8 @@ def nounless(word: str) -> bool:
 
     last = word.split("-")[-1]
     lemmas = getAllLemmas(last)
-    return bool(lemmas) and "NOUN" not in lemmas and "PROPN" not in lemmas and kind_of_word(word) is None and kind_of_word(last) is None
+    return bool(lemmas) and "NOUN" not in lemmas and "PROPN" not in lemmas and ("VERB" not in lemmas or "-" in word) and (
+        kind_of_word(word) is None and kind_of_word(last) is None)  # not "temp", "browning": a verb form may name a part
 
 
 @lru_cache(maxsize=4096)
