@@ -74,7 +74,7 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     # fraction of the closed -> open (or rest -> far limit) range
     "fully": 1.0, "completely": 1.0, "all the way": 1.0, "wide": 1.0, "wide open": 1.0, "entirely": 1.0, "totally": 1.0,
     "full": 1.0, "maximum": 1.0, "max": 1.0, "as far as it goes": 1.0, "as far as possible": 1.0, "as far as it will go": 1.0,
-    "to the limit": 1.0, "as high as it can go": 1.0, "as high as it will go": 1.0, "as high as it goes": 1.0, "to the end": 1.0, "as wide as": 1.0, "as high as": 1.0, "all the way open": 1.0,
+    "to the limit": 1.0, "as high as it can go": 1.0, "as high as it will go": 1.0, "to the end": 1.0, "as wide as": 1.0, "as high as": 1.0, "all the way open": 1.0,
     "halfway": 0.5, "half way": 0.5, "half-way": 0.5, "half": 0.5, "midway": 0.5, "partway": 0.5, "part way": 0.5, "half open": 0.5,
     "partly": 0.3, "partially": 0.3, "a bit": 0.25, "a little": 0.2, "a little bit": 0.2, "somewhat": 0.3, "ajar": 0.25,
     "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "a few": 0.25, "a tad": 0.15,
@@ -232,6 +232,7 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
+    "thats": "that's", "theres": "there's", "whats": "what's", "cant": "can't", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
     "btn": "button", "btns": "buttons", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""

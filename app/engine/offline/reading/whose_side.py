@@ -1,11 +1,12 @@
 """A side of the object said with its owner: "the wheel on the bin's right side", "the knob at the toaster's front end".
 The owner is the object itself, so the words are rewritten as the plain side ("on the right side"), which the mention
 parser reads as a place among the parts. A key's row said first ("press bottom row middle key") is put after it ("the
-middle key in the bottom row")."""
+middle key in the bottom row"), and "the knob that's second from the top" as "the knob second from the top"."""
 
 from __future__ import annotations
 
 from app.engine.lexicon.words import DETERMINERS, OBJECT_NOUNS, ORDINALS, SPATIAL
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
 _PLACES = frozenset({"on", "at", "to", "toward", "towards", "from", "by"})
@@ -46,6 +47,11 @@ def row_first(tokens: list[Token]) -> list[Token]:
             out += [Token("the", "the", at.start, at.start), tokens[k + 2], tokens[k + 3], Token("in", "in", at.start, at.start),
                     Token("the", "the", at.start, at.start), tokens[k], tokens[k + 1]]
             k += 4
+            continue
+        if words[0] in ("that's", "which's", "that", "which") and out and (out[-1].text == "one" or kind_of_word(out[-1].text) is not None) and (
+                next_word := words[1 + (words[0] in ("that", "which") and words[1:2] == ["is"])] if len(words) > 2 else "") and (
+                next_word in ORDINALS or next_word in SPATIAL):
+            k += 1 + (words[0] in ("that", "which") and words[1:2] == ["is"])  # "the knob that's second from the top"
             continue
         out.append(tokens[k])
         k += 1
