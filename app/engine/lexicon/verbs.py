@@ -89,7 +89,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("unfold", S.OPEN, motion="hinge"),
     VerbInfo("uncover", S.OPEN),
     VerbInfo("close", S.CLOSE, _p(up=S.CLOSE, back=S.RETURN)),
-    VerbInfo("seat", S.CLOSE, _p(back=S.CLOSE, down=S.CLOSE)),
+    VerbInfo("seat", S.LOWER, _p(back=S.LOWER, down=S.LOWER)),  # "seat the lid back on the pot"
     VerbInfo("shut", S.CLOSE),
     VerbInfo("seal", S.CLOSE),
     VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE, down=S.PRESS, closed=S.CLOSE)),

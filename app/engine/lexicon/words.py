@@ -232,7 +232,7 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
-    "thats": "that's", "theres": "there's", "whats": "what's", "cant": "can't", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
+    "thats": "that's", "theres": "there's", "whats": "what's", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
     "btn": "button", "btns": "buttons", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""

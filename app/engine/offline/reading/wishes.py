@@ -45,7 +45,7 @@ def wished_state(tokens: list[Token]) -> tuple[bool, list[Token]]:
     if len(words) >= 2 and words[-1] in ("needs", "has") and (words[k] in DETERMINERS or kind_of_word(words[-2]) is not None or (
             len(words) == 2 and words[0] not in PERSONS and words[0] not in PERSON_NOUNS and words[0] not in EVERYDAY_WORDS)):
         # "drawer needs | to come out 8 inches": the part, then what it should do ("toggle needs | to go ...": a noun, not the verb)
-        the = [] if words[k] in DETERMINERS else [Token("the", "the", tokens[0].start, tokens[0].start)]
+        the = [Token("the", "the", tokens[0].start, tokens[0].start)] if len(words) == 2 and words[k] not in DETERMINERS else []
         return True, [*the, *tokens[:-1]]
     return False, tokens
 
