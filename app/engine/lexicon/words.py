@@ -74,7 +74,8 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     # fraction of the closed -> open (or rest -> far limit) range
     "fully": 1.0, "completely": 1.0, "all the way": 1.0, "wide": 1.0, "wide open": 1.0, "entirely": 1.0, "totally": 1.0,
     "full": 1.0, "maximum": 1.0, "max": 1.0, "as far as it goes": 1.0, "as far as possible": 1.0, "as far as it will go": 1.0,
-    "to the limit": 1.0, "as high as it can go": 1.0, "as high as it will go": 1.0, "to the end": 1.0, "as wide as": 1.0, "as high as": 1.0, "all the way open": 1.0,
+    "to the limit": 1.0, "as high as it can go": 1.0, "as high as it will go": 1.0, "to far end of its range": 1.0,
+    "to the far end of its range": 1.0, "to the end of its range": 1.0, "to the far end of its travel": 1.0, "to the end of its travel": 1.0, "to the end": 1.0, "as wide as": 1.0, "as high as": 1.0, "all the way open": 1.0,
     "halfway": 0.5, "half way": 0.5, "half-way": 0.5, "half": 0.5, "midway": 0.5, "partway": 0.5, "part way": 0.5, "half open": 0.5,
     "partly": 0.3, "partially": 0.3, "a bit": 0.25, "a little": 0.2, "a little bit": 0.2, "somewhat": 0.3, "ajar": 0.25,
     "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "a few": 0.25, "a tad": 0.15,
@@ -183,7 +184,8 @@ MULTIWORD: tuple[str, ...] = (
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
     "like that", "like this", "as wide as", "as high as", "back to the middle", "back to the centre", "back to the center",
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "because of that", "because of this", "as a consequence", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
-    "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as high as it can go", "as high as it will go", "as high as it goes", "as flat as possible", "as far as possible",
+    "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as high as it can go", "as high as it will go", "as high as it goes",
+    "to far end of its range", "to the far end of its range", "to the end of its range", "to the far end of its travel", "to the end of its travel", "as flat as possible", "as far as possible",
     "as wide as possible", "as wide as it can go", "the rest of the way", "the way it was before", "the way it was", "how it was before", "how it was", "how they were", "like it was before", "like it was", "like they were", "as it was before", "as it was", "as before",
     "that has", "which has", "that have", "which have", "in the reverse order", "in reverse order", "in that order", "in this order", "to the stop", "to the max", "to the maximum", "in the same direction", "right angle", "rest of the way",
 )

@@ -38,6 +38,7 @@ from app.engine.lexicon.words import (
     WISHES,
 )
 from app.engine.offline.reading.mentions import kind_at
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB, verb_at
 from app.engine.offline.reading.word_class import finite_unknown_verb, inflected_verb
@@ -115,8 +116,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
         if (tokens[k].text in AUX or stative) and k > j:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
-        if tokens[k].text in MODALS and k > j and tokens[j].text in DETERMINERS:
-            return True  # "so the steam can escape", "so the camera can see inside"
+        if tokens[k].text in MODALS and k > j and (tokens[j].text in DETERMINERS or (k == j + 1 and kind_of_word(tokens[j].text) is not None)):
+            return True  # "so the steam can escape", "so the camera can see inside", ", door should unlatch"
         if k > j + 1 and tokens[j].text in DETERMINERS and (finite_unknown_verb(tokens[k].text) or (
                 k == j + 2 and tokens[k].text.endswith("s") and tokens[k].text != tokens[k].lemma and inflected_verb(tokens[k].text))):
             return True  # "so the steam clears / escapes": a verb the lexicon does not know

@@ -133,6 +133,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue
+        if t.text in ("joint", "joints") and i and kind_of_word(before) is not None and not (after and kind_of_word(after) is not None):
+            continue  # "turn the faucet handle joint 1 rad": the handle on it
         if t.text in ("full", "complete", "whole") and before in ("a", "one") and i > 1 and tokens[i - 2].text == "of" and after in TURN_UNITS:
             continue  # "three-quarters of a full turn": of a turn
         if t.text == "flush" and before in ("the", "a") and (not after or not after.isalpha() or after in ("then", "and", "once", "twice")):

@@ -191,6 +191,10 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         while out and out[-1].text in (",", "-", "—", "and", "then"):
             out.pop()
         return until_break(tokens, i, _SIMILE_ENDS)
+    told_side = until_break(tokens, i + 1, _SIMILE_ENDS)
+    if t.text == "," and len(after) > 2 and after[1] in ("is", "=", "means") and {w.text for w in tokens[i + 3:told_side]} <= _SAID_SIDES | {"on"} and (
+            {w.text for w in tokens[i + 3:told_side]} & {"left", "right"}):
+        return told_side  # ", hot is the viewer's left": how a side is meant, no step
     if t.text in ("-", "—", ",") and after[:2] in (["the", "left"], ["the", "right"]) and (len(after) < 3 or after[2] in (",", ".", "!", ";")):
         return i + 3  # "... over to the left - my left, standing in front of the machine": which left, said again
     if t.text == "," and after[:1] and after[0] in ("standing", "facing", "looking", "seen", "viewed") and len(after) > 1 and (

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import AMOUNTS, DETERMINERS, OBJECT_NOUNS, WISHES
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.word_class import can_be_verb
 
@@ -90,18 +91,29 @@ def _purpose_first(sentence: list[Token]) -> list[Token] | None:
 
 
 def _wish_then_means(sentence: list[Token]) -> list[Token] | None:
-    """"I want the door to drop open, press the release button so that it does": press the release button to make the door
-    drop open."""
+    """"I want the door to drop open, press the release button so that it does", "the door needs to unlatch and swing
+    open, so press the release button": press the release button to make the door drop open."""
     words = tuple(t.text for t in sentence)
     back = next((len(words) - len(tail) for tail in _POINTED_BACK if words[-len(tail):] == tail), None)
-    if back is None or not words or words[0] not in WISHES:
+    needs = next((k for k in range(1, min(len(words) - 1, 6)) if words[k] in ("needs", "need") and words[k + 1] == "to"), None)
+    if not words or (words[0] not in WISHES and (needs is None or not all(w in DETERMINERS or kind_of_word(w) is not None or w in OBJECT_NOUNS
+                                                                            or w == "'s" for w in words[:needs]))):
         return None
-    to = next((k for k in range(2, back) if words[k] == "to"), None)
-    comma = next((k for k in range(2, back) if words[k] == ","), None)
-    if to is None or comma is None or comma < to + 2 or comma + 1 >= back or sentence[comma + 1].lemma not in VERBS:
+    comma = next((k for k in range(2, len(words)) if words[k] == ","), None)
+    so = comma is not None and comma + 1 < len(words) and words[comma + 1] in ("so", "then", "just")
+    if back is None and not so:
         return None
-    return [*sentence[comma + 1:back], sentence[to], Token("make", "make", sentence[to].start, sentence[to].end), *sentence[1:to],
-            *sentence[to + 1:comma]]
+    back = back if back is not None else len(words)
+    to = needs + 1 if needs is not None else next((k for k in range(2, back) if words[k] == "to"), None)
+    subject = sentence[:needs] if needs is not None else sentence[1:to] if to is not None else []
+    if to is None or comma is None or comma < to + 2 or comma + 1 + so >= back or sentence[comma + 1 + so].lemma not in VERBS or not subject:
+        return None
+    if subject[0].text not in DETERMINERS:
+        subject = [Token("the", "the", subject[0].start, subject[0].start), *subject]  # "door needs to ...": the door
+    wanted = sentence[to + 1:comma]
+    joined = max((k for k, t in enumerate(wanted) if t.text == "and"), default=None)
+    wanted = wanted[joined + 1:] if joined is not None else wanted  # "to unlatch and swing down open": where it ends
+    return [*sentence[comma + 1 + so:back], sentence[to], Token("make", "make", sentence[to].start, sentence[to].end), *subject, *wanted]
 
 
 def _place_first(sentence: list[Token]) -> list[Token] | None:
