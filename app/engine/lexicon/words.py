@@ -235,7 +235,7 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
     "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
     "asap": "quickly", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
     "thats": "that's", "theres": "there's", "whats": "what's", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
-    "btn": "button", "btns": "buttons", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",
+    "btn": "button", "btns": "buttons", "seq": "sequence", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",
 })
 """Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
 PLACE_SIDES: Mapping[str, Side] = MappingProxyType({

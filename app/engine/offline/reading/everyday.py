@@ -133,6 +133,10 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue
+        if t.text == "to" and after in ("left", "right") and before not in ("left", "right") and i + 2 < len(tokens) and tokens[i + 2].text in (
+                "limit", "stop", "end", "side", "edge"):
+            out.extend((t, Token("the", "the", t.end, t.end)))  # "flick the lever to left limit": to the left limit
+            continue
         if t.text in ("joint", "joints") and i and kind_of_word(before) is not None and not (after and kind_of_word(after) is not None):
             continue  # "turn the faucet handle joint 1 rad": the handle on it
         if t.text in ("full", "complete", "whole") and before in ("a", "one") and i > 1 and tokens[i - 2].text == "of" and after in TURN_UNITS:

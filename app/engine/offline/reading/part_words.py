@@ -31,13 +31,14 @@ def kind_at(tokens: list[Token], i: int) -> tuple[PartKind, int] | None:
         n = len(phrase)
         window = tokens[i:i + n]
         if len(window) == n and all(t.lemma == w or t.text == w for t, w in zip(window, phrase, strict=True)) and not (
-                window[-1].text != phrase[-1] and window[-1].text.endswith("ed") and i > 0 and tokens[i - 1].text in _COPULAS):
-            return kind, n  # not "so it's locked (shut)": a state, no lock
+                window[-1].text != phrase[-1] and window[-1].text.endswith("ed") and (i == 0 or tokens[i - 1].text in _COPULAS | _JOINED)):
+            return kind, n  # not "so it's locked (shut)", "shut and latched": a state, no lock
     shaped = kind_of_word(tokens[i].text) if i < len(tokens) and "-" in tokens[i].text else None
     return (shaped, 1) if shaped is not None else None  # "the T-handle"
 
 
 _COPULAS = frozenset({"it's", "is", "are", "they're", "was", "were", "be", "been", "gets", "get", "got", "stays", "remains"})
+_JOINED = frozenset({"and", "or", ",", ":", "then", "fully", "properly", "securely"})
 _PLACE_NOUNS = frozenset({"corner", "side", "end", "edge"})
 
 

@@ -40,7 +40,7 @@ def told_states(tokens: list[Token]) -> list[Token]:
                 or _get_at(tokens, k, out) or _cannot_open(tokens, k, out) or _left_as_found(tokens, k, out) or _asked_where(tokens, k, out)
                 or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out) or _placed_wish(tokens, k, out)
                 or _facing_wall(tokens, k, out) or _see_the_back(tokens, k, out) or _to_state(tokens, k, out)
-                or _bare_state(tokens, k, out) or _relative_to(tokens, k, out))
+                or _bare_state(tokens, k, out) or _relative_to(tokens, k, out) or _shut_and_locked(tokens, k, out))
         if step:
             k += step
             continue
@@ -306,3 +306,15 @@ def _relative_to(tokens: list[Token], k: int, out: list[Token]) -> int:
         return 0
     out.append(Token("from", "from", tokens[k].start, tokens[k + 1].end))
     return 2
+
+
+_FASTENED = {"latched": "latch", "locked": "lock", "fastened": "fasten", "clasped": "fasten"}
+
+
+def _shut_and_locked(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"Toolbox -> shut and latched": shut it, then latch it."""
+    if k + 2 >= len(tokens) or tokens[k].text not in ("shut", "closed") or tokens[k + 1].text != "and" or tokens[k + 2].text not in _FASTENED:
+        return 0
+    done = tokens[k + 2]
+    out.extend([tokens[k], Token("then", "then", done.start, done.start), Token(_FASTENED[done.text], _FASTENED[done.text], done.start, done.end)])
+    return 3
