@@ -133,6 +133,10 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue
+        if t.text == "lower" and before in ("", ",", ".", ";", ":", "then", "and", "first", "please") and kind_of_word(after) is not None and (
+                i + 2 < len(tokens) and tokens[i + 2].text in ("until", "till", "to", "slowly", "gently", "fully", "flat", "completely")):
+            out.extend((t, Token("the", "the", t.end, t.end)))  # "Lower door until flat": lower the door (no lower one of several)
+            continue
         if t.text == "to" and after in ("left", "right") and before not in ("left", "right") and i + 2 < len(tokens) and tokens[i + 2].text in (
                 "limit", "stop", "end", "side", "edge"):
             out.extend((t, Token("the", "the", t.end, t.end)))  # "flick the lever to left limit": to the left limit

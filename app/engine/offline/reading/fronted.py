@@ -142,12 +142,18 @@ def _empty_tail(sentence: list[Token]) -> list[Token] | None:
     return sentence[:-len(tail) - 1]
 
 
+def _asked_of_you(sentence: list[Token]) -> list[Token] | None:
+    """"I'd like you to tap the centre button": tap the centre button."""
+    words = [t.text for t in sentence[:3]]
+    return sentence[3:] if len(sentence) > 3 and words[0] in WISHES and words[1] in ("you", "u") and words[2] == "to" else None
+
+
 def fronted(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each sentence that says its amount or purpose first rewritten in the plain order (see the module
     docstring)."""
     out: list[Token] = []
     for start, end in _sentences(tokens):
         sentence = tokens[start:end]
-        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or sentence
+        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or sentence
         out += tokens[end:end + 1]
     return out

@@ -1,13 +1,16 @@
 """A side of the object said with its owner: "the wheel on the bin's right side", "the knob at the toaster's front end".
 The owner is the object itself, so the words are rewritten as the plain side ("on the right side"), which the mention
 parser reads as a place among the parts. A key's row said first ("press bottom row middle key") is put after it ("the
-middle key in the bottom row"), and "the knob that's second from the top" as "the knob second from the top"."""
+middle key in the bottom row"), "the knob that's second from the top" as "the knob second from the top", and "the button that releases the latch" as
+"the button"."""
 
 from __future__ import annotations
 
+from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import DETERMINERS, OBJECT_NOUNS, ORDINALS, SPATIAL
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import lemma_of
 
 _PLACES = frozenset({"on", "at", "to", "toward", "towards", "from", "by"})
 _REGIONS = frozenset({"side", "end", "half", "part", "section", "corner", "edge"})
@@ -47,6 +50,11 @@ def row_first(tokens: list[Token]) -> list[Token]:
             out += [Token("the", "the", at.start, at.start), tokens[k + 2], tokens[k + 3], Token("in", "in", at.start, at.start),
                     Token("the", "the", at.start, at.start), tokens[k], tokens[k + 1]]
             k += 4
+            continue
+        if words[0] in ("that", "which") and len(words) > 1 and out and kind_of_word(out[-1].text) is not None and tokens[k + 1].text.endswith("s") and (
+                lemma_of(tokens[k + 1].text)[0] in VERBS and lemma_of(tokens[k + 1].text)[0] != tokens[k + 1].text):
+            # "the button that releases the latch": the button (what it does is how it is known, not another part)
+            k = next((j for j in range(k + 1, len(tokens)) if tokens[j].is_punct or tokens[j].text in ("and", "then", "and_then", "so")), len(tokens))
             continue
         if words[0] in ("that's", "which's", "that", "which") and out and (out[-1].text == "one" or kind_of_word(out[-1].text) is not None) and (
                 next_word := words[1 + (words[0] in ("that", "which") and words[1:2] == ["is"])] if len(words) > 2 else "") and (
