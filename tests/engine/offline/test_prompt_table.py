@@ -113,6 +113,19 @@ ROWS: list[Row] = [
     R("extra/microwave_7128", "one full revolution exactly on the microwave turntable pls, just spin it", joints={"joint_4": E(end=-6.2832), "joint_0": E(still=True), "joint_1": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)}),  # r47d_081
     R("microwave_7236", "Open the microwave door wide, and after holding it wide open for 4 s, close it.", joints={"joint_0": E(peak=1.5708)}),  # r47c_015
     R("refrigerator_11178", "I'd like the right-hand door swung to 90\u00b0 first, please, and after that the left-hand door opened as far as it goes.", joints={"joint_1": E(end=1.5708), "joint_0": E(end=3.1416)}, order=(("joint_1", "joint_0"),)),  # r47a_058
+    R("dishwasher_12553", "door needs to unlatch and swing down open, so press the release button pls", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r47d_061
+    R("dishwasher_12553", "ok so hit the release button, door should unlatch and swing down open", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r47d_062
+    R("extra/box_100214", "Toolbox -> shut and latched.", joints={"joint_0": E(end=-1.6755), "joint_1": E(end=0.4363), "joint_2": E(end=0.4363)}, order=(("joint_0", "joint_1"),)),  # r47b_117
+    R("faucet_148", "Flick faucet lever to left limit, then return to centre.", joints={"joint_0": E(peak=1.5708)}),  # r47b_088
+    R("trash_can_102181", "Press foot pedal with foot so lid opens up (pops open).", joints={"joint_0": E(moves=True), "joint_1": E(end=3.1542)}, order=(("joint_0", "joint_1"),)),  # r47b_026
+    R("bucket_102352", "Rotate pail handle joint to far end of its range so handle rests across the back rim.", joints={"joint_0": E(end=4.7187)}),  # r47b_064
+    R("faucet_991", "turn the faucet handle joint +1.0 rad toward the hot side pls, hot is the viewer's left", joints={"joint_0": E(end=1.0)}),  # r47d_091
+    R("extra/microwave_7128", "I'd like the knob that's second from the top rotated 45° counterclockwise, please.", joints={"joint_2": E(end=0.7854), "joint_0": E(still=True), "joint_1": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True)}),  # r47a_098
+    R("extra/microwave_7128", "I'd like the uppermost knob on the microwave turned clockwise three-quarters of a full turn, please.", joints={"joint_3": E(end=-4.7124), "joint_0": E(still=True), "joint_1": E(still=True), "joint_2": E(still=True), "joint_4": E(still=True)}),  # r47a_034
+    R("extra/toaster_103473", "ok so two slot toaster, sink the front lever first, after thats done sink the back lever too", joints={"joint_0": E(end=0.404), "joint_1": E(end=0.404)}, order=(("joint_0", "joint_1"),)),  # r47d_076
+    R("dishwasher_12553", "Could you press the button that releases the latch, and then let the door fall all the way open?", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r46a_013
+    R("safe_101564", "I'd like you to tap the centre button of the keypad's third row, counting from the top, please.", joints={"joint_7": E(peak=0.004), "joint_0": E(still=True), "joint_1": E(still=True), "joint_10": E(still=True), "joint_11": E(still=True), "joint_13": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True), "joint_5": E(still=True), "joint_6": E(still=True), "joint_8": E(still=True), "joint_9": E(still=True)}),  # r46a_028
+    R("dishwasher_11700", "Lower door until flat, pause 2s, raise back up.", joints={"joint_0": E(peak=1.5708)}),  # r46b_159
     # --- blind round 45 (the held-out mix again, written after rounds 43 and 44 were fixed) ---
     R("extra/microwave_7128", "This microwave door has no handle. Get it open for me, all the way.",  # no handle: its release
       joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),
