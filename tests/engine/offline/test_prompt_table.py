@@ -126,6 +126,8 @@ ROWS: list[Row] = [
     R("dishwasher_12553", "Could you press the button that releases the latch, and then let the door fall all the way open?", joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r46a_013
     R("safe_101564", "I'd like you to tap the centre button of the keypad's third row, counting from the top, please.", joints={"joint_7": E(peak=0.004), "joint_0": E(still=True), "joint_1": E(still=True), "joint_10": E(still=True), "joint_11": E(still=True), "joint_13": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True), "joint_4": E(still=True), "joint_5": E(still=True), "joint_6": E(still=True), "joint_8": E(still=True), "joint_9": E(still=True)}),  # r46a_028
     R("dishwasher_11700", "Lower door until flat, pause 2s, raise back up.", joints={"joint_0": E(peak=1.5708)}),  # r46b_159
+    R("extra/safe_102380", "Turn safe prop's combo dial clockwise by 60 degrees, leave door as is.", joints={"joint_0": E(end=-1.0472), "joint_2": E(still=True)}),  # r46b_114
+    R("extra/suitcase_100550", "For four seconds I want the suitcase open, so open it up and keep it that way.", joints={"joint_0": E(end=1.5708), "joint_1": E(still=True)}),  # r46c_093
     # --- blind round 45 (the held-out mix again, written after rounds 43 and 44 were fixed) ---
     R("extra/microwave_7128", "This microwave door has no handle. Get it open for me, all the way.",  # no handle: its release
       joints={"joint_0": E(end="upper"), "joint_1": E(moves=True)}, order=(("joint_1", "joint_0"),)),

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from app.engine.lexicon.relations import VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, NUMBER_WORDS, ROTATION_SENSE, TURN_UNITS
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, NUMBER_WORDS, OBJECT_NOUNS, ROTATION_SENSE, TURN_UNITS
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -141,6 +141,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
                 "limit", "stop", "end", "side", "edge"):
             out.extend((t, Token("the", "the", t.end, t.end)))  # "flick the lever to left limit": to the left limit
             continue
+        if t.text == "prop" and before in OBJECT_NOUNS and after == "'s":
+            continue  # "the safe prop's combo dial": the safe's (a prop of a game scene)
         if t.text in ("joint", "joints") and i and kind_of_word(before) is not None and not (after and kind_of_word(after) is not None):
             continue  # "turn the faucet handle joint 1 rad": the handle on it
         if t.text in ("full", "complete", "whole") and before in ("a", "one") and i > 1 and tokens[i - 2].text == "of" and after in TURN_UNITS:

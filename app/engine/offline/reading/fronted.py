@@ -142,6 +142,16 @@ def _empty_tail(sentence: list[Token]) -> list[Token] | None:
     return sentence[:-len(tail) - 1]
 
 
+def _duration_first(sentence: list[Token]) -> list[Token] | None:
+    """"For four seconds I want the suitcase open, so open it up and keep it that way": ... keep it that way for 4 seconds."""
+    if len(sentence) < 5 or sentence[0].text != "for" or sentence[1].number is None or sentence[2].text not in ("seconds", "second", "s", "secs"):
+        return None
+    rest = sentence[3:]
+    while rest and rest[0].text in _BREAKS:
+        rest = rest[1:]
+    return [*rest, *sentence[:3]] if rest else None
+
+
 def _asked_of_you(sentence: list[Token]) -> list[Token] | None:
     """"I'd like you to tap the centre button": tap the centre button."""
     words = [t.text for t in sentence[:3]]
@@ -154,6 +164,6 @@ def fronted(tokens: list[Token]) -> list[Token]:
     out: list[Token] = []
     for start, end in _sentences(tokens):
         sentence = tokens[start:end]
-        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or sentence
+        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or _duration_first(sentence) or sentence
         out += tokens[end:end + 1]
     return out

@@ -67,8 +67,9 @@ def _as_they_are(tokens: list[Token], i: int) -> bool:
     for j in range(i + 2, min(i + 12, len(tokens))):
         if tokens[j].is_sentence_end or tokens[j].text in ("then", "but"):
             return False
-        if tuple(t.text for t in tokens[j:j + 3]) in _AS_IS:
-            return True
+        if tuple(t.text for t in tokens[j:j + 3]) in _AS_IS or (tuple(t.text for t in tokens[j:j + 2]) == ("as", "is") and (
+                j + 2 == len(tokens) or tokens[j + 2].is_punct)):
+            return True  # "leave the door as it is", "leave door as is"
     return False
 
 
@@ -173,6 +174,9 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
             continue
         if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
             skip = 2  # the rest of "leave X as they are"
+            continue
+        if tuple(t.text for t in tokens[i:i + 2]) == ("as", "is") and any(t.text == "without" for t in out[-10:]):
+            skip = 1  # "leave door as is"
             continue
         left = token.text == "left" and 0 < i < len(tokens) - 1 and (
             tokens[i - 1].text not in DETERMINERS and tokens[i - 1].lemma not in VERBS and tokens[i - 1].text.isalpha()) and tokens[i + 1].text in ("where", "alone", "as")
