@@ -73,7 +73,8 @@ def _incidental(frame: Frame) -> bool:
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
             or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split()))))
             # "while the narrator talks", "dishes are all loaded"
-            or (not frame.themes and not frame.instruments and _said_of_someone(frame)))  # "... when the arm lets go": about who acts
+            or (not frame.themes and not frame.instruments and _said_of_someone(frame))  # "... when the arm lets go": about who acts
+            or bool({"must", "should"} & set(frame.text.split()[1:4])))  # "..., lever must end up on the back side": how it ends
 
 
 _BE = frozenset({"is", "are", "was", "were"})

@@ -208,7 +208,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         boundary: tuple[Link, str, bool] | None = None
         if token.is_sentence_end or word == ":":
             boundary = (Link.SEQUENCE, word, False)
-        elif word in SEQUENCE and _subject_only(current) and nxt < len(tokens) and tokens[nxt].lemma in VERBS:
+        elif word in SEQUENCE and _subject_only(current) and nxt < len(tokens) and tokens[nxt].lemma in VERBS and (
+                word == "then" or tokens[nxt].text != tokens[nxt].lemma):  # not "the key under it and then swing the door open"
             boundary = None  # "the door then unlocks": the sequence word sits between a subject and its verb
         elif word in SEQUENCE and (word != "next" or _starts_clause(tokens, nxt)):
             boundary = (Link.SEQUENCE, word, False)

@@ -104,7 +104,7 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if frame.themes and not frame.returning and own_way is not None and not _alike(own_way, previous.sense) and frame.link in _STEPS:
         # "... 2. push it back shut 3. upper drawer out 20 cm", "Steps: * top drawer out 30 cm": its own word says which way
         return replace(frame, sense=own_way)
-    if frame.stative and not amount_only and not frame.wish and not ends and frame.link is not Link.CONDITION and not (
+    if frame.stative and not amount_only and not frame.wish and not ends and frame.link is not Link.CONDITION and frame.quantities.amount is None and not (
             set(frame.text.split()) & set(VERBLESS_SENSES)):
         return frame  # "the clasps on this box are spring-loaded": what a part is, no step of the verb before
     if frame.themes or amount_only:

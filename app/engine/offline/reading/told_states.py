@@ -40,7 +40,8 @@ def told_states(tokens: list[Token]) -> list[Token]:
                 or _get_at(tokens, k, out) or _cannot_open(tokens, k, out) or _left_as_found(tokens, k, out) or _asked_where(tokens, k, out)
                 or _should_not_be(tokens, k, out) or _with_sticking(tokens, k, out) or _placed_wish(tokens, k, out)
                 or _facing_wall(tokens, k, out) or _see_the_back(tokens, k, out) or _to_state(tokens, k, out)
-                or _bare_state(tokens, k, out) or _relative_to(tokens, k, out) or _shut_and_locked(tokens, k, out))
+                or _bare_state(tokens, k, out) or _relative_to(tokens, k, out) or _shut_and_locked(tokens, k, out)
+                or _is_to_be(tokens, k, out))
         if step:
             k += step
             continue
@@ -318,3 +319,15 @@ def _shut_and_locked(tokens: list[Token], k: int, out: list[Token]) -> int:
     done = tokens[k + 2]
     out.extend([tokens[k], Token("then", "then", done.start, done.start), Token(_FASTENED[done.text], _FASTENED[done.text], done.start, done.end)])
     return 3
+
+
+def _is_to_be(tokens: list[Token], k: int, out: list[Token]) -> int:
+    """"The drawer is (then) to be pushed in": it needs to be pushed in (a step asked in the passive)."""
+    if tokens[k].text not in ("is", "are") or not out or out[-1].is_punct:
+        return 0
+    j = k + 1 + (k + 1 < len(tokens) and tokens[k + 1].text == "then")
+    if [t.text for t in tokens[j:j + 2]] != ["to", "be"]:
+        return 0
+    at = tokens[k]
+    out.extend([Token("needs", "need", at.start, at.end), Token("to", "to", at.start, at.end), Token("be", "be", at.start, at.end)])
+    return j + 2 - k
