@@ -131,7 +131,8 @@ def _progressive_of(frame: Frame, before: Frame) -> bool:
 def _narrated(before: Frame, frame: Frame) -> bool:
     """"door drops all the way; its rack slides halfway out": one told event after another, the first of a part
     that operates nothing (a door, not a pedal), is the next step of the story, not what the first one caused."""
-    return (before.subject_theme or before.wish) and frame.link is not Link.RESULT and bool(before.themes) and all(
+    alike = {m.kind for m in frame.themes} == {m.kind for m in before.themes}  # "swing the right door ...; the left door follows"
+    return (before.subject_theme or before.wish or alike) and frame.link is not Link.RESULT and bool(before.themes) and all(
         m.kind is not None and not info(m.kind).control for m in before.themes) and all(not m.pronoun for m in frame.themes)
 
 
