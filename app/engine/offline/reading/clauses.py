@@ -112,7 +112,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
         if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in NOT_BEFORE_VERB:
-            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they") or (k == j + 1 and kind_of_word(tokens[j].text) is not None)
+            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they") or (k == j + 1 and kind_of_word(tokens[j].text) is not None and tokens[k].text.endswith("s"))
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
         if (tokens[k].text in AUX or stative) and k > j:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
