@@ -101,6 +101,10 @@ ROTATION_SENSE: Mapping[str, str] = MappingProxyType({
     "clockwise": "cw", "cw": "cw", "anticlockwise": "ccw", "counterclockwise": "ccw", "counter-clockwise": "ccw",
     "anti-clockwise": "ccw", "ccw": "ccw", "widdershins": "ccw",
 })
+SCREWING_SENSES: Mapping[str, str] = MappingProxyType({
+    "unscrewing": "counterclockwise", "loosening": "counterclockwise", "screwing": "clockwise", "tightening": "clockwise",
+})
+"""The way a screw turns as it is undone or done up ("in the unscrewing direction"), as a word of ``ROTATION_SENSE``."""
 DIRECTIONS: Mapping[str, str] = MappingProxyType({
     "forward": "forward", "forwards": "forward", "ahead": "forward", "frontward": "forward", "frontwards": "forward",
     "backward": "backward", "backwards": "backward", "rearward": "backward", "rearwards": "backward",

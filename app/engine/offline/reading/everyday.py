@@ -10,7 +10,14 @@ from __future__ import annotations
 
 from app.engine.lexicon.relations import VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, NUMBER_WORDS, OBJECT_NOUNS, ROTATION_SENSE, TURN_UNITS
+from app.engine.lexicon.words import (
+    GENERIC_PART_NOUNS,
+    NUMBER_WORDS,
+    OBJECT_NOUNS,
+    ROTATION_SENSE,
+    SCREWING_SENSES,
+    TURN_UNITS,
+)
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -30,7 +37,6 @@ _SPELLS = frozenset({"moment", "second", "sec", "couple", "few", "beat", "minute
 """What follows "give it a ..." when it is a wait ("give it a couple of seconds")."""
 
 
-_SCREWING = {"unscrewing": "counterclockwise", "loosening": "counterclockwise", "screwing": "clockwise", "tightening": "clockwise"}
 _TAP_SIDES = {"hot": "left", "cold": "right", "hottest": "left", "coldest": "right"}
 
 
@@ -127,9 +133,9 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         if t.text.endswith("-most") and t.text[:-5] in ("top", "bottom", "left", "right", "front", "back", "upper", "lower", "inner", "outer"):
             word = t.text.replace("-", "")
             t = Token(word, word, t.start, t.end)  # "the bottom-most rack": the bottommost
-        way = next((k for k in (i + 1, i + 2) if k + 1 < len(tokens) and tokens[k].text in _SCREWING and tokens[k + 1].text == "direction"), None)
+        way = next((k for k in (i + 1, i + 2) if k + 1 < len(tokens) and tokens[k].text in SCREWING_SENSES and tokens[k + 1].text == "direction"), None)
         if t.text == "in" and way is not None and (way == i + 1 or after == "the"):
-            sense = _SCREWING[tokens[way].text]  # "rotate the cap half a turn in the unscrewing direction": counterclockwise
+            sense = SCREWING_SENSES[tokens[way].text]  # "rotate the cap half a turn in the unscrewing direction": counterclockwise
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue

@@ -317,7 +317,9 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    tokens = row_first(whose_side(fronted(told_order(too_far(facing(drop_asides(corrections(drop_framing(known_forms(told_states(_join_numbers(_join_phrases(everyday_words(same_words(tokens)))))))))))))))
+    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, told_states, known_forms, drop_framing, corrections, drop_asides,
+                    facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
+        tokens = rewrite(tokens)
     out = []
     for token in tokens:
         if token.number is None and "_" not in token.text and token.text.replace("-", "").isalpha():

@@ -59,6 +59,7 @@ def verb_only(word: str) -> bool:
     return "VERB" in lemmas and "NOUN" not in lemmas and "ADJ" not in lemmas and kind_of_word(word) is None
 
 
+@lru_cache(maxsize=4096)
 def nounless(word: str) -> bool:
     """A word English uses only as a modifier ("chilly", "simultaneously", "travel-ready": the last piece of a compound),
     and no part word: a remark or a manner, never a part's head ("shut the window, it's chilly")."""
