@@ -259,6 +259,9 @@ WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like", "
 """What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
 ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
+SAME_MEANING: Mapping[str, str] = MappingProxyType({"shall": "must", "shan't": "mustn't"})
+"""Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):
+replaced without a note, as no guess is made."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",

@@ -35,6 +35,7 @@ from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.referents import Referents
 from app.engine.offline.resolve import resolve
 from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal, restated_means, take_hold
+from app.engine.offline.side_apart import side_apart
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
 from app.engine.offline.whole_object import moves_object
@@ -83,9 +84,9 @@ class Builder:
             if mention.pronoun and starts(frame) and self.parts:
                 found = self._object_parts(frame, sense)  # "put my leftovers in, shut it and heat them up": the microwave runs
             elif mention.pronoun:
-                found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural, shuts=sense in (VerbSense.OPEN, VerbSense.CLOSE))
-                if not found and self.parts:
-                    found = self._object_parts(frame, sense)
+                found = self.refs.pronoun(release=sense is VerbSense.RELEASE, plural=mention.plural, shuts=sense in (VerbSense.OPEN, VerbSense.CLOSE)) or (
+                    self._object_parts(frame, sense) if self.parts else [])
+                self.notes.extend([f"read 'it' in '{frame.text}' as all of {', '.join(p.link for p in found)}: say which one if not"] if mention.head == "it" and len(found) > 1 else [])
             elif mention.is_object:
                 self._same_object(mention)
                 found, self.object_named = self._object_parts(frame, sense), True
@@ -98,9 +99,9 @@ class Builder:
                     try:
                         found, notes = self.refs.resolve(mention, prefer=prefer)
                     except GroundingError as exc:
-                        if not stray(mention, exc, mentions):
+                        if (apart := side_apart(self.refs, frame, mention, exc)) is None and not stray(mention, exc, mentions):
                             raise
-                        found, notes = [], [f"ignored the word '{mention.head}': it names no part of {self.asset.name}"]
+                        found, notes = apart or ([], [f"ignored the word '{mention.head}': it names no part of {self.asset.name}"])
                     self.notes.extend(notes)
                 if (mention.plural or mention.collective) and len(found) > 1:
                     self.refs.group = list(found)

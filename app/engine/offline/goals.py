@@ -24,6 +24,7 @@ from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.quantities import Amount, Quantities
+from app.engine.offline.reading.word_class import lemma_of
 from app.engine.offline.resolve import closed_of, direction_vector, resolve, spin_velocity
 from app.engine.offline.tracker import Tracker
 
@@ -107,9 +108,10 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(said) & _RETURN_WORDS
                                                   or frame.explicit_return):
         home = _back_home(said)  # "tuck the magazine back up into the cover", "slide it back in": shut
-        shuts = home or (frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE) or (
-            bool({"down", "on"} & set(said)) and part.kind is not None and info(part.kind).lid_like)  # "put the lid back down on the pot"
-        if (home or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:
+        closes = frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE and not frame.explicit_return and (
+            any(lemma_of(w)[0] == frame.verb for w in said))  # "close it back up": closed (not "fold it ..., then back to where it was")
+        shuts = home or closes or (bool({"down", "on"} & set(said)) and part.kind is not None and info(part.kind).lid_like)  # "put the lid back down on the pot"
+        if (home or closes or part.joint not in tracker.before) and shuts and geometry.closed_value is not None and geometry.open_value is not None:
             return "closed"
         return "previous" if part.joint in tracker.before else "rest"
     if frame.returning and absolute:

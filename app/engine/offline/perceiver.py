@@ -31,6 +31,7 @@ from app.engine.offline.reading.acts import build_acts
 from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
+from app.engine.offline.reading.repeats import repeated
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
@@ -104,7 +105,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     builder = Builder(asset)
     frames, fetched = wanted_things(builder, told_how(told_codes(frames)))  # "I need the napkins from the drawer": open it
     builder.notes.extend(fetched)
-    acts = build_acts(frames)
+    acts = repeated(build_acts(frames))
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
     if not builder.parts and not any(a.goal.verb for a in acts):

@@ -1395,6 +1395,41 @@ ROWS: list[Row] = [
       joints={"joint_0": E(moves=True), "joint_1": E(moves=True), "joint_5": E(still=True), "joint_13": E(end="upper")}),
     R("safe_101564", "press the top-left key, then the key next to it", joints={"joint_0": E(moves=True), "joint_1": E(moves=True), "joint_5": E(still=True)}),
     R("storage_20453", "I only need the drawer out about halfway, can you slide it out that much?", joints={"joint_0": E(end=0.288)}),
+    # --- round 48 (voice transcripts, a learner, specifications): commas left out, a part said first and taken up by "it", "shall" ---
+    R("extra/storage_25308", "Drawer on left open it and then close it again.", joints={"joint_1": E(peak=0.44), "joint_0": E(still=True)}),  # r48e_025
+    R("suitcase_103762", "Briefcase close it.", joints={"joint_0": E(end=-1.0472), "joint_1": E(still=True)}),  # r48e_100 (was silent: the handle turned)
+    R("refrigerator_11178", "uh the fridge door on the right can you swing it open", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),  # r48f_064
+    R("extra/kitchen_pot_100015", "Stockpot drag it toward me 0.5 m please.", base=(-0.5, 0.0, 0.0)),  # r48e_028
+    R("toaster_103477", "uh the browning knob give it a quarter turn clockwise", joints={"joint_0": E(end=-1.5708), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r48f_104
+    R("safe_102387", "Door swing it shut first; only then spin the dial for half of turn to clockwise.", joints={"joint_0": E(end=SAFE_102387_CLOSED), "joint_1": E(end=-PI)},
+      order=(("joint_0", "joint_1"),)),  # r48e_120: "shut first" is the end state, not an ordinal of the door
+    R("dishwasher_11700", "uh the dishwasher can you lower its door forty five degrees and that's it no further", joints={"joint_0": E(end=0.7854)}),  # r48f_003
+    R("laptop_10101", "The screen shall be tilted back to the maximum angle allowed by the hinge.", joints={"joint_1": E(end="upper")}),  # r48g_054
+    R("extra/storage_24644", "An extension of exactly six inches shall be applied to the drawer; it must not be opened beyond that.", joints={"joint_0": E(end=0.1524)}),  # r48g_072
+    R("coffee_machine_103030", "Viewed from the front of the machine, the speed dial on the front face of the base shall be turned clockwise by one quarter of a turn.",
+      joints={"joint_0": E(end=-1.5708), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r48g_004
+    R("extra/storage_25308", "uh first pull out the left drawer and then after it's open do the right drawer as well", joints={"joint_1": E(end=0.44), "joint_0": E(end=0.524)},
+      order=(("joint_1", "joint_0"),)),  # r48f_068 (was silent: both at once, right first)
+    R("extra/storage_25308", "In this shot, the drawer on the left as seen from the front slides out halfway.", joints={"joint_1": E(end=0.22), "joint_0": E(still=True)}),  # r48h_001
+    R("extra/box_100214", "Viewed from the front of the case, where its two clasps sit, the clasp on the right snaps shut.", joints={"joint_2": E(end=0.4363), "joint_1": E(still=True)}),  # r48h_019
+    R("window_103135", "um swing the window open as far as it'll go hold it for two seconds and then close it back up", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),  # r48f_021 ("close it back up" on a window resting ajar: closed)
+    R("extra/safe_101623", "Open the safe door so it stand exactly 90 degree open.", joints={"joint_1": E(end=0.3896)}),  # r48e_075: "so it stand(s)"
+    R("extra/oven_7179", "Oven have three sliding rack; please pull out the rack of middle.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True), "joint_2": E(still=True)}),  # r48e_074
+    R("storage_19179", "The drawer more high of the two must open 40 cm.", joints={"joint_1": E(end=0.4), "joint_0": E(still=True)}),  # r48e_061
+    R("extra/storage_25308", "Please pull out the left side drawer until it don't go more.", joints={"joint_1": E(end=0.44), "joint_0": E(still=True)}),  # r48e_108: a side said apart
+    R("refrigerator_11178", "The refrigerator door that is on the right, as seen when standing in front of the appliance, is to be opened.",
+      joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),  # r48g_069
+    R("extra/storage_25308", "move the drawer to the left", refuse=True),  # "left" is where it goes, not which drawer: still asks which
+    R("trash_can_102155", "The left-hand wheel is to be rolled around through one full revolution. The bin itself is not to move.",
+      joints={"joint_1": E(abs_end=2 * PI)}, base=(0.0, 0.0, 0.0)),  # r48g_115 (was silent: "to move" read as a purpose, a quarter turn)
+    R("extra/oven_7179", "The oven has two doors; in this shot the higher of the two drops down to 45°.", joints={"joint_4": E(end=0.7854), "joint_3": E(still=True)}),  # r48h_013
+    R("laptop_10101", "In this shot the top half of the laptop closes down onto the bottom half until it rests flat against it.", joints={"joint_1": E(end="lower")}),  # r48h_028
+    R("dishwasher_12553", "A finger taps the button on the control panel; only once it has popped back out does the dishwasher door swing all the way down.",
+      joints={"joint_1": E(moves=True), "joint_0": E(end=1.5708)}, order=(("joint_1", "joint_0"),)),  # r48h_077 (was silent: the door never moved)
+    R("safe_101564", "Key in 0 to unlock it, then swing the door open.", joints={"joint_10": E(peak=0.004), "joint_13": E(end="upper")},
+      order=(("joint_10", "joint_13"),)),  # r10_086: a purpose ("to unlock it"), not a part said first and taken up by "it"
+    R("washing_machine_103508", "Laundry room cutscene: the char reaches over to the washer's control panel and twists the knob on the far left of the three (left as seen from the front of the machine).",
+      joints={"joint_3": E(moves=True), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r46c_099: "of the three" after its noun names no new group
 ]
 
 
@@ -1476,6 +1511,41 @@ def test_wait_holds_between_steps(prompt: str, extra: float) -> None:
     """ "..., wait (N seconds), then ...": the scene holds still between the two steps."""
     plain = _duration("microwave_7304", "Open the microwave door 90 degrees, then shut it.")
     assert _duration("microwave_7304", prompt) >= plain + extra - 1e-6
+
+
+def _held_at_peak(asset_name: str, prompt: str, joint: str) -> float:
+    """Seconds ``joint`` stays at its furthest point from where it started (within 1% of the way)."""
+    trajectory = animate(asset_name, prompt).trajectory
+    track = trajectory.q[:, trajectory.joint_names.index(joint)]
+    away = np.abs(track - track[0])
+    return float(np.count_nonzero(away >= away.max() * 0.99) - 1) / trajectory.fps
+
+
+@pytest.mark.parametrize(("asset_name", "prompt", "joint", "seconds"), [
+    ("switch_100952", "um turn it on leave it on for two and a half seconds and then turn it back off", "joint_0", 2.5),
+    ("extra/storage_24644", "uh open the drawer keep it like that three seconds and then shut it", "joint_0", 3.0),
+    ("dishwasher_11700", "uh the dishwasher door lower it sixty degrees hold it two seconds and then close it", "joint_0", 2.0),
+    ("dishwasher_11700", "Please put the dishwasher door down to 70°, hold for 2 sec, after close it back up.", "joint_0", 2.0),
+    ("box_100671", "Open the lid to 90° from closed, make pause of 2 seconds, after close it.", "joint_0", 2.0),
+])
+def test_run_on_hold_or_wait(asset_name: str, prompt: str, joint: str, seconds: float) -> None:
+    """A hold or a wait run into the step before it ("turn it on leave it on for 2.5 s", voice transcripts), or said the way a
+    learner says it ("make pause of 2 s", "after close it"), keeps the part at its furthest point that long before it goes back
+    (round 48: the hold was dropped, or came after the return)."""
+    assert _held_at_peak(asset_name, prompt, joint) >= seconds - 0.05
+
+
+@pytest.mark.parametrize(("asset_name", "prompt", "joint", "presses"), [
+    ("safe_101564", "press the 5 key twice", "joint_4", 2),
+    ("safe_101564", "tap the top-left key three times, then open the door", "joint_0", 3),
+    ("dishwasher_12553", "press the button 2 times", "joint_1", 2),
+])
+def test_counted_presses(asset_name: str, prompt: str, joint: str, presses: int) -> None:
+    """"press the 5 key twice" is two presses, each let go before the next (the count was read and dropped: one press)."""
+    trajectory = animate(asset_name, prompt).trajectory
+    track = trajectory.q[:, trajectory.joint_names.index(joint)]
+    down = np.abs(track - track[0]) > 0.5 * np.abs(track - track[0]).max()
+    assert int(np.count_nonzero(down[1:] & ~down[:-1])) == presses
 
 
 def test_hold_for_a_time_waits() -> None:

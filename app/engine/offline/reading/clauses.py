@@ -40,7 +40,7 @@ from app.engine.lexicon.words import (
 from app.engine.offline.reading.mentions import kind_at
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
-from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB, verb_at
+from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB, after_side_noun, verb_at
 from app.engine.offline.reading.word_class import finite_unknown_verb, inflected_verb
 
 
@@ -111,7 +111,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:
-        if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and tokens[k - 1].text not in NOT_BEFORE_VERB:
+        if k > j and tokens[k].lemma in VERBS and tokens[k].text != tokens[k].lemma and (tokens[k - 1].text not in NOT_BEFORE_VERB or after_side_noun(tokens, k)):
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they") or (k == j + 1 and kind_of_word(tokens[j].text) is not None and tokens[k].text.endswith("s"))
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
         if (tokens[k].text in AUX or stative) and k > j:
@@ -259,8 +259,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt) or _someone_does(tuple(tokens[nxt:])))):
             boundary = (Link.SEQUENCE, word, False)
         elif marker in ("once", "when", "after") and len(current) >= 2 and current[-1].text in _DONE_STATES and (word == "," or (
-                (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS) and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
-            boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there, do the right door"
+                (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS or word == "do") and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
+            boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there(,) do the right door"
             nxt = nxt if word == "," else i
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
                 any(t.text.endswith("ing") for t in current[1:]) and _starts_clause(tokens, i)):
@@ -272,7 +272,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word == "to" and current and current[-1].text in ASPECT_VERBS:
             boundary = None  # "the plate starts to turn": one verb, not a purpose
         elif word in PURPOSE and nxt < len(tokens) and (verb_at(tokens, nxt, strict=True) or _other_verb(tokens, nxt)) and current and not (
-                len(current) > 1 and current[-2].text == "too"):  # "the toast is sitting too low to grab": how low, not what for
+                len(current) > 1 and current[-2].text == "too") and current[-1].text != "not":  # "too low to grab": how low; "is not to move": a rule
             boundary = (Link.PURPOSE, word, False)
         elif word == "by" and nxt < len(tokens) and _ing(tokens[nxt]) and current:
             boundary = (Link.MEANS, word, False)

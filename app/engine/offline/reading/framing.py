@@ -18,6 +18,7 @@ from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import PARALLEL, SEQUENCE, SIMULTANEOUS, WISHES
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import lemma_of
 
 _VIEW_LEADS = frozenset({"as", "when", "while", "if"})
 _VIEWERS = frozenset({"i", "you", "we", "one", "someone", "they", "you're", "i'm", "we're", "they're", "are", "am", "is", "the", "viewer", "user",
@@ -72,7 +73,10 @@ def _viewpoint(tokens: list[Token], i: int) -> int:
         j += 1
     if j >= len(tokens) or tokens[j].text not in _VIEW_VERBS or (j == i + 1 and tokens[i].text != "as"):
         return 0  # "while facing": no subject, may be the part's ("the lid, while facing up, ...")
-    return until_break(tokens, j, frozenset({",", ";", ".", "!", "?", "then", "and_then", "and"})) - i
+    end = until_break(tokens, j, frozenset({",", ";", ".", "!", "?", "then", "and_then", "and"}))
+    verb = next((k for k in range(j + 1, end) if tokens[k].text.endswith("s") and tokens[k].text not in _VIEW_VERBS
+                 and lemma_of(tokens[k].text)[0] in VERBS and lemma_of(tokens[k].text)[0] != tokens[k].text), end)
+    return verb - i  # "the drawer on the left as seen from the front | slides out halfway": the aside ends before the main verb
 
 
 def _simile(tokens: list[Token], i: int) -> int:

@@ -4,8 +4,11 @@
 from __future__ import annotations
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import LIGHT_VERBS
+from app.engine.lexicon.words import LIGHT_VERBS, PAUSE_NOUNS
 from app.engine.offline.reading.token import Token
+
+_PAUSE_TAKERS = frozenset({"make", "take", "have", "do"})
+""""make a pause of 2 s", "take a short break": the noun is the wait."""
 
 _MANNER_ADJECTIVES = frozenset({"quick", "gentle", "little", "good", "hard", "firm", "slight", "small", "short", "light", "brief", "sharp"})
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
@@ -16,6 +19,10 @@ _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little",
 def light_verb(tokens: list[Token]) -> list[Token]:
     """"give the car a push" -> "push the car a push": the deverbal noun is the action (its amount stays:
     "give the dial half a turn")."""
+    if tokens and tokens[0].lemma in _PAUSE_TAKERS:
+        for k in range(1, min(len(tokens), 4)):
+            if tokens[k].text in PAUSE_NOUNS and all(t.text in ("a", "an") or t.text in _MANNER_ADJECTIVES for t in tokens[1:k]):
+                return [Token("pause", "pause", tokens[0].start, tokens[k].end), *tokens[k + 1:]]  # "make (a) pause of 2 s": pause 2 s
     if not tokens or tokens[0].lemma not in LIGHT_VERBS:
         return tokens
     for i in range(2, len(tokens)):

@@ -1,10 +1,9 @@
 """Noun phrases of a clause -> :class:`Mention` records (what part, where, how many, whose).
 
-A noun phrase is a run of determiners, qualifiers and nouns whose last noun is the head:
-"the upper-left door", "the door release button" (head: button), "the safe door" (head:
-door, the object word only says whose). Heads are part-kind words (the registry), object
-nouns, pronouns, anaphoric "one" / "the other", or an unknown noun (grounded by the asset's
-own part names, else refused). Trailing phrases qualify or own it: "the knob on the left",
+A noun phrase is a run of determiners, qualifiers and nouns whose last noun is the head: "the upper-left door", "the door
+release button" (head: button), "the safe door" (head: door, the object word only says whose). Heads are part-kind words
+(the registry), object nouns, pronouns, anaphoric "one" / "the other", or an unknown noun (grounded by the asset's own part
+names, else refused). Trailing phrases qualify or own it: "the knob on the left",
 "the knob on the door", "the second drawer from the top", "the middle key in the bottom row".
 """
 
@@ -149,6 +148,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             i += found[1]
             continue
         if token.number is not None or word in ("open", "closed", "shut", "opened"):
+            if nouns and token.number is None:
+                break  # "swing the door shut first": the end state, after the part
             i += 1  # "all four wheels", "the closed pedal bin": a count or a state, the noun follows
             continue
         if word in DETERMINERS:

@@ -192,9 +192,10 @@ def _on_the_body(tokens: list[Token], i: int) -> bool:
 
 
 def _against_a_face(tokens: list[Token], i: int) -> bool:
-    """"(flat) against the front", "flush with the frame", "flush in its frame": lying on a face of the body."""
+    """"(flat) against the front", "flush with the frame", "flush in its frame", "flat against it": lying on a face of the body."""
     words = [t.text for t in tokens[i:i + 4]]
-    return bool(words) and words[0] in ("against", "with", "in", "into", "on", "onto", "toward", "towards") and bool({"front", "frame", "face"} & set(words))
+    return bool(words) and ((words[0] in ("against", "with", "in", "into", "on", "onto", "toward", "towards") and bool({"front", "frame", "face"} & set(words)))
+                            or words[:2] in (["against", "it"], ["against", "them"]))
 
 
 def _region_noun(tokens: list[Token], i: int) -> bool:
@@ -376,11 +377,8 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text == "back" and i > 0 and tokens[i - 1].text in ("further", "farther", "more") and "direction" not in values:
             values["direction"] = "backward"  # "5 cm further back"
             used.update((i - 1, i))
-        elif token.text in DIRECTIONS and "direction" not in values:
-            values["direction"] = DIRECTIONS[token.text]
-            used.add(i)
-        elif token.text in ("to_the_left", "to_the_right"):
-            values["direction"] = token.text.rsplit("_", 1)[1]
+        elif (token.text in DIRECTIONS and "direction" not in values) or token.text in ("to_the_left", "to_the_right"):
+            values["direction"] = DIRECTIONS[token.text] if token.text in DIRECTIONS else token.text.rsplit("_", 1)[1]
             used.add(i)
         elif token.text in ("flat", "flush") and (_on_the_body(tokens, i + 1) or _against_a_face(tokens, i + 1) or shut_words):
             used.add(i)  # "down flat on the box", "fold it flat shut": shut on the body, not the other flat pose

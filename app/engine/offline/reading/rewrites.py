@@ -24,6 +24,7 @@ from app.engine.lexicon.words import (
     OBJECT_NOUNS,
     OTHER_WORDS,
     REQUEST_PHRASES,
+    SAME_MEANING,
     SHORTHAND,
     SPATIAL,
     VIEWER_POSSESSIVES,
@@ -224,8 +225,7 @@ def expand(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     """Chat shorthand to words ("cn u" -> "can you"): one token per word, the span of the shorthand."""
     out: list[Token] = []
     for token in tokens:
-        if token.text in ADVERB_PARTICLES:
-            word = ADVERB_PARTICLES[token.text]
+        if (word := ADVERB_PARTICLES.get(token.text) or SAME_MEANING.get(token.text)) is not None:
             out.append(Token(word, word, token.start, token.end))
             continue
         full = SHORTHAND.get(token.text) if token.text not in known else None
@@ -301,7 +301,7 @@ def _placed_relative(tokens: list[Token], i: int) -> int:
 def same_words(tokens: list[Token]) -> list[Token]:
     """Words that say the same as a form the lexicon knows: "a metre to my left" (the viewer's side is the side as seen
     facing the object), "to its top" (to the top), "2 the left" (to), "the third knob counting from the left",
-    "throw the lid right back" (all the way), "neither knob" (without both)."""
+    "throw the lid right back" (all the way), "neither knob" (without both), "on the front face of" (on the front of)."""
     out: list[Token] = []
     skip = -1  # the last token already written with one before it
     for i, t in enumerate(tokens):
@@ -336,8 +336,9 @@ def same_words(tokens: list[Token]) -> list[Token]:
             side = t.text.split("-")[-1] if "-" in t.text else after
             out.append(Token(f"{side}most", f"{side}most", t.start, t.end))  # "the far-right drawer": the rightmost
             continue
-        elif t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most"):
-            continue
+        elif (t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most")) or (
+                t.text in ("face", "surface") and before in ("front", "top", "back", "rear", "side") and after in ("of", ",", ".", "", "and")):
+            continue  # "far right" (written as "rightmost" above); "the dial on the front face of the base": on its front
         elif t.text == "neither":
             out.extend((Token("without", "without", t.start, t.end), Token("both", "both", t.start, t.end)))
             continue

@@ -308,6 +308,8 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
     from app.engine.offline.reading.fronted import fronted
+    from app.engine.offline.reading.learner import learner
+    from app.engine.offline.reading.left_out import left_out
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
@@ -326,4 +328,4 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
             lemma, plural = lemma_of(token.text)
             token = replace(token, lemma=lemma, plural=plural)
         out.append(token)
-    return out
+    return left_out(learner(out))

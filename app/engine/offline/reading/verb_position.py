@@ -20,14 +20,20 @@ VERB_CUES = frozenset({"and", ",", "then", "but", "to", "by", "after", "before",
 AUX = frozenset({"is", "are", "was", "were", "be", "being", "been", "stays", "remains", "stay", "remain", "gets", "get"})
 
 
+def after_side_noun(tokens: list[Token], i: int) -> bool:
+    """``tokens[i]`` is a finite verb after a side said as a noun: "the drawer on the left | slides out"."""
+    token = tokens[i]
+    return i > 1 and tokens[i - 1].text in SPATIAL and tokens[i - 2].text == "the" and token.text != token.lemma and token.text.endswith("s")
+
+
 def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     """Whether ``tokens[i]`` is a verb here (not a noun that looks like one: "the switch", "the left")."""
     token = tokens[i]
     if token.lemma not in VERBS or token.number is not None:
         return False
     previous = tokens[i - 1].text if i > 0 else ""
-    if previous in NOT_BEFORE_VERB:
-        return False
+    if previous in NOT_BEFORE_VERB and not after_side_noun(tokens, i):
+        return False  # "the left switch"
     if token.text in STATIVE_VERBS and (token.text.endswith("ing") or token.text != token.lemma):
         return False  # "standing at the sink, ...": where the user is, not an action
     if token.text in SPATIAL and token.text != token.lemma:
