@@ -1430,6 +1430,10 @@ ROWS: list[Row] = [
       order=(("joint_10", "joint_13"),)),  # r10_086: a purpose ("to unlock it"), not a part said first and taken up by "it"
     R("washing_machine_103508", "Laundry room cutscene: the char reaches over to the washer's control panel and twists the knob on the far left of the three (left as seen from the front of the machine).",
       joints={"joint_3": E(moves=True), "joint_1": E(still=True), "joint_2": E(still=True)}),  # r46c_099: "of the three" after its noun names no new group
+    R("extra/kitchen_pot_100015", "Pull the stockpot to direction of me for half metre.", base=(-0.5, 0.0, 0.0)),  # r48e_027: "to direction of", "for half metre"
+    R("storage_27044", "First open drawer lower for half of metre.", joints={"joint_0": E(end=0.5)}),  # r48e_005 (its first clause): "half of metre"
+    R("refrigerator_11178", "Fridge shot. Step 1: The right-hand door is to be opened to 60°. Step 2: Only once it has reached that angle is the other door to be swung fully open.",
+      joints={"joint_1": E(end=1.0472), "joint_0": E(end=PI)}, order=(("joint_1", "joint_0"),)),  # r48g_029: "only once ... is the other door to be"
 ]
 
 

@@ -6,7 +6,8 @@
 - "pull out the rack of middle" -> "pull out the middle rack", "tray of top" -> "top tray";
 - "three sliding rack": three racks;
 - "the drawer more high of the two" -> "the higher drawer of the two";
-- "hold for 2 s, after close it" -> "..., then close it" ("after" before a command: afterwards).
+- "hold for 2 s, after close it" -> "..., then close it" ("after" before a command: afterwards);
+- "move it to direction of hot for 30 degrees" -> "move it toward hot by 30 degrees", "half metre" -> "half a metre".
 """
 
 from __future__ import annotations
@@ -50,6 +51,15 @@ def _agrees(tokens: list[Token], i: int) -> Token | None:
     return replace(token, text=form) if form else None
 
 
+_MEASURES = frozenset({"degree", "degrees", "deg", "rad", "radian", "radians", "cm", "mm", "m", "metre", "meter", "metres", "meters", "inch",
+                       "inches", "turn", "turns", "revolution", "revolutions"})
+
+
+def _measure(tokens: list[Token], i: int) -> bool:
+    """An angle or a length (no time) said from ``i``: "30 degrees", "half metre", "a quarter turn"."""
+    return any(t.text in _MEASURES for t in tokens[i:i + 3])
+
+
 def learner(tokens: list[Token]) -> list[Token]:
     """The tokens with a learner's word order and agreement put the usual way (see the module)."""
     out: list[Token] = []
@@ -73,6 +83,18 @@ def learner(tokens: list[Token]) -> list[Token]:
                 i + 2 == len(tokens) or tokens[i + 2].is_punct or tokens[i + 2].text in ("and", "then", "and_then", "i", "we")):
             out.insert(len(out) - 1, after)  # "the rack of middle": the middle rack
             i += 2
+            continue
+        elif token.text in ("to", "in", "into") and [t.text for t in tokens[i + 1:i + 3]] in (["direction", "of"], ["the", "direction"]) and (
+                tokens[i + 1].text == "direction" or (i + 3 < len(tokens) and tokens[i + 3].text == "of")):
+            out.append(Token("toward", "toward", token.start, token.end))  # "to direction of hot", "in the direction of its front": toward
+            i += 3 if tokens[i + 1].text == "direction" else 4
+            continue
+        elif token.text == "for" and after is not None and (after.number is not None or after.text in ("half", "a_quarter", "a", "one_quarter")) and (
+                _measure(tokens, i + 1)):
+            out.append(Token("by", "by", token.start, token.end))  # "move it ... for 30 degrees", "for half metre": by that much
+        elif token.text == "half" and after is not None and not (i and tokens[i - 1].text in ("a", "an", "one", "and", "the")) and (after.text in _MEASURES or (after.text == "of" and i + 2 < len(tokens) and tokens[i + 2].text in _MEASURES)):
+            out += [token, Token("a", "a", token.end, token.end)]  # "half metre", "half of metre": half a metre
+            i += 1 + (after.text == "of")
             continue
         elif token.text == "more" and after is not None and after.text in _COMPARED and (form := _inflected(after.text, "JJR")):
             compared = Token(form, form, token.start, after.end)  # "more high": higher

@@ -74,12 +74,25 @@ def _count_alone(tokens: list[Token], i: int) -> bool:
     return after is None or after.is_punct or after.text in _AFTER_COUNT or (after.lemma in VERBS and after.text != after.lemma and after.text.endswith("s"))
 
 
+def _only_before(tokens: list[Token], i: int) -> bool:
+    """The sentence before ``i`` opens with "only once / when / after / then / if"."""
+    start = max((k for k in range(i) if tokens[k].is_sentence_end or tokens[k].text == ":"), default=-1) + 1
+    return any(t.text == "only" and n.text in ("once", "when", "after", "then", "if") for t, n in zip(tokens[start:i], tokens[start + 1:i], strict=False))
+
+
+def _inverted_told(tokens: list[Token], i: int) -> int | None:
+    """Where "to be" is when ``tokens[i]`` is the "is" of "only after ... is the tray to be extended"."""
+    if tokens[i].text not in ("is", "are") or i < 2 or tokens[i - 1].is_punct or i + 1 >= len(tokens) or tokens[i + 1].text not in ("the", "its", "both"):
+        return None
+    told = next((k for k in range(i + 2, min(i + 9, len(tokens) - 1)) if tokens[k].text == "to" and tokens[k + 1].text == "be"), None)
+    return told if told is not None and _only_before(tokens, i) else None
+
+
 def _inverted(tokens: list[Token], i: int) -> int | None:
     """Where the verb is when ``tokens[i]`` is the "does" of "only once ... does the door swing": the subject follows."""
     if tokens[i].text not in ("does", "do") or i < 2 or tokens[i - 1].is_punct:
         return None
-    start = max((k for k in range(i) if tokens[k].is_sentence_end), default=-1) + 1
-    if not any(t.text == "only" and n.text in ("once", "when", "after", "then", "if") for t, n in zip(tokens[start:i], tokens[start + 1:i], strict=False)):
+    if not _only_before(tokens, i):
         return None
     if i + 1 >= len(tokens) or tokens[i + 1].text not in ("the", "its", "both", "this", "that"):
         return None
@@ -167,6 +180,10 @@ def left_out(tokens: list[Token]) -> list[Token]:
     i = 0
     while i < len(tokens):
         token = tokens[i]
+        if (told := _inverted_told(tokens, i)) is not None:
+            out += [Token(",", ",", token.start, token.start), *tokens[i + 1:told], token]  # "only then is the door to be opened": the door is to be
+            start, i = i + 1, told
+            continue
         if (inverted := _inverted(tokens, i)) is not None and (form := _third_person(tokens[inverted].text)):
             out += [Token(",", ",", token.start, token.start), *tokens[i + 1:inverted], replace(tokens[inverted], text=form)]
             start, i = i + 1, inverted + 1
