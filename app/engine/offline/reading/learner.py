@@ -13,26 +13,18 @@
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import OBJECT_NOUNS, SPATIAL, STATIVE_VERBS
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
+from app.engine.offline.reading.word_class import inflected_form
 
 _SUBORDINATORS = frozenset({"so", "until", "till", "when", "once", "because", "as", "where", "while", "if", "so_that"})
 """After these, "it" is the subject of a clause of its own ("so it stand", "until it don't")."""
 _SIDES_AFTER = frozenset({"top", "middle", "bottom", "left", "right", "front", "back"})
 """Sides a learner puts after the noun with "of" ("the rack of middle")."""
 _COMPARED = frozenset({"high", "low", "far", "near", "big", "small", "wide", "long", "short", "tall"})
-
-
-@lru_cache(maxsize=512)
-def _inflected(word: str, tag: str) -> str | None:
-    from lemminflect import getInflection
-
-    forms = getInflection(word, tag=tag)
-    return forms[0] if forms else None
 
 
 def _agrees(tokens: list[Token], i: int) -> Token | None:
@@ -47,7 +39,7 @@ def _agrees(tokens: list[Token], i: int) -> Token | None:
         return replace(token, text="doesn't", lemma="doesn't")
     if token.text != token.lemma or not (token.text in VERBS or f"{token.text}s" in STATIVE_VERBS) or token.text in SPATIAL:
         return None
-    form = _inflected(token.text, "VBZ")
+    form = inflected_form(token.text, "VBZ")
     return replace(token, text=form) if form else None
 
 
@@ -96,7 +88,7 @@ def learner(tokens: list[Token]) -> list[Token]:
             out += [token, Token("a", "a", token.end, token.end)]  # "half metre", "half of metre": half a metre
             i += 1 + (after.text == "of")
             continue
-        elif token.text == "more" and after is not None and after.text in _COMPARED and (form := _inflected(after.text, "JJR")):
+        elif token.text == "more" and after is not None and after.text in _COMPARED and (form := inflected_form(after.text, "JJR")):
             compared = Token(form, form, token.start, after.end)  # "more high": higher
             if out and kind_of_word(out[-1].lemma) is not None:
                 out.insert(len(out) - 1, compared)  # "the drawer more high of the two": the higher drawer of the two

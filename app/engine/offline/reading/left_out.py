@@ -15,7 +15,6 @@ swing down" -> "only once it has popped out , the door swings down". It also nam
 from __future__ import annotations
 
 from dataclasses import replace
-from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
@@ -33,7 +32,7 @@ from app.engine.offline.reading.light_verbs import LIGHT_VERBS
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_position import AUX, NOT_BEFORE_VERB
-from app.engine.offline.reading.word_class import inflected_verb
+from app.engine.offline.reading.word_class import inflected_form, inflected_verb
 
 _PRONOUNS = frozenset({"it", "them", "its"})
 """What takes up a part said before ("the drawer, open it")."""
@@ -52,14 +51,6 @@ _NOT_BEFORE_COMMAND = NOT_BEFORE_VERB | MODALS | AUX | PERSONS | _STARTS | froze
     {"to", "it", "them", "let", "make", "help", "have", "has", "had", "not", "don't", "dont", "will", "does", "do", "did", "i'll", "you'll",
      "we'll", "let's", "lets", "can't", "cannot", "won't", "would", "could", "should", "must", "might", "may", "also", "by", "gonna", "wanna",
      "gotta", "need", "needs", "want", "wants", "like"})
-
-
-@lru_cache(maxsize=256)
-def _third_person(verb: str) -> str | None:
-    from lemminflect import getInflection
-
-    forms = getInflection(verb, tag="VBZ")
-    return forms[0] if forms else None
 
 
 def _count_alone(tokens: list[Token], i: int) -> bool:
@@ -184,7 +175,7 @@ def left_out(tokens: list[Token]) -> list[Token]:
             out += [Token(",", ",", token.start, token.start), *tokens[i + 1:told], token]  # "only then is the door to be opened": the door is to be
             start, i = i + 1, told
             continue
-        if (inverted := _inverted(tokens, i)) is not None and (form := _third_person(tokens[inverted].text)):
+        if (inverted := _inverted(tokens, i)) is not None and (form := inflected_form(tokens[inverted].text, "VBZ")):
             out += [Token(",", ",", token.start, token.start), *tokens[i + 1:inverted], replace(tokens[inverted], text=form)]
             start, i = i + 1, inverted + 1
             continue

@@ -89,3 +89,12 @@ def verb_ing(word: str) -> bool:
     from lemminflect import getAllLemmas
 
     return any(lemma != word for lemma in getAllLemmas(word).get("VERB", ()))
+
+
+@lru_cache(maxsize=1024)
+def inflected_form(word: str, tag: str) -> str | None:
+    """``word`` in the Penn tag ``tag`` ("VBZ": "stand" -> "stands", "JJR": "high" -> "higher"), if English has one."""
+    from lemminflect import getInflection
+
+    forms = getInflection(word, tag=tag)
+    return forms[0] if forms else None
