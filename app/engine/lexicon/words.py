@@ -186,6 +186,7 @@ MULTIWORD: tuple[str, ...] = (
     "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
     "we'd like", "we want", "we would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
+    "toward the middle", "toward the centre", "toward the center", "towards the middle", "towards the centre", "towards the center",
     "like that", "like this", "as wide as", "as high as", "back to the middle", "back to the centre", "back to the center",
     "back to centre", "back to center", "back to neutral", "to the middle", "to the centre", "to the center", "as a result", "because of that", "because of this", "as a consequence", "hits its stop", "hits the stop", "hits its limit", "hits the end", "reaches its stop", "reaches its limit",
     "reaches the end", "stops moving", "can't go any further", "won't go any further", "to the very top", "to the top", "to the very bottom", "to the bottom", "as well", "in total", "stays where it is", "stay where it is", "stays as it is", "stay as it is", "stays put", "stay put", "as flat as it can go", "as far as it can go", "as far as it goes", "as high as it can go", "as high as it will go", "as high as it goes",
@@ -317,7 +318,7 @@ PHRASE_BREAKS = frozenset({"and", "or", ",", "then", "to", "by", "with", "using"
 """Words that end a noun phrase (prepositions, conjunctions, adverbs, auxiliaries)."""
 _ONLY_BODY = frozenset({"knee", "shin", "toe", "elbow", "hip", "ankle", "forehead", "thigh"})
 """A person's body, hurt on the object ("I keep bumping my knee on it"): never a part (unlike "head", "arm", "foot")."""
-NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "clear", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
+NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "nothing", "clear", "side", "hand", "time", "times", "position", "state", "place", "spot", "point", "end", "limit",
                         "degree", "second", "minute", "turn", "percent", "amount", "bit", "little", "tad", "moment", "while",
                         "beat", "angle", "height", "distance", "speed", "rate", "direction", "axis", "x", "y", "z", "table", "floor", "ground", "wall", "counter", "room", "kitchen",
                         "front", "back", "top", "bottom", "left", "right", "middle", "centre", "center", "edge", "corner",
@@ -330,7 +331,8 @@ NOT_PART_NOUNS = frozenset({"way", "possible", "something", "anything", "clear",
                         "hands", "seal", "rotation", "clean"}) | _ONLY_BODY
 """Nouns that never name a part of the asset (units, places, measures)."""
 CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_the_center", "back_to_centre", "back_to_center", "back_to_neutral",
-                          "to_the_middle", "to_the_centre", "to_the_center"})
+                          "to_the_middle", "to_the_centre", "to_the_center", "toward_the_middle", "toward_the_centre", "toward_the_center",
+                          "towards_the_middle", "towards_the_centre", "towards_the_center"})
 """A part resting midway ("the tap lever") goes back to rest: "then back to the middle"."""
 BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
 BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})

@@ -20,7 +20,7 @@ from typing import Any
 from app.engine.contracts.steps import Extension
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.reading.clauses import Clause, Link
-from app.engine.offline.reading.numbers import RELATIVE_AFTER, unit_factor
+from app.engine.offline.reading.numbers import RELATIVE_AFTER, rate_at, unit_factor
 from app.engine.offline.reading.tokens import Token
 
 CLOSING_WORDS = frozenset({"shut", "closed", "close"})
@@ -46,7 +46,7 @@ def said_amounts(clauses: Sequence[Clause]) -> dict[int, list[tuple[str, float, 
         tokens = clause.tokens
         found = out.setdefault(clause.index, [])
         for i, token in enumerate(tokens):
-            if token.number is None:
+            if token.number is None or rate_at(list(tokens), i) is not None:  # "5 cm per second": a speed, not how far
                 continue
             after = tokens[i + 1:i + 4]
             k = next((k for k, t in enumerate(after) if t.lemma not in _UNIT_SKIP), None)

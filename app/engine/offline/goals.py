@@ -9,7 +9,7 @@ amount gets what it is measured from: the closed end for openings ("to 90 degree
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -105,8 +105,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
             geometry.lower < geometry.rest < geometry.upper):
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
-    if frame.returning and not absolute and (sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(said) & _RETURN_WORDS
-                                                  or frame.explicit_return):
+    if frame.returning and not absolute and (quantities.orientation is None or frame.explicit_return) and (
+            sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(said) & _RETURN_WORDS or frame.explicit_return):  # "back up to vertical": the pose said
         home = _back_home(said)  # "tuck the magazine back up into the cover", "slide it back in": shut
         closes = frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE and not frame.explicit_return and (
             any(lemma_of(w)[0] == frame.verb for w in said))  # "close it back up": closed (not "fold it ..., then back to where it was")
@@ -194,10 +194,23 @@ _END_STATES = frozenset({"just a crack", "a crack", "ajar", "barely"})
 """Loose amounts that name where a part ends ("leave the door open just a crack"), measured from closed wherever it rests."""
 
 
+def _rate_times_duration(frame: Frame, geometry: JointGeometry) -> Frame:
+    """A rate and a time with no amount on a part that stops at its limits ("open the door at 30 degrees a second for 2
+    seconds", "slide the drawer out at 5 cm per second for 3 seconds"): that far from where it is, in that time. A part
+    that turns for ever is spun instead (:func:`_spin`)."""
+    q = frame.quantities
+    rate = q.omega_radps if geometry.type == "revolute" else q.speed_mps if geometry.type == "prismatic" else None
+    if rate is None or q.duration_s is None or q.amount is not None:
+        return frame
+    amount = Amount(round(abs(rate) * q.duration_s, 9), "rad" if geometry.type == "revolute" else "m", "current", words="rate x time")
+    return replace(frame, quantities=replace(q, amount=amount))
+
+
 def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalChoice:
     """The goal of ``sense`` (from ``frame``) on ``part``."""
-    quantities = frame.quantities
     geometry = part.geometry
+    frame = _rate_times_duration(frame, geometry)
+    quantities = frame.quantities
     spin = sense is VerbSense.SPIN or (geometry.type == "continuous" and sense in (VerbSense.TURN, VerbSense.OPERATE)
                                        and (quantities.omega_radps is not None or quantities.duration_s is not None) and quantities.amount is None)
     counted = quantities.times > 1 and quantities.duration_s is None and quantities.omega_radps is None  # "spin the dial twice": two turns

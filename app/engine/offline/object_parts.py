@@ -93,7 +93,7 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
     if len(same) == 1:
         return same
     if first_kind in HINGED_KINDS and len(same) == 2:
-        builder.notes.append(f"'{frame.text}': opened both {first_kind.value}s")
+        builder.notes.append(f"'{frame.text}': worked both {first_kind.value}s")  # "shut the oven" shuts them, "open the fridge" opens them
         return same
     raise builder.refs.refuse(f"'{frame.text}' could mean {len(same)} parts", same)
 

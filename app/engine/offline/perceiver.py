@@ -36,6 +36,7 @@ from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
+from app.engine.offline.uses import answer_use
 from app.engine.offline.whole_object import whole_named
 
 
@@ -145,13 +146,19 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:
                     # "get the door down, which makes room to slide the baking tray in": the purpose names nothing here
                     builder.notes.append(f"ignored the purpose '{act.goal.text}': {str(exc).split('. Movable parts')[0]}")
-                    builder.add(replace(act, goal=act.means, means=None))
+                    try:
+                        builder.add(replace(act, goal=act.means, means=None))
+                    except GroundingError:
+                        if builder.steps or not (answer_finished(builder, frames) or answer_use(builder, frames)):
+                            raise
+                        break  # "I'm done packing, get it ready to carry": neither names a part; the wish says what is wanted
                     continue
                 if len(acts) > 1 and not exc.candidates and put_in_only(act.goal.text.split(), act.goal.verb, all(
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
-                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)):
+                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)
+                                                                  or answer_use(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
                 if len(acts) < 2 or not _incidental(act.goal) or (exc.candidates and not {"already"} & set(act.goal.text.split())):
                     raise  # a clause that names parts but not which one is never skipped, unless it tells how things already are
@@ -160,7 +167,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
-    if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, frames)):
+    if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, frames)
+                              or answer_use(builder, frames)):
         skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)
     if not builder.steps:
         if skipped:

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
 from app.engine.lexicon.verbs import VerbSense
+from app.engine.offline import mechanisms as mech
 from app.engine.offline.goals import goal_for
 from app.engine.offline.grounding import Part
 from app.engine.offline.moves import Move
@@ -37,6 +38,12 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     """"Spin the dial a full turn to unlock it": a purpose whose parts are all parts its means already moves says
     why the means is done, not a second motion of them; it moves nothing more."""
     parts = grounded[0]
+    if controls and parts and act.means is not None and _other_controls(act.means, parts, controls):
+        moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
+        others = ", ".join(p.link for p in parts)
+        builder.notes.append(f"read '{act.goal.text}' as what working {moved} does, the part the prompt named; nothing more moves ("
+                             f"'{act.goal.text}' alone could mean {others})")  # "twist the upper knob a quarter turn to set the timer"
+        return [], []
     if not controls or not parts or not {p.joint for p in parts} <= {m.part.joint for m in controls}:
         return grounded
     if act.means is None and act.goal.sense in _WAYS and {p.joint for p in parts} == {m.part.joint for m in controls}:
@@ -45,6 +52,13 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
     builder.notes.append(f"read '{act.goal.text}' as what working {moved} does: nothing more moves")
     return [], []
+
+
+def _other_controls(means: Frame, parts: list[Part], controls: list[Move]) -> bool:
+    """A purpose that grounds only to other controls than the ones its means names by place, size or order: the means
+    said which control; the purpose says what it is for ("to set the timer"), not a second control to work."""
+    named = bool(means.themes) and all(not m.pronoun and bool(m.sides or m.ordinal or m.size or m.relation) for m in means.themes)
+    return named and all(mech.is_control(p) for p in parts) and not {p.joint for p in parts} & {m.part.joint for m in controls}
 
 
 def means_on_goal(builder: Builder, act: Act) -> Act:

@@ -1434,6 +1434,31 @@ ROWS: list[Row] = [
     R("storage_27044", "First open drawer lower for half of metre.", joints={"joint_0": E(end=0.5)}),  # r48e_005 (its first clause): "half of metre"
     R("refrigerator_11178", "Fridge shot. Step 1: The right-hand door is to be opened to 60°. Step 2: Only once it has reached that angle is the other door to be swung fully open.",
       joints={"joint_1": E(end=1.0472), "joint_0": E(end=PI)}, order=(("joint_1", "joint_0"),)),  # r48g_029: "only once ... is the other door to be"
+    # --- round 49 (blind, on rewritten dev assets): numbered steps, rates over a time, a place where it started, "until it's halfway" ---
+    R("extra/oven_7179", "Step 1: The upper door of the oven is to be opened fully. Step 2: Only after Step 1 has been completed is the highest tray to be extended completely.",
+      joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_1": E(still=True), "joint_2": E(still=True), "joint_3": E(still=True)},
+      order=(("joint_4", "joint_0"),)),  # r48g_059 ("step" was read as a verb, "completed" as a part)
+    R("extra/oven_7179", "1. Open the upper door. 2. Pull out the highest tray.", joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_3": E(still=True)},
+      order=(("joint_4", "joint_0"),)),  # "2." had repeated the step before it
+    R("trash_can_102155", "For the game scene, the wheelie bin as a whole is to be pushed 0.5 m in the direction of its front.", base=(-0.5, 0.0, 0.0)),  # r48g_001
+    R("extra/storage_25308", "Slide the left drawer out at 10 cm per second for 2 seconds.", joints={"joint_1": E(end=0.2), "joint_0": E(still=True)}),  # r49b_030 (refused: "per")
+    R("extra/microwave_7128", "Open the door at 30 degrees a second for 2 seconds.", joints={"joint_0": E(end=1.0472)}),  # a rate and a time: that far
+    R("extra/microwave_7128", "Spin the turntable at half a turn per second for two seconds.", joints={"joint_4": E(abs_end=6.2832), "joint_0": E(still=True)}),  # r49b_029
+    R("extra/storage_25308", "Pull the left drawer fully open, then push it back until it's about halfway.", joints={"joint_1": E(end=0.22)}),  # r49b_025 (was silent: back to start)
+    R("extra/storage_25308", "Slide the left drawer all the way out, then back to the spot it started from.", joints={"joint_1": E(peak=0.44)}),  # r49b_052
+    R("extra/storage_25308", "Pull the left drawer out 20 cm, then give the left drawer a good shove so it slides shut.", joints={"joint_1": E(peak=0.2)}),  # r49b_045 ("good" read as a part)
+    R("suitcase_103762", "I'm heading to the airport - get this case shut so nothing falls out.", joints={"joint_0": E(end=-1.0472), "joint_1": E(still=True)}),  # r49a_043
+    R("extra/microwave_7128", "Open the door, shut it again, then twist the upper knob a quarter turn to set the timer.",
+      joints={"joint_0": E(peak=1.5708), "joint_3": E(end=-1.5708), "joint_2": E(still=True)}),  # r49c_021 (was silent: "the timer" turned the other knob too)
+    R("toilet_102622", "I need to use the toilet.", joints={"joint_0": E(end=1.5708), "joint_1": E(still=True)}),  # r49a_044: a use that needs it open
+    R("suitcase_103762", "I'm done packing, get it ready to carry.", joints={"joint_0": E(end=-1.0472), "joint_1": E(still=True)}),  # r49c_049
+    R("safe_102387", "Lock my jewelry away in the safe.", joints={"joint_0": E(end=SAFE_102387_CLOSED)}),  # r49c_050
+    R("extra/oven_7179", "Open both doors fully, then shut just the bottom door and leave the top one the way it is.",
+      joints={"joint_3": E(peak=1.5708), "joint_4": E(end=1.5708)}),  # r50e_013 (was silent: "leave ... the way it is" opened it)
+    R("bucket_102352", "Flip the handle over to the far side, then bring it back up to vertical.", joints={"joint_0": E(end=2.3593)}),  # r50d_028 (was silent: back to start)
+    R("window_103135", "Push the window wide open, then pull it shut.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),  # r50d_022 (opened first: the refused-looking "push ... wide open" closed it)
+    R("faucet_991", "Swing the lever all the way left, then bring it halfway back toward the centre.", joints={"joint_0": E(end=0.7854)}),  # r50e_028, r49b_024
+    R("toaster_103483", "Push the lever down to start toasting; when the toast is done the lever springs back up.", joints={"joint_0": E(peak=0.3)}),  # r49b_043
 ]
 
 

@@ -69,6 +69,12 @@ CASES: list[tuple[str, str]] = [
     ("box_102456", "Drag the toy box 30 cm to my right."),
     ("storage_27044", "pull the drawer out 20 cm, then shove it bak shut"),
     ("washing_machine_103508", "Close the lid, then turn the large cycle dial on the right of the control panel a quarter turn clockwise to start the wash."),
+    ("extra/oven_7179", "Step 1: The upper door of the oven is to be opened fully. Step 2: Only after Step 1 has been completed is the highest tray to be extended completely."),
+    ("extra/microwave_7128", "Spin the turntable at half a turn per second for two seconds."),
+    ("extra/storage_25308", "Slide the left drawer all the way out, then back to the spot it started from."),
+    ("extra/storage_25308", "Pull the left drawer fully open, then push it back until it's about halfway."),
+    ("toaster_103483", "Push the lever down to start toasting; when the toast is done the lever springs back up."),
+    ("toilet_102622", "I need to use the toilet."),
 ]
 STAGES = ("tokens", "clauses", "frames", "acts", "contract")
 

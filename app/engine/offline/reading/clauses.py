@@ -115,7 +115,7 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
             return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they") or (k == j + 1 and kind_of_word(tokens[j].text) is not None and tokens[k].text.endswith("s"))
         stative = tokens[k].text in STATIVE_VERBS and not tokens[k].text.endswith("ing")  # "so the drawer faces the wall"
         if (tokens[k].text in AUX or stative) and k > j:
-            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they")
+            return tokens[j].text in DETERMINERS or tokens[j].text in ("it", "they", "both", "all")  # ", both doors are hanging open"
         if tokens[k].text in MODALS and k > j and (tokens[j].text in DETERMINERS or (k == j + 1 and kind_of_word(tokens[j].text) is not None)):
             return True  # "so the steam can escape", "so the camera can see inside", ", door should unlatch"
         if k > j + 1 and tokens[j].text in DETERMINERS and (finite_unknown_verb(tokens[k].text) or (
@@ -223,7 +223,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = None  # "until the angle between it and the keyboard is 45 degrees": one thing measured
         elif word == "as" and len(current) >= 2 and current[-2].text == "as":
             boundary = None  # "as wide as the hinge allows": a comparison, not a second event
-        elif word in PARALLEL and (word != "as" or _starts_clause(tokens, nxt) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
+        elif word in PARALLEL and (word != "as" or (_starts_clause(tokens, nxt) and not _as_whole(tokens, nxt)) or (nxt < len(tokens) and _ing(tokens[nxt]))) and current:
             boundary = (Link.PARALLEL, word, False)
         elif word in ("and", ",", "or") and current and _starts_clause(tokens, nxt) and not (_bare_verb(current) and not (
                 link in (Link.NEGATED, Link.PURPOSE) and word == ",")) and not (
@@ -334,6 +334,14 @@ def _bare_verb(tokens: list[Token]) -> bool:
     """Only a verb so far ("press | and hold the button"): the verbs share what follows."""
     body = [t for t in tokens if t.text not in FILLERS]
     return len(body) == 1 and verb_at(body, 0)
+
+
+_WHOLE = (("a", "whole"), ("one", "piece"), ("one", "unit"), ("a", "unit"))
+
+
+def _as_whole(tokens: list[Token], i: int) -> bool:
+    """"the bin as a whole is pushed": how much of the object moves, not a second clause."""
+    return tuple(t.text for t in tokens[i:i + 2]) in _WHOLE
 
 
 def _condition(tokens: list[Token], i: int) -> bool:

@@ -62,8 +62,7 @@ _HAVING = frozenset({"has", "have", "had", "there's", "there_is", "there_are"})
 _MANUAL = frozenset({"manually", "by_hand"})
 _PLACEHOLDERS = frozenset({"something", "anything", "stuff", "thing", "things", "item", "items"})
 _CONTAINERS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel", "console"})
-_REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along",
-                              "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around", "away", "clear", "near"})
+_REFERENCE_PREPS = frozenset({"out_of", "off", "from", "onto", "into", "against", "over", "past", "toward", "towards", "across", "along", "behind", "under", "beneath", "below", "above", "beside", "next_to", "in_front_of", "on_top_of", "around", "away", "clear", "near"})
 _REGION_WORDS = frozenset({"top", "bottom", "side", "front", "back", "middle", "edge", "corner", "centre", "center", "rear", "left", "right"})
 _INSTRUMENT_PREPS = INSTRUMENT | frozenset({"by", "on", "holding", "gripping"})
 
@@ -162,6 +161,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         if word == "back" and i > 0 and (tokens[i - 1].text in ("the", "its", "toward", "towards") or (
                 tokens[i - 1].text == "all_the_way" and own is not None and (own.lemma == "open" or own.sense is VerbSense.RECLINE))):
             continue  # "toward the back", "along its back": a place; "open the lid all the way back": how far it opens
+        if word in ("wide_open", "all_the_way_open") and own is not None and "open" in own.particles:
+            return "open", i  # "push the window wide open": the end it opens to
         if word == "out_of" and (i + 1 == len(tokens) or tokens[i + 1].text in ("there", "here", "it", "them") or tokens[i + 1].is_punct):
             return "out", i  # "get it out of there": out, from wherever it is
         if word in ("up", "down") and [t.text for t in tokens[i + 1:i + 3]] == ["and", "over"]:

@@ -11,6 +11,8 @@ _PAUSE_TAKERS = frozenset({"make", "take", "have", "do"})
 """"make a pause of 2 s", "take a short break": the noun is the wait."""
 
 _MANNER_ADJECTIVES = frozenset({"quick", "gentle", "little", "good", "hard", "firm", "slight", "small", "short", "light", "brief", "sharp"})
+_AS_ADVERB = {"good": "", "hard": "", "gentle": "gently", "firm": "firmly", "sharp": "sharply", "light": "lightly", "brief": "briefly"}
+"""A manner adjective said after the part once the noun is the verb ("give the drawer a gentle tug": tug the drawer gently)."""
 _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little", "good", "quick", "gentle", "hard", "firm", "slight", "small",
                                  "big", "another", "a_quarter", "one", "complete", "whole", "two", "three", "2", "3", "degree", "degrees",
                                  "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise", "counter-clockwise"})
@@ -31,7 +33,9 @@ def light_verb(tokens: list[Token]) -> list[Token]:
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
             bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
             if tokens[i - 1].text in _MANNER_ADJECTIVES and tokens[i - 2].text in ("a", "an"):
-                return [tokens[i], *tokens[1:i - 2], tokens[i - 1], *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal quick ("a quick tap" names
+                manner = _AS_ADVERB.get(tokens[i - 1].text, tokens[i - 1].text)
+                said = [Token(manner, manner, tokens[i - 1].start, tokens[i - 1].end)] if manner else []  # "a good shove": no manner
+                return [tokens[i], *tokens[1:i - 2], *said, *tokens[i + 1:]]  # "give the pedal a quick tap": tap the pedal quick ("a quick tap" names
                 # no tap of a sink)
             return [tokens[i], *tokens[1:i - 1], *tokens[i + 1:]] if bare else [tokens[i], *tokens[1:]]
     return tokens

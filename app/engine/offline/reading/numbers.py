@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Literal
 
-from app.engine.lexicon.words import ANGLE_UNITS, DENOMINATORS, LENGTH_UNITS, TIME_UNITS, TURN_UNITS
+from app.engine.lexicon.words import ANGLE_UNITS, DENOMINATORS, LENGTH_UNITS, RATE_UNITS, TIME_UNITS, TURN_UNITS
 from app.engine.offline.reading.tokens import Token
 
 Unit = Literal["fraction", "rad", "m"]
@@ -103,4 +103,47 @@ def target_value(tokens: list[Token]) -> float | None:
         if unit in LENGTH_UNITS:
             return number * LENGTH_UNITS[unit]
         return number
+    return None
+
+
+
+_PER = frozenset({"per", "a", "an", "every", "each", "/"})
+_COUNTS = {"half": 0.5, "a_half": 0.5, "quarter": 0.25, "a_quarter": 0.25, "a": 1.0, "an": 1.0, "one": 1.0}
+"""Counts said as words before a unit of a rate ("half a turn per second", "a quarter turn a second")."""
+
+
+def _count(tokens: list[Token], i: int) -> tuple[float, int] | None:
+    if tokens[i].number is not None:
+        return abs(tokens[i].number or 0.0), i + 1
+    count = _COUNTS.get(tokens[i].text)
+    if count is None:
+        return None
+    j = i + 1
+    if count < 1.0 and j < len(tokens) and tokens[j].text == "of":
+        j += 1
+    if count < 1.0 and j < len(tokens) and tokens[j].text in ("a", "an"):
+        j += 1
+    return count, j
+
+
+def rate_at(tokens: list[Token], i: int) -> tuple[Literal["omega", "speed"], float, int] | None:
+    """(quantity, value in rad/s or m/s, tokens read) of a rate at ``i``: an amount per time ("1 radian per second",
+    "5 cm per second", "90 degrees a second", "half a turn per second", "10 cm every second") or a rate unit of the
+    lexicon ("2 rad/s", "30 rpm", "90 degrees per second" once joined), else None."""
+    counted = _count(tokens, i)
+    if counted is None or counted[1] >= len(tokens):
+        return None
+    number, j = counted
+    named = RATE_UNITS.get(tokens[j].text.replace("_", " "))
+    if named is not None and tokens[i].number is not None:
+        return ("omega" if named[0] == "omega" else "speed"), number * named[1], 2
+    if j + 2 >= len(tokens) or tokens[j + 1].text not in _PER or tokens[j + 2].lemma not in TIME_UNITS:
+        return None
+    unit, seconds, read = tokens[j].lemma, TIME_UNITS[tokens[j + 2].lemma], j + 3 - i
+    if unit in ANGLE_UNITS:
+        return "omega", number * ANGLE_UNITS[unit] / seconds, read
+    if unit in TURN_UNITS:
+        return "omega", number * _TWO_PI / seconds, read
+    if unit in LENGTH_UNITS and unit != "in":
+        return "speed", number * LENGTH_UNITS[unit] / seconds, read
     return None

@@ -22,7 +22,6 @@ from app.engine.lexicon.words import (
     LOOSE_AMOUNTS,
     MULTIPLIERS,
     OBJECT_NOUNS,
-    RATE_UNITS,
     ROTATION_SENSE,
     SPATIAL,
     SPEEDS,
@@ -32,7 +31,7 @@ from app.engine.lexicon.words import (
     TURN_UNITS,
 )
 from app.engine.offline.reading.numbers import RELATIVE_AFTER as _RELATIVE_AFTER
-from app.engine.offline.reading.numbers import Unit, axis_at, bare_relative, fraction_of_turn, target_value
+from app.engine.offline.reading.numbers import Unit, axis_at, bare_relative, fraction_of_turn, rate_at, target_value
 from app.engine.offline.reading.tokens import Token
 
 Reference = Literal["closed", "current"]
@@ -254,6 +253,11 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             used.update(range(i, j))
             i = j
             continue
+        if (rate := rate_at(tokens, i)) is not None:  # "5 cm per second", "half a turn per second"
+            values["omega_radps" if rate[0] == "omega" else "speed_mps"] = rate[1]
+            used.update(range(i, i + rate[2]))
+            i += rate[2]
+            continue
         if token.number is not None and nxt is not None:
             unit = nxt.lemma
             if unit in ANGLE_UNITS:
@@ -265,9 +269,6 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
             elif unit in TIME_UNITS:
                 values["duration_s"] = token.number * TIME_UNITS[unit]
                 used.update(j for j in (i - 1,) if j >= 0 and tokens[j].text in _DURATION_BEFORE)
-            elif unit in RATE_UNITS or nxt.text in RATE_UNITS:
-                quantity, factor = RATE_UNITS[unit if unit in RATE_UNITS else nxt.text]
-                values["omega_radps" if quantity == "omega" else "speed_mps"] = token.number * factor
             elif unit == "percent":
                 amount = Amount(min(token.number / 100.0, 1.0), "fraction", words=f"{token.text}%")
             elif nxt.lemma == "time" or nxt.text == "times":

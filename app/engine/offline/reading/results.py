@@ -19,6 +19,7 @@ if TYPE_CHECKING:
 
 
 _NEGATIONS = frozenset({"not", "no", "never", "isn't", "aren't", "longer", "without"})
+_TO_A_SHARE = frozenset({VerbSense.RETURN, VerbSense.MOVE, VerbSense.CLOSE, VerbSense.OPEN, VerbSense.PULL_OUT, None})
 _CONTRACTED = frozenset({"it's", "they're"})
 """A pronoun and its verb in one word: "until it's properly shut" is about "it" though it reads no theme."""
 
@@ -69,6 +70,10 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
     if r.amount is not None and q.amount is None and r.amount.unit != "fraction":
         # "ease it back up until it's sitting at 45 degrees": the angle says where it stops, not the way back
         return replace(act, goal=replace(goal, returning=False, quantities=replace(q, amount=r.amount, target=r.target)))
+    if r.amount is not None and q.amount is None and r.amount.unit == "fraction" and not r.amount.loose and goal.sense in _TO_A_SHARE:
+        # "push it back until it's about halfway": where it stops, a share of its range from shut
+        share_sense = VerbSense.OPEN if goal.sense in (VerbSense.RETURN, VerbSense.MOVE, VerbSense.CLOSE, None) else goal.sense
+        return replace(act, goal=replace(goal, returning=False, sense=share_sense, quantities=replace(q, amount=replace(r.amount, reference="closed"))))
     said = frame.text.split()
     ends = {STATES[w] for k, w in enumerate(said) if STATES.get(w) in ("open", "closed") and (k == 0 or said[k - 1] not in ("from", "since"))}
     said_end = q.amount is None and not _NEGATIONS & set(frame.text.split()) and goal.sense in (VerbSense.OPEN, VerbSense.RAISE, VerbSense.LOWER)

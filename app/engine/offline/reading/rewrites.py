@@ -59,8 +59,8 @@ def _kept_as_is(tokens: list[Token], i: int) -> bool:
 _VIEWING = frozenset({"face", "look", "see", "stand", "view", "watch"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
-
-_AS_IS = (("as", "it", "is"), ("as", "they", "are"), ("where", "it", "is"), ("where", "they", "are"))
+_AS_IS = (("as", "it", "is"), ("as", "they", "are"), ("where", "it", "is"), ("where", "they", "are"), ("way", "it", "is"), ("way", "they", "are"),
+          ("how", "it", "is"), ("how", "they", "are"))
 
 
 def _as_they_are(tokens: list[Token], i: int) -> bool:

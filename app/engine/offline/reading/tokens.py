@@ -311,15 +311,18 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.learner import learner
     from app.engine.offline.reading.left_out import left_out
     from app.engine.offline.reading.spelling import correct, correct_noun
+    from app.engine.offline.reading.start_place import start_place
+    from app.engine.offline.reading.step_labels import step_labels
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
+    from app.engine.offline.reading.waits_out import waits_out
     from app.engine.offline.reading.whose_side import row_first, whose_side
 
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []
