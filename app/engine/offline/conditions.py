@@ -158,6 +158,8 @@ def set_topic(builder: Builder, frame: Frame) -> None:
         places += frame.themes[1:]  # "the ketchup is in the left-hand door, open that one": where the thing is
         if not places and (holder := held_in(frame, frame.themes[0])) is not None and holder.kind is not None:
             places = [holder]  # "the sodas are behind the left-hand fridge door - get one out for me"
+    if not builder.refs.scene:  # "the cookies are in the top oven, get that rack out": that oven's
+        builder.refs.scene = next((m.sides for m in places if m.is_object and m.sides), ())
     places = [m for m in places if m.kind is not None]
     side = side_of_object(frame.text.split())
     if frame.stative and side is not None and not builder.refs.scene:

@@ -30,10 +30,10 @@ def lone_side_refusal(mention: Mention, kind: PartKind | None, candidates: list[
     if not mention.sides or mention.plural:
         return None
     if len(candidates) == 1:
-        compared = any(w in _COMPARATIVES and k > 0 and said[k - 1] in _DEFINITE for k, w in enumerate(said)) and (
-            mention.head not in GENERIC_PART_NOUNS)  # "the upper part" of a laptop: its lid, against its fixed base
-        if compared and _beyond_others(candidates[0], mention, obj, parts):
-            return None  # "the lower door" of a cabinet whose one door lies below its drawer: that door
+        compared = _compared(mention, said)
+        if compared and (_beyond_others(candidates[0], mention, obj, parts) or not _other_side(candidates[0], mention, obj)):
+            return None  # "the lower door" of a cabinet whose one door lies below its drawer; "the upper pane" of a window whose
+            # one moving pane is its upper half (the other is fixed): that one
         if compared:  # "the lower door" of a one-door oven: the user expects another door
             return f"'{mention.words}' sets one {noun} against another, but {asset_name} has only one: say 'the {noun}'"
         if _other_side(candidates[0], mention, obj) and not (mention.modifiers and _beyond_others(candidates[0], mention, obj, parts)) and (
@@ -43,6 +43,20 @@ def lone_side_refusal(mention: Mention, kind: PartKind | None, candidates: list[
     if not mention.collective and _same_place(mention, candidates, obj):
         return f"'{mention.words or mention.head}' does not tell the {len(candidates)} {noun}s apart"
     return None
+
+
+def _compared(mention: Mention, said: list[str]) -> bool:
+    """"the upper door", not "the upper part" (of a laptop: its lid, against its fixed base)."""
+    return any(w in _COMPARATIVES and k > 0 and said[k - 1] in _DEFINITE for k, w in enumerate(said)) and mention.head not in GENERIC_PART_NOUNS
+
+
+def lone_compared(mention: Mention, kind: PartKind | None, candidates: list[Part], said: list[str], asset: ArticulatedAsset) -> str | None:
+    """The note for a comparison that picks the only part of its kind ("the lower door" of a one-door oven whose door is
+    low): the user may have meant another part, so the choice is said."""
+    if not mention.sides or mention.plural or len(candidates) != 1 or not _compared(mention, said):
+        return None
+    noun = kind.value if kind is not None else mention.head
+    return f"'{mention.words}': {asset.name} has one {noun}; took it ({candidates[0].link}), which lies that way"
 
 
 def _other_side(part: Part, mention: Mention, obj: ObjectGeometry) -> bool:

@@ -26,7 +26,7 @@ def object_parts(builder: Builder, frame: Frame, sense: VerbSense) -> list[Part]
     if implied:
         found = [p for kind in implied for p in builder.refs.of_kind(kind)]
         if len(found) > 1:
-            return [_one_implied(builder, frame, found)]
+            return found if _all_said(frame) else [_one_implied(builder, frame, found)]
         if found:
             return found
     if starts(frame):
@@ -57,7 +57,7 @@ def _function_control(builder: Builder, frame: Frame) -> list[Part]:
     them; none: a refusal saying so, never the object moved instead."""
     started = [p for kind in VERBS["start"].implies for p in builder.refs.of_kind(kind)]
     if started:  # "turn on the toaster": what starting it works (its lever), as "start the toaster" does
-        return started if len(started) == 1 else [_one_implied(builder, frame, started)]
+        return started if len(started) == 1 or _all_said(frame) else [_one_implied(builder, frame, started)]
     parts = builder.parts
     controls = [p for p in parts if mech.is_control(p) and not any(mech.drives(p, e, parts, builder.tracker) for e in openable(parts))]
     if len(controls) == 1:
@@ -86,6 +86,7 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
         builder.refs.scene if any(m.pronoun for m in frame.themes) else ())  # "the casserole is in the bottom oven - open it up"
     if sides and len(group) > 1:  # "open the lower oven": the door on that side
         placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())
+        builder.refs.scene = builder.refs.scene or sides  # "open the top oven and get that rack out": that oven's rack
         if len(placed) == 1:
             return placed
     largest = group[0].geometry.size
@@ -96,6 +97,11 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
         builder.notes.append(f"'{frame.text}': worked both {first_kind.value}s")  # "shut the oven" shuts them, "open the fridge" opens them
         return same
     raise builder.refs.refuse(f"'{frame.text}' could mean {len(same)} parts", same)
+
+
+def _all_said(frame: Frame) -> bool:
+    """"start both sides", "flush all of them": every part that does it, not one picked."""
+    return any(m.collective for m in frame.themes) or bool({"both", "all"} & set(frame.text.split()))
 
 
 def _one_implied(builder: Builder, frame: Frame, found: list[Part]) -> Part:

@@ -25,7 +25,7 @@ from app.engine.offline.grounding import (
     position,
     reading_order,
 )
-from app.engine.offline.lone_side import lone_side_refusal
+from app.engine.offline.lone_side import lone_compared, lone_side_refusal
 from app.engine.offline.naming import did_you_mean
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import carried_alike, tie_break, wheel_shaped
@@ -122,6 +122,8 @@ class Referents:
         refusal = lone_side_refusal(mention, kind, candidates, said, self.obj, self.parts, self.asset)
         if refusal is not None:
             raise self.refuse(refusal, candidates)
+        if (lone := lone_compared(mention, kind, candidates, said, self.asset)) is not None:
+            notes.append(lone)  # "the upper pane" of a window with one moving pane
         if (wheel := wheel_shaped(mention, candidates)) is not None:
             mention = replace(mention, size="large")  # "turn the wheel handle" among a wheel and a small dial: the wheel
             notes.append(wheel)

@@ -1235,9 +1235,9 @@ ROWS: list[Row] = [
       joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
     R("dishwasher_12553", "Hit the button on the control panel; that unlatches the door, which then drops down open.",
       joints={"joint_1": E(moves=True), "joint_0": E(end="upper")}),
-    # "the lower door" of a cabinet whose one door lies under its drawer: that door; of a one-door oven: still refused
+    # "the lower door" of a cabinet whose one door lies under its drawer: that door; of a one-door oven whose door lies low: that door, noted
     R("storage_23472", "the lower door swings wide open, and then the drawer sitting over it slides out", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
-    R("oven_7138", "I want the lower door opened.", refuse=True),
+    R("oven_7138", "I want the lower door opened.", joints={"joint_0": E(end="upper")}),  # its one door lies low: that door, with a note
     # --- round 20 (benchmark/probes/dev_round20_prompts.jsonl, scored first before these) ---
     R("dishwasher_12553", "Press the button and drop the door open at the same time", joints={"joint_1": E(moves=True), "joint_0": E(end="upper")}),
     R("microwave_7119", "I only want the round plate to turn, roughly half a revolution.", joints={"joint_1": E(abs_end=PI), "joint_0": E(still=True)}),
@@ -1459,6 +1459,11 @@ ROWS: list[Row] = [
     R("window_103135", "Push the window wide open, then pull it shut.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),  # r50d_022 (opened first: the refused-looking "push ... wide open" closed it)
     R("faucet_991", "Swing the lever all the way left, then bring it halfway back toward the centre.", joints={"joint_0": E(end=0.7854)}),  # r50e_028, r49b_024
     R("toaster_103483", "Push the lever down to start toasting; when the toast is done the lever springs back up.", joints={"joint_0": E(peak=0.3)}),  # r49b_043
+    R("window_103135", "Pull the upper pane shut against the frame.", joints={"joint_0": E(end=WINDOW_103135_CLOSED)}),  # r50d_013: its one moving pane is the upper one
+    R("extra/oven_7179", "I need to check on the cookies in the top oven, get that rack out for me.",
+      joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_1": E(still=True), "joint_2": E(still=True)}, order=(("joint_4", "joint_0"),)),  # r50e_041
+    R("extra/oven_7179", "The cookies are in the top oven, get that rack out for me.", joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_3": E(still=True)}),
+    R("extra/toaster_103473", "I'm making toast for two, start both sides.", joints={"joint_0": E(moves=True), "joint_1": E(moves=True)}),  # r49c_045
 ]
 
 
