@@ -93,6 +93,14 @@ def _default_from(state: GoalState, sense: VerbSense) -> MeasuredFrom:
     return "closed"
 
 
+_POSES = frozenset({"vertical", "horizontal", "flat", "level"})
+
+
+def _to_a_pose(said: list[str]) -> bool:
+    """"bring it back up to vertical": the pose said is where it goes (not "stand it back up": back where it was)."""
+    return any(w in _POSES and k and said[k - 1] == "to" for k, w in enumerate(said))
+
+
 def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> GoalState:
     """The end state ``sense`` asks of ``part``, refined by the frame's words."""
     quantities = frame.quantities
@@ -105,7 +113,7 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
             geometry.lower < geometry.rest < geometry.upper):
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest
-    if frame.returning and not absolute and (quantities.orientation is None or frame.explicit_return) and (
+    if frame.returning and not absolute and not (_to_a_pose(said) and not frame.explicit_return) and (
             sense not in (VerbSense.OPEN, VerbSense.PULL_OUT) or set(said) & _RETURN_WORDS or frame.explicit_return):  # "back up to vertical": the pose said
         home = _back_home(said)  # "tuck the magazine back up into the cover", "slide it back in": shut
         closes = frame.verb is not None and frame.verb in VERBS and VERBS[frame.verb].sense is VerbSense.CLOSE and not frame.explicit_return and (

@@ -31,9 +31,10 @@ def lone_side_refusal(mention: Mention, kind: PartKind | None, candidates: list[
         return None
     if len(candidates) == 1:
         compared = _compared(mention, said)
-        if compared and (_beyond_others(candidates[0], mention, obj, parts) or not _other_side(candidates[0], mention, obj)):
+        if compared and (_beyond_others(candidates[0], mention, obj, parts) or (
+                not _other_side(candidates[0], mention, obj) and _fixed_alike(kind, asset))):
             return None  # "the lower door" of a cabinet whose one door lies below its drawer; "the upper pane" of a window whose
-            # one moving pane is its upper half (the other is fixed): that one
+            # one moving pane is its upper half, against a fixed one: that one ("the lower door" of a one-door oven is refused)
         if compared:  # "the lower door" of a one-door oven: the user expects another door
             return f"'{mention.words}' sets one {noun} against another, but {asset_name} has only one: say 'the {noun}'"
         if _other_side(candidates[0], mention, obj) and not (mention.modifiers and _beyond_others(candidates[0], mention, obj, parts)) and (
@@ -50,10 +51,19 @@ def _compared(mention: Mention, said: list[str]) -> bool:
     return any(w in _COMPARATIVES and k > 0 and said[k - 1] in _DEFINITE for k, w in enumerate(said)) and mention.head not in GENERIC_PART_NOUNS
 
 
+def _fixed_alike(kind: PartKind | None, asset: ArticulatedAsset) -> bool:
+    """A link that does not move is named like the kind ("window_frame" beside a window that opens): the other one of a
+    comparison may be that fixed part."""
+    if kind is None:
+        return False
+    moved = {j.child for j in asset.joints.values() if j.movable}
+    return any(kind.value in (link.semantics.label or "").lower().split("_") for name, link in asset.links.items() if name not in moved)
+
+
 def lone_compared(mention: Mention, kind: PartKind | None, candidates: list[Part], said: list[str], asset: ArticulatedAsset) -> str | None:
-    """The note for a comparison that picks the only part of its kind ("the lower door" of a one-door oven whose door is
-    low): the user may have meant another part, so the choice is said."""
-    if not mention.sides or mention.plural or len(candidates) != 1 or not _compared(mention, said):
+    """The note for a comparison that picks the only moving part of its kind beside a fixed one ("the upper pane" of a
+    window whose lower pane is fixed): the user may have meant another part, so the choice is said."""
+    if not mention.sides or mention.plural or len(candidates) != 1 or not _compared(mention, said) or not _fixed_alike(kind, asset):
         return None
     noun = kind.value if kind is not None else mention.head
     return f"'{mention.words}': {asset.name} has one {noun}; took it ({candidates[0].link}), which lies that way"

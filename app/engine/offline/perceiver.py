@@ -120,6 +120,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
                 builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
                 continue
+            if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and not act.goal.themes and not act.goal.instruments:
+                continue  # "Nothing else moves.": what stays still, which it does unless asked
             if len(acts) > 1 and mishap(act):
                 builder.notes.append(f"ignored '{act.goal.text}': it is about what happens to a person, not a step")  # "I keep bumping my knee on it"
                 continue

@@ -1235,9 +1235,9 @@ ROWS: list[Row] = [
       joints={"joint_3": E(end="upper"), "joint_2": E(end="upper"), "joint_0": E(still=True), "joint_1": E(still=True)}),
     R("dishwasher_12553", "Hit the button on the control panel; that unlatches the door, which then drops down open.",
       joints={"joint_1": E(moves=True), "joint_0": E(end="upper")}),
-    # "the lower door" of a cabinet whose one door lies under its drawer: that door; of a one-door oven whose door lies low: that door, noted
+    # "the lower door" of a cabinet whose one door lies under its drawer: that door; of a one-door oven: still refused
     R("storage_23472", "the lower door swings wide open, and then the drawer sitting over it slides out", joints={"joint_0": E(end="upper"), "joint_1": E(end="upper")}),
-    R("oven_7138", "I want the lower door opened.", joints={"joint_0": E(end="upper")}),  # its one door lies low: that door, with a note
+    R("oven_7138", "I want the lower door opened.", refuse=True),
     # --- round 20 (benchmark/probes/dev_round20_prompts.jsonl, scored first before these) ---
     R("dishwasher_12553", "Press the button and drop the door open at the same time", joints={"joint_1": E(moves=True), "joint_0": E(end="upper")}),
     R("microwave_7119", "I only want the round plate to turn, roughly half a revolution.", joints={"joint_1": E(abs_end=PI), "joint_0": E(still=True)}),
@@ -1464,6 +1464,9 @@ ROWS: list[Row] = [
       joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_1": E(still=True), "joint_2": E(still=True)}, order=(("joint_4", "joint_0"),)),  # r50e_041
     R("extra/oven_7179", "The cookies are in the top oven, get that rack out for me.", joints={"joint_4": E(end=1.5708), "joint_0": E(end=0.528), "joint_3": E(still=True)}),
     R("extra/toaster_103473", "I'm making toast for two, start both sides.", joints={"joint_0": E(moves=True), "joint_1": E(moves=True)}),  # r49c_045
+    R("microwave_7236", "Animator note: microwave door opens to 60°, short beat, closes again. Nothing else moves.", joints={"joint_0": E(peak=1.0472)}),  # r5_039
+    R("extra/bucket_100432", "Flop the handle down to one side, then stand it back up.", joints={"joint_0": E(peak=-1.885)}),  # r41l_023: back where it was, not "vertical"
+    R("oven_7221", "Open the lower door of this oven.", refuse=True),  # r4_044: no fixed door to compare with
 ]
 
 
