@@ -78,7 +78,9 @@ def step_labels(tokens: list[Token]) -> list[Token]:
     starts = {start: (n, end) for start, n, end in labels}
     k = 0
     while k < len(tokens):
-        if k in starts:
+        if k in starts and tokens[starts[k][1] - 1].text == ":":
+            current = starts[k][0]  # "Step 1:" reads as a heading already: kept, its number counted
+        elif k in starts:
             current, end = starts[k]
             if out and out[-1].text not in (".", ";"):
                 out.append(Token(".", ".", tokens[k].start, tokens[k].start))
