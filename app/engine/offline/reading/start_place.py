@@ -4,6 +4,7 @@ reader knows. Before this stage "then back to the spot it started from" repeated
 
 from __future__ import annotations
 
+from app.engine.offline.reading.spans import replace_spans
 from app.engine.offline.reading.token import Token
 
 _PLACES = frozenset({"spot", "place", "position", "point", "angle", "height", "pose", "setting", "location"})
@@ -33,14 +34,5 @@ def _said_at(tokens: list[Token], k: int) -> int | None:
 
 def start_place(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each place said as where a part started read as ``where_it_started``."""
-    out: list[Token] = []
-    k = 0
-    while k < len(tokens):
-        end = _said_at(tokens, k) if k and tokens[k - 1].text in ("to", "into", "in") else None
-        if end is None:
-            out.append(tokens[k])
-            k += 1
-            continue
-        out.append(Token("where_it_started", "where_it_started", tokens[k].start, tokens[end - 1].end))
-        k = end
-    return out
+    return replace_spans(tokens, lambda ts, k: _said_at(ts, k) if k and ts[k - 1].text in ("to", "into", "in") else None,
+                         lambda ts, k, end: [Token("where_it_started", "where_it_started", ts[k].start, ts[end - 1].end)])

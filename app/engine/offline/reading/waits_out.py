@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from app.engine.offline.reading.part_words import kind_of_word
+from app.engine.offline.reading.spans import replace_spans
 from app.engine.offline.reading.token import Token
 
 _WHEN = frozenset({"when", "once", "after", "as_soon_as"})
@@ -37,14 +38,4 @@ def _made_at(tokens: list[Token], k: int) -> int | None:
 
 def waits_out(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each wait for what the object makes read as "then"."""
-    out: list[Token] = []
-    k = 0
-    while k < len(tokens):
-        end = _made_at(tokens, k)
-        if end is None:
-            out.append(tokens[k])
-            k += 1
-            continue
-        out.append(replace(tokens[k], text="then", lemma="then"))
-        k = end
-    return out
+    return replace_spans(tokens, _made_at, lambda ts, k, _end: [replace(ts[k], text="then", lemma="then")])
