@@ -160,6 +160,13 @@ _LEADS = frozenset({"ok", "okay", "right", "so", "well", "alright", "and", ",", 
 _USER_IS = (("i'm",), ("i", "am"), ("we're",), ("we", "are"), ("i've", "been"), ("i've",), ("we've",), ("i", "have"))
 
 
+def whole_object_goal(frame: Frame, verb: str, sense: VerbSense, asset_name: str) -> Frame:
+    """``frame`` made a plain request to ``verb`` the whole object (no amount, no other part, not a wish or a heading)."""
+    whole = Mention(head="it", is_object=True, words=asset_name)
+    return replace(frame, verb=verb, sense=sense, themes=(whole,), instruments=(), heading=False, stative=False, particle=None, wish=False,
+                   guessed_verb=None, quantities=replace(frame.quantities, amount=None))
+
+
 def answer_finished(builder: Builder, frames: list[Frame]) -> bool:
     """"I'm done working for today", "I'm finished with the laptop", "OK, I've finished packing the suitcase" and nothing
     asked: the object is shut (a laptop folded), with a note; False when no clause says so or nothing of it is open."""
@@ -170,9 +177,7 @@ def answer_finished(builder: Builder, frames: list[Frame]) -> bool:
         said = next((len(lead) for lead in _USER_IS if tuple(words[:len(lead)]) == lead), 0)  # "done with work for today": the user
         if words[said:said + 1] == [] or words[said] not in _FINISHED or any(m.kind is not None for m in act.goal.themes):
             continue
-        whole = Mention(head="it", is_object=True, words=builder.asset.name)
-        goal = replace(act.goal, verb="close", sense=VerbSense.CLOSE, themes=(whole,), instruments=(), heading=False, stative=False,
-                       particle=None, wish=False, guessed_verb=None, quantities=replace(act.goal.quantities, amount=None))
+        goal = whole_object_goal(act.goal, "close", VerbSense.CLOSE, builder.asset.name)
         if added(builder, replace(act, condition=False, exclusions=(), means=None, results=(), goal=goal)):
             _superseded(builder, act.goal.text, [act.goal])
             builder.notes.append(f"no action was asked: read '{act.goal.text}' as a wish to shut {builder.asset.name}")

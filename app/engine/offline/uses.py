@@ -6,13 +6,11 @@ note says the request was read as that wish."""
 
 from __future__ import annotations
 
-from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.lexicon.verbs import VerbSense
-from app.engine.offline.complaints import added
+from app.engine.offline.complaints import added, whole_object_goal
 from app.engine.offline.reading.acts import Act
-from app.engine.offline.reading.mention import Mention
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -50,10 +48,7 @@ def answer_use(builder: Builder, frames: list[Frame]) -> bool:
     way = _wish(words)
     if way is None:
         return False
-    whole = Mention(head="it", is_object=True, words=builder.asset.name)
-    first = frames[0]
-    goal = replace(first, verb=way, sense=VerbSense.OPEN if way == "open" else VerbSense.CLOSE, themes=(whole,), instruments=(), heading=False,
-                   stative=False, particle=None, wish=False, guessed_verb=None, quantities=replace(first.quantities, amount=None))
+    goal = whole_object_goal(frames[0], way, VerbSense.OPEN if way == "open" else VerbSense.CLOSE, builder.asset.name)
     if not added(builder, Act(goal=goal)):
         return False
     said = " ".join(f.text for f in frames)
