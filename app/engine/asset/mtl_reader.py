@@ -11,6 +11,7 @@ one, each after a ``newmtl``; ``map_Kd`` after a ``newmtl``; other statements (`
 
 from __future__ import annotations
 
+import hashlib
 import io
 import math
 import re
@@ -20,6 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from app.engine.asset.confined_files import ConfinedFiles
+from app.engine.asset.mesh_data import SOURCE_KEY
 from app.engine.errors import AssetError
 from app.engine.types import IntArray
 
@@ -77,9 +79,11 @@ def _open_image(data: bytes) -> Image.Image | None:
     from PIL import Image
 
     try:
-        return Image.open(io.BytesIO(data))
+        image = Image.open(io.BytesIO(data))
     except Exception:  # like trimesh: a texture PIL cannot open is no texture
         return None
+    image.info[SOURCE_KEY] = hashlib.sha256(data).hexdigest()  # many OBJ files of one asset share a texture: encoded once
+    return image
 
 
 def _texture(files: ConfinedFiles, name: str) -> Image.Image | None:
