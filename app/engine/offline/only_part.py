@@ -1,31 +1,92 @@
-"""A part name the lexicon does not know, on an object with one movable part ("the stapler's magazine")."""
+"""A part name the lexicon does not know, read by elimination: the one movable part that can do what the verb
+says ("pull out the magazine" on a stapler, "swing open the hatch" on a bin whose only hinged closure is its lid).
+Always with a note naming the part chosen and why; never a bare guess: two parts that fit is a refusal."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-from app.engine.lexicon.verbs import VerbSense
-from app.engine.offline.grounding import Part
+from app.engine.lexicon.kinds import info
+from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, WHOLE_WORDS
+from app.engine.offline.grounding import Part, narrow
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
 
+_CLOSURE_SENSES = frozenset({VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RECLINE})
+_SLIDE_SENSES = frozenset({VerbSense.PULL_OUT, VerbSense.PUSH_IN})
+_TURN_SENSES = frozenset({VerbSense.TURN})
+_LIFT_SENSES = frozenset({VerbSense.RAISE, VerbSense.LOWER})
+
+
+def _fits(frame: Frame, part: Part) -> bool:
+    """Whether ``part`` can do what the frame's verb says: a closure opens and shuts, a sliding part pulls out, a
+    control that turns is turned; the verb's own motion (swing: a hinge, slide: a slide) must agree."""
+    sense = frame.sense
+    control = part.kind is not None and info(part.kind).control
+    kind = part.geometry.type
+    motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
+    if (motion == "hinge" and kind == "prismatic") or (motion == "slide" and kind != "prismatic"):
+        return False
+    if sense in _CLOSURE_SENSES or sense in _LIFT_SENSES:
+        return not control and part.geometry.open_value is not None
+    if sense in _SLIDE_SENSES:
+        return not control and kind == "prismatic"
+    if sense in _TURN_SENSES:
+        return control and kind in ("revolute", "continuous")
+    return False
+
+
+def _fits_only(frame: Frame, part: Part) -> bool:
+    """The object's one movable part, tied to it by name: any closing or lifting verb, or a slide for a sliding part."""
+    if frame.sense in _SLIDE_SENSES:
+        return part.geometry.type == "prismatic"
+    return (frame.sense in _CLOSURE_SENSES or frame.sense in _LIFT_SENSES) and part.geometry.open_value is not None
+
+
+_SPECIFIC_SENSES = _SLIDE_SENSES | _TURN_SENSES
+
+
+def _described(frame: Frame, mention: Mention) -> bool:
+    """Whether the words say more than "open the X": a place or size ("the little flap at the bottom"), a verb of one
+    motion ("swing", "slide", "twist", "pull out"), or a word that names no kind on purpose ("the panel"). A bare "open the
+    flux capacitor" says nothing a part could be chosen by: refused."""
+    motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
+    return bool(mention.sides or mention.size or mention.ordinal is not None or motion != "any" or frame.sense in _SPECIFIC_SENSES
+                or mention.head in GENERIC_PART_NOUNS)
+
+
+def _unknown(mention: Mention) -> bool:
+    """A head noun that says no part kind ("the portal", "the panel"), not the whole object or a pronoun."""
+    return mention.kind is None and mention.head not in WHOLE_WORDS and not (
+        mention.pronoun or mention.anaphor or mention.is_object or mention.plural or mention.collective or mention.other)
+
 
 def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
-    """A part name we do not know, tied to the object ("the stapler's magazine") on an object with one
-    movable part, with a verb that part can do: that part, with a warning; never a bare guess."""
+    """The one movable part a name we do not know can mean: the only movable part of an object the name is tied to
+    ("the stapler's magazine"), or, when the name is all the clause says moves, the only part the verb fits, placed by
+    the mention's own words ("the upper hatch"). [] when it cannot be told that way (the caller then refuses)."""
+    if not _unknown(mention) or builder.refs.ground(mention).parts:
+        return []
     category = builder.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
     tied = mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)
-    if not tied or mention.kind is not None or len(builder.parts) != 1 or builder.refs.ground(mention).parts:
+    if tied and len(builder.parts) == 1:
+        fitting = [p for p in builder.parts if _fits_only(frame, p)]
+        how = "the only movable part"
+    elif len(frame.themes) == 1 and not frame.instruments and _described(frame, mention):
+        fitting = [p for p in builder.parts if _fits(frame, p)]
+        if mention.sides or mention.size or mention.ordinal is not None:
+            fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())
+        how = f"the only movable part that can {frame.verb or (frame.sense.value if frame.sense else 'move')}"
+        how += " there" if mention.sides else ""
+    else:
         return []
-    part = builder.parts[0]
-    sense = frame.sense
-    fits = sense in (VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RAISE, VerbSense.LOWER, VerbSense.RECLINE) and part.geometry.open_value is not None
-    if sense in (VerbSense.PULL_OUT, VerbSense.PUSH_IN):
-        fits = part.geometry.type == "prismatic"
-    if not fits:
+    if len(fitting) != 1:
         return []
-    builder.notes.append(f"read '{mention.words}' as {part.describe(builder.asset)}, the only movable part")
+    part = fitting[0]
+    unknown = "" if mention.head in GENERIC_PART_NOUNS else " (a name the agent does not know)"
+    builder.notes.append(f"read '{mention.words}'{unknown} as {part.describe(builder.asset)}, {how}")
     return [part]

@@ -9,7 +9,7 @@ from app.engine.errors import GroundingError
 from app.engine.offline.reading.mentions import Mention
 
 
-def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...]) -> bool:
+def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...], text: str = "") -> bool:
     """Whether ``mention`` (which did not ground, raising ``error``) is a stray word among ``mentions``: no kind the
     lexicon knows, nothing qualifying it as a part, not the clause's first word (its verb), and another phrase of the
     clause names what moves. A single word must be a noun or an adjective ("home", "clear", "total"). A landmark right after a
@@ -20,6 +20,8 @@ def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...]
         return True
     if mention.kind is not None:
         return False
+    if _adjunct(mention, mentions, text):
+        return True
     words = (mention.words or mention.head).split()
     if len(words) == 1 and not _describes(words[0]):
         return False
@@ -43,3 +45,20 @@ def _describes(word: str) -> bool:
 
     lemmas = getAllLemmas(word)
     return ("NOUN" in lemmas or "ADJ" in lemmas) and not word.endswith(("ing", "ly"))
+
+
+_JOINING = frozenset({"and", "or", "&", "plus", ",", "then", "also", "as_well_as"})
+
+
+def _adjunct(mention: Mention, mentions: tuple[Mention, ...], text: str) -> bool:
+    """A name we do not know said after what the clause moves, and not joined to it ("open the bin in a hands-free manner",
+    "move the whole thing 25 cm in depth"): how or where, not a second part. "the door and the hatch" is joined: a part."""
+    before = [m for m in mentions if m is not mention and m.end <= mention.start and not m.pronoun]
+    if not before or not mention.words or mention.pronoun or mention.anaphor or mention.plural or mention.collective:
+        return False
+    said, last = f" {text} ", before[-1].words
+    at, start = said.find(f" {last} "), said.find(f" {mention.words} ")
+    if not last or at < 0 or start < at:
+        return False
+    between = said[at + len(last) + 1:start].replace(",", " , ").split()
+    return bool(between) and not set(between) & _JOINING

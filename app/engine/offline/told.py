@@ -14,6 +14,7 @@ from app.engine.lexicon.words import FUNCTION_VERBS
 from app.engine.offline.collisions import blocking_joints
 from app.engine.offline.complaints import added, mishap
 from app.engine.offline.reading.clauses import Link
+from app.engine.offline.reading.codes import CODE_VERBS
 from app.engine.offline.reading.holders import side_of_object
 from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.mentions import parse_mentions
@@ -154,8 +155,16 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
     """"Lock the safe, the code is 1-5-9": the code told after a request that needs one is how it is done, as "lock the
     safe by entering 1-5-9" says."""
     out: list[Frame] = []
-    for frame in frames:
+    frames = list(frames)
+    for index, frame in enumerate(frames):
         told = frame.codes and frame.verb is None and frame.stative and frame.themes and all(m.kind is PartKind.CODE for m in frame.themes)
+        after = frames[index + 1] if index + 1 < len(frames) else None
+        if told and after is not None and _enters_code(after):  # "the code is 2 5 8, punch it in": the next clause enters it
+            frames[index + 1] = replace(after, codes=frame.codes, themes=tuple(m for m in after.themes if m.kind is PartKind.BUTTON),
+                                        link=frame.link if not out else after.link)
+            continue
+        if not frame.codes and any(f.codes for f in out) and _code_said(frame) and (frame.stative or frame.verb in CODE_VERBS):
+            continue  # "only after the code is complete", "once the code has been entered": the code entered before, not a step
         told = told or (frame.codes and frame.link is Link.MEANS and bool(out) and out[-1].sense is VerbSense.OPEN)  # "open it by entering 1-5-9"
         if told and out and out[-1].sense in (VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPEN) and out[-1].themes and all(
                 m.is_object for m in out[-1].themes):
@@ -167,6 +176,18 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
             continue
         out.append(frame)
     return out
+
+
+def _code_said(frame: Frame) -> bool:
+    return bool(frame.themes) and any(m.kind is PartKind.CODE for m in frame.themes) and all(
+        m.pronoun or m.kind in (PartKind.CODE, PartKind.BUTTON) for m in frame.themes)
+
+
+def _enters_code(frame: Frame) -> bool:
+    """A code verb on "it", "the code" or the keypad with no digits of its own ("type it in on the keypad")."""
+    return frame.verb in CODE_VERBS and not frame.codes and bool(frame.themes) and all(
+        m.pronoun or m.kind in (PartKind.CODE, PartKind.BUTTON) for m in frame.themes) and not any(
+        m.kind is PartKind.BUTTON and (m.plural or m.sides or m.ordinal is not None) for m in frame.themes)
 
 
 _APPOSED = frozenset({",", "-", "—", ":", ";"})

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import pytest
 
+from app.engine.errors import GroundingError
 from app.engine.offline.perceiver import read_prompt
 from tests.engine.offline.conftest import asset
 
@@ -101,3 +102,29 @@ def test_an_action_read_from_a_complaint_or_a_place_is_said(name: str, prompt: s
 def test_a_person_running_into_a_part_is_no_step() -> None:
     notes = _notes("extra/box_100214", "the lid is open and I keep banging my elbow on it")
     assert any("it is about what happens to a person" in n for n in notes), notes
+
+
+UNKNOWN_NAME = "(a name the agent does not know)"
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("trash_can_102181", "Flip up the shutter."), ("extra/oven_7179", "Pull out the top grate."),
+                                              ("microwave_7119", "Swing open the porthole.")])
+def test_a_name_read_by_elimination_is_said(name: str, prompt: str) -> None:
+    notes = _notes(name, prompt)
+    assert any(UNKNOWN_NAME in n and "the only movable part that can" in n for n in notes), notes
+
+
+@pytest.mark.parametrize(("name", "prompt"), [("trash_can_102181", "Open the lid."), ("microwave_7119", "Open the door.")])
+def test_a_known_name_is_no_elimination(name: str, prompt: str) -> None:
+    assert not any(UNKNOWN_NAME in n for n in _notes(name, prompt))
+
+
+def test_a_generic_name_read_by_elimination_is_said() -> None:
+    notes = _notes("microwave_7119", "Open the panel.")
+    assert any("read 'the panel' as door (link_0)" in n and "the only movable part that can open" in n for n in notes), notes
+
+
+@pytest.mark.parametrize("prompt", ["Open the porthole.", "open the flux capacitor"])
+def test_a_bare_unknown_name_is_refused_not_guessed(prompt: str) -> None:
+    with pytest.raises(GroundingError, match="no such movable part"):
+        _notes("microwave_7119", prompt)

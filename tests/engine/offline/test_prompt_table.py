@@ -1467,6 +1467,20 @@ ROWS: list[Row] = [
     R("microwave_7236", "Animator note: microwave door opens to 60°, short beat, closes again. Nothing else moves.", joints={"joint_0": E(peak=1.0472)}),  # r5_039
     R("extra/bucket_100432", "Flop the handle down to one side, then stand it back up.", joints={"joint_0": E(peak=-1.885)}),  # r41l_023: back where it was, not "vertical"
     R("oven_7221", "Open the lower door of this oven.", refuse=True),  # r4_044: no fixed door to compare with
+    # --- session 31: codes told then entered, a part name the agent does not know read by elimination, a non-part phrase ---
+    R("safe_101564", "Code is 2, 5, 8 - type it in on the keypad.", joints={"joint_1": E(peak=0.004), "joint_4": E(peak=0.004), "joint_7": E(peak=0.004), "joint_13": E(still=True), "joint_0": E(still=True)},
+      order=(("joint_1", "joint_4"), ("joint_4", "joint_7"))),  # r10_044 ("the code" was grounded as all twelve keys)
+    R("safe_101564", "um the code is two five eight punch it in on the keypad", joints={"joint_1": E(peak=0.004), "joint_4": E(peak=0.004), "joint_7": E(peak=0.004), "joint_13": E(still=True)}),  # r48f_035
+    R("safe_101564", "The code 1-2-3 shall be entered on the keypad, one key at a time; only after the code is complete is the door to be opened to 90 degrees.",
+      joints={"joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_2": E(peak=0.004), "joint_13": E(end=1.5708)}, order=(("joint_2", "joint_13"),)),  # r48g_112: the code before a passive verb; "the code is complete"
+    R("safe_101564", "Step 1: The keys 1, 2 and 3 on the keypad are to be pressed one after another. Step 2: Once the code has been entered, the door is to be swung open by 90 degrees.",
+      joints={"joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_2": E(peak=0.004), "joint_3": E(still=True), "joint_13": E(end=1.5708)}, order=(("joint_2", "joint_13"),)),  # r48g_111
+    R("trash_can_102181", "Flip up the shutter.", joints={"joint_0": E(moves=True), "joint_1": E(end=3.1542)}),  # the one hinged closure
+    R("microwave_7119", "Open the panel.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # the turntable cannot open
+    R("trash_can_102181", "The bin is to be opened in a hands-free manner.", joints={"joint_0": E(moves=True), "joint_1": E(end=3.1542)},
+      order=(("joint_0", "joint_1"),)),  # r48g_011 ("manner" was refused as a missing part)
+    R("refrigerator_11178", "Open the hatch.", refuse=True),  # two doors fit: no guess
+    R("extra/microwave_7128", "Turn the thermostat.", refuse=True),  # two knobs fit
 ]
 
 

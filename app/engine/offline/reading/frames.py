@@ -1,8 +1,7 @@
 """Stage 3 — frames: one :class:`Frame` per clause — verb sense, theme, instrument, end state, amount, manner, order,
-negation, holds and waits. A frame says what the clause asks in the lexicon's terms; it does not know the asset. The
-verb's sense may still depend on what it acts on ("push" a button presses it, "push" a
-drawer closes it, "push" the cart moves it): grounding refines it with the theme's kind.
-"""
+negation, holds and waits. A frame says what the clause asks in the lexicon's terms; it does not know the asset. The verb's
+sense may still depend on what it acts on ("push" a button presses it, a drawer closes it, the cart moves it): grounding
+refines it with the theme's kind."""
 
 from __future__ import annotations
 
@@ -321,7 +320,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         themes = [m.owner if m.head in _BODY_PARTS and m.owner is not None else m for m in themes]  # "keep your finger on it": it
     elif verb in ("keep", "hold") and themes and all(m.head in _BODY_PARTS for m in themes):
         themes = [replace(themes[0], head="it", kind=None, pronoun=True, modifiers=())]  # "keep your foot down for 3 s": on what it pressed
-    codes = code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used)
+    codes = code_items(tokens, (verb_index + 1) if verb_index is not None else 0, quantities.used) or (code_items(tokens[:verb_index], 0, quantities.used) if verb_index and any(
+        m.kind in (PartKind.CODE, PartKind.BUTTON) for m in subject) else ())  # "the code 1-2-3 shall be entered": said before a passive verb
     if any(m.head not in _CONTAINERS and m.kind is not None for m in themes) or any(c[0] == "place" for c in codes):
         themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad", "bottom-left on the keypad"
     let = causative or particle == "go"
