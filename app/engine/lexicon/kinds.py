@@ -155,7 +155,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
         KindInfo(PartKind.SPOUT, ("spout", "stem", "nozzle", "neck"), labels=("stem", "spout"), related=(PartKind.LEVER,),
                  affordances=("raise", "lower")),
         KindInfo(PartKind.BODY, ("body", "frame", "chassis", "housing", "casing", "stand", "keyboard", "base"), labels=()),
-        KindInfo(PartKind.CODE, ("combination", "combination lock", "code", "passcode", "keycode", "pin code"), related=(PartKind.KNOB, PartKind.BUTTON)),
+        KindInfo(PartKind.CODE, ("combination", "combination lock", "code", "passcode", "keycode", "pin code", "pin", "pin number"), related=(PartKind.KNOB, PartKind.BUTTON)),
     )
 }
 

@@ -48,6 +48,11 @@ SIZES: Mapping[str, str] = MappingProxyType({
     **dict.fromkeys(("small", "smaller", "smallest", "little", "tiny", "mini", "narrow", "narrower", "narrowest", "short", "shorter", "shortest",
                      "stubby", "slim", "thin", "petite", "wee"), "small"),
 })
+SHAPE_WORDS = frozenset({"round", "flat", "square", "curved", "wire", "glass", "metal", "plastic", "wooden", "rubber", "clear", "flap-like",
+                         "hinged", "sliding", "folding", "swinging", "rotating", "spinning", "pull-out", "pop-up", "push", "spring-loaded"})
+"""What a part looks like or how it moves, not what it is: with an unknown name ("the hinged glass") enough to choose by."""
+HINGE_WORDS = frozenset({"hinged", "folding", "swinging", "flap-like"})
+SLIDE_WORDS = frozenset({"sliding", "pull-out", "pop-up"})
 COLLECTIVE = frozenset({"both", "all", "every", "each"})
 DETERMINERS = frozenset({"the", "a", "an", "some", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
 PRONOUNS = frozenset({"it", "them", "they", "itself"})

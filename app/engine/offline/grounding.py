@@ -28,6 +28,7 @@ QUALIFIER_TOLERANCE = 0.25
 """Candidates within this fraction of the candidates' spread of the extreme value all qualify."""
 MIN_QUALIFIER_TOLERANCE_M = 1e-3
 SIZE_TOLERANCE = 0.15
+SIZE_TIE = 0.01
 """Relative size difference within which parts count as the same size ("both small knobs")."""
 SALIENT_RATIO = 1.5
 """A part this much larger than every other candidate is what a bare singular mention means."""
@@ -221,7 +222,8 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
     if mention.size is not None and len(candidates) > 1:
         pick = max if mention.size == "large" else min
         chosen = pick(candidates, key=lambda p: p.geometry.size)
-        candidates = [p for p in candidates if abs(p.geometry.size - chosen.geometry.size) <= SIZE_TOLERANCE * chosen.geometry.size] if mention.plural else [chosen]
+        tie = SIZE_TOLERANCE if mention.plural else SIZE_TIE  # "the small knob" of two alike is either: a tie, not a choice
+        candidates = [p for p in candidates if abs(p.geometry.size - chosen.geometry.size) <= tie * chosen.geometry.size]
     if mention.ordinal is not None and (mention.row is None) != (mention.column is None):
         # "the third key of the second row": counted along the row (left to right) or down the column
         axis = 1 if mention.row is not None else 2

@@ -4,11 +4,12 @@ Always with a note naming the part chosen and why; never a bare guess: two parts
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import TYPE_CHECKING
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, WHOLE_WORDS
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
 from app.engine.offline.grounding import Part, narrow
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
@@ -22,21 +23,32 @@ _TURN_SENSES = frozenset({VerbSense.TURN})
 _LIFT_SENSES = frozenset({VerbSense.RAISE, VerbSense.LOWER})
 
 
-def _fits(frame: Frame, part: Part) -> bool:
+def _fits(frame: Frame, mention: Mention, part: Part) -> bool:
     """Whether ``part`` can do what the frame's verb says: a closure opens and shuts, a sliding part pulls out, a
-    control that turns is turned; the verb's own motion (swing: a hinge, slide: a slide) must agree."""
+    control that turns is turned, a button is pressed, a switch flipped; the verb's own motion (swing: a hinge, slide: a
+    slide) and the mention's ("the hinged glass") must agree."""
     sense = frame.sense
     control = part.kind is not None and info(part.kind).control
     kind = part.geometry.type
     motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
-    if (motion == "hinge" and kind == "prismatic") or (motion == "slide" and kind != "prismatic"):
+    words = set(mention.modifiers)
+    hinge, slide = motion == "hinge" or bool(words & HINGE_WORDS), motion == "slide" or bool(words & SLIDE_WORDS)
+    if (hinge and kind == "prismatic") or (slide and kind != "prismatic"):
         return False
-    if sense in _CLOSURE_SENSES or sense in _LIFT_SENSES:
+    if sense in _CLOSURE_SENSES:
         return not control and part.geometry.open_value is not None
-    if sense in _SLIDE_SENSES:
-        return not control and kind == "prismatic"
+    if sense in _LIFT_SENSES:
+        return part.geometry.open_value is not None or (control and kind == "revolute")
+    if sense in _SLIDE_SENSES:  # "push the hinged glass out": a hinged closure swings out
+        return not control and (kind == "prismatic" or (hinge and part.geometry.open_value is not None))
     if sense in _TURN_SENSES:
         return control and kind in ("revolute", "continuous")
+    if sense is VerbSense.PRESS:
+        return control and kind == "prismatic"
+    if sense is VerbSense.TOGGLE:
+        return control and kind == "revolute"
+    if sense is VerbSense.SPIN:
+        return kind == "continuous"
     return False
 
 
@@ -47,7 +59,7 @@ def _fits_only(frame: Frame, part: Part) -> bool:
     return (frame.sense in _CLOSURE_SENSES or frame.sense in _LIFT_SENSES) and part.geometry.open_value is not None
 
 
-_SPECIFIC_SENSES = _SLIDE_SENSES | _TURN_SENSES
+_SPECIFIC_SENSES = _SLIDE_SENSES | _TURN_SENSES | {VerbSense.PRESS, VerbSense.TOGGLE, VerbSense.SPIN}
 
 
 def _described(frame: Frame, mention: Mention) -> bool:
@@ -56,7 +68,7 @@ def _described(frame: Frame, mention: Mention) -> bool:
     flux capacitor" says nothing a part could be chosen by: refused."""
     motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
     return bool(mention.sides or mention.size or mention.ordinal is not None or motion != "any" or frame.sense in _SPECIFIC_SENSES
-                or mention.head in GENERIC_PART_NOUNS)
+                or mention.head in GENERIC_PART_NOUNS or set(mention.modifiers) & SHAPE_WORDS or mention.relation is not None)
 
 
 def _unknown(mention: Mention) -> bool:
@@ -69,15 +81,21 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     """The one movable part a name we do not know can mean: the only movable part of an object the name is tied to
     ("the stapler's magazine"), or, when the name is all the clause says moves, the only part the verb fits, placed by
     the mention's own words ("the upper hatch"). [] when it cannot be told that way (the caller then refuses)."""
-    if not _unknown(mention) or builder.refs.ground(mention).parts:
-        return []
+    generic = mention.head in GENERIC_PART_NOUNS  # "the thing at the top": the verb may say which of the parts there
+    side_only = mention.anaphor and mention.words.split()[-1:] != ["one"] and bool(mention.sides) and builder.refs.last_kind is None
+    if side_only:  # "close the top" with nothing named before: the part there that the verb fits ("the lid")
+        mention = replace(mention, anaphor=False)
+    elif not _unknown(mention) or builder.refs.ground(mention).parts:
+        return []  # a generic name placed ("the top part") is grounding's, and only its ambiguity comes here
     category = builder.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
     tied = mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)
     if tied and len(builder.parts) == 1:
-        fitting = [p for p in builder.parts if _fits_only(frame, p)]
+        fitting = [p for p in builder.parts if _fits_only(frame, p) or _fits(frame, mention, p)]
         how = "the only movable part"
     elif len(frame.themes) == 1 and not frame.instruments and _described(frame, mention):
-        fitting = [p for p in builder.parts if _fits(frame, p)]
+        fitting = [p for p in builder.parts if _fits(frame, mention, p)]
+        if generic and len(fitting) == len(builder.parts):
+            return []  # the verb fits every part: the words' place alone picks (grounding)
         if mention.sides or mention.size or mention.ordinal is not None:
             fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())
         how = f"the only movable part that can {frame.verb or (frame.sense.value if frame.sense else 'move')}"
@@ -87,6 +105,6 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     if len(fitting) != 1:
         return []
     part = fitting[0]
-    unknown = "" if mention.head in GENERIC_PART_NOUNS else " (a name the agent does not know)"
+    unknown = "" if generic or side_only else " (a name the agent does not know)"
     builder.notes.append(f"read '{mention.words}'{unknown} as {part.describe(builder.asset)}, {how}")
     return [part]

@@ -6,6 +6,7 @@ instead of refusing the whole prompt; a phrase that looks like a part ("the spou
 from __future__ import annotations
 
 from app.engine.errors import GroundingError
+from app.engine.lexicon.kinds import PartKind
 from app.engine.offline.reading.mentions import Mention
 
 
@@ -18,6 +19,8 @@ def stray(mention: Mention, error: GroundingError, mentions: tuple[Mention, ...]
         return False
     if _landmark(mention, mentions):
         return True
+    if mention.kind is PartKind.BODY and _adjunct(mention, mentions, text):
+        return True  # "lift the pitcher off its motor base": the body, where it sits, never a part that moves
     if mention.kind is not None:
         return False
     if _adjunct(mention, mentions, text):

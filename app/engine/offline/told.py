@@ -157,7 +157,8 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
     out: list[Frame] = []
     frames = list(frames)
     for index, frame in enumerate(frames):
-        told = frame.codes and frame.verb is None and frame.stative and frame.themes and all(m.kind is PartKind.CODE for m in frame.themes)
+        told = frame.codes and frame.verb is None and ((frame.stative and frame.themes and all(m.kind is PartKind.CODE for m in frame.themes)) or (
+            not frame.themes and bool(set(frame.text.split()) & _CODE_WORDS)))  # "my PIN's 1904"
         after = frames[index + 1] if index + 1 < len(frames) else None
         if told and after is not None and _enters_code(after):  # "the code is 2 5 8, punch it in": the next clause enters it
             frames[index + 1] = replace(after, codes=frame.codes, themes=tuple(m for m in after.themes if m.kind is PartKind.BUTTON),
@@ -167,7 +168,7 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
             continue  # "only after the code is complete", "once the code has been entered": the code entered before, not a step
         told = told or (frame.codes and frame.link is Link.MEANS and bool(out) and out[-1].sense is VerbSense.OPEN)  # "open it by entering 1-5-9"
         if told and out and out[-1].sense in (VerbSense.LOCK, VerbSense.UNLATCH, VerbSense.OPEN) and out[-1].themes and all(
-                m.is_object for m in out[-1].themes):
+                m.is_object or m.pronoun for m in out[-1].themes):  # "unlock it: my PIN is 9512"
             entered = replace(frame, verb="enter", sense=VerbSense.PRESS, themes=(), stative=False, conjoined=False)
             if out[-1].sense is VerbSense.LOCK:
                 out.append(replace(entered, link=Link.MEANS, marker="by"))  # shut first, then the code locks it
@@ -176,6 +177,9 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
             continue
         out.append(frame)
     return out
+
+
+_CODE_WORDS = frozenset(w for w in info(PartKind.CODE).words if " " not in w)
 
 
 def _code_said(frame: Frame) -> bool:

@@ -1481,6 +1481,16 @@ ROWS: list[Row] = [
       order=(("joint_0", "joint_1"),)),  # r48g_011 ("manner" was refused as a missing part)
     R("refrigerator_11178", "Open the hatch.", refuse=True),  # two doors fit: no guess
     R("extra/microwave_7128", "Turn the thermostat.", refuse=True),  # two knobs fit
+    # --- round 51 (blind: everyday names for parts, codes said in sentences) ---
+    R("switch_100952", "Flip the paddle and then flip it back.", joints={"joint_0": E(moves=True)}),  # r51h_025
+    R("dishwasher_12553", "Press the little push-pad above the door, on the right.", joints={"joint_1": E(moves=True), "joint_0": E(still=True)}),  # r51h_046
+    R("toaster_103483", "Press the toast plunger down and let it pop back up.", joints={"joint_0": E(peak="upper")}),  # r51h_027
+    R("window_103135", "Push the hinged glass out as far as it goes.", joints={"joint_0": E(end="upper")}),  # r51h_038
+    R("extra/box_100214", "Close the top, then flip the left clasp, then the right one.", joints={"joint_0": E(end="lower"), "joint_1": E(moves=True), "joint_2": E(moves=True)},
+      order=(("joint_0", "joint_1"), ("joint_1", "joint_2"))),  # r51h_049
+    R("washing_machine_103508", "Twist the small knob.", refuse=True),  # r51g_051: two small knobs alike
+    R("safe_101564", "My PIN's 1904. Tap it in and pull the safe open.", joints={"joint_0": E(peak=0.004), "joint_8": E(peak=0.004), "joint_10": E(peak=0.004), "joint_5": E(peak=0.004), "joint_13": E(end="upper")}, order=(("joint_5", "joint_13"),)),  # r51g_036
+    R("safe_101564", "Unlock it: my PIN is 9512. Then swing the door open.", joints={"joint_8": E(peak=0.004), "joint_4": E(peak=0.004), "joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_13": E(end="upper")}, order=(("joint_1", "joint_13"),)),  # r51h_004
 ]
 
 
