@@ -94,8 +94,6 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
         how = "the only movable part"
     elif len(frame.themes) == 1 and not frame.instruments and _described(frame, mention):
         fitting = [p for p in builder.parts if _fits(frame, mention, p)]
-        if generic and len(fitting) == len(builder.parts):
-            return []  # the verb fits every part: the words' place alone picks (grounding)
         if mention.sides or mention.size or mention.ordinal is not None:
             fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())
         how = f"the only movable part that can {frame.verb or (frame.sense.value if frame.sense else 'move')}"
