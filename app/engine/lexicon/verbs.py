@@ -277,11 +277,11 @@ _VERBS: tuple[VerbInfo, ...] = (
 VERBS: Mapping[str, VerbInfo] = MappingProxyType({v.lemma: v for v in _VERBS})
 
 GENERIC = VerbInfo("generic", S.MOVE, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, up=S.RAISE, down=S.LOWER, back=S.OPEN,
-                                       **{"in": S.PUSH_IN}, on=S.SWITCH_ON, off=S.SWITCH_OFF, over=S.TOGGLE))
+                                       **{"in": S.PUSH_IN}, on=S.SWITCH_ON, off=S.SWITCH_OFF, over=S.TOGGLE, into_place=S.CLOSE))
 """What an imperative verb we do not know does ("jiggle the lid open"), read from its particle; the
 explanation warns that the verb was guessed."""
 
-PARTICLES = frozenset({"out", "in", "open", "shut", "closed", "up", "down", "back", "away", "off", "on", "over", "around", "round", "go", "forward"})
+PARTICLES = frozenset({"out", "in", "open", "shut", "closed", "up", "down", "back", "away", "off", "on", "over", "around", "round", "go", "forward", "into_place"})
 """Words that may follow a verb and change its sense (``VerbInfo.particles``)."""
 
 
@@ -297,7 +297,7 @@ VERBLESS_SENSES: Mapping[str, VerbSense] = MappingProxyType({
 WISHED_SENSES: Mapping[str, VerbSense] = MappingProxyType({**VERBLESS_SENSES, "opened": VerbSense.OPEN, "in": VerbSense.PUSH_IN,
                                                           "covered": VerbSense.CLOSE, "uncovered": VerbSense.OPEN})
 """What a wish with no verb asks by the state it names ("I need the rack out", "the lid has to be shut")."""
-STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out"})
+STATE_PARTICLES = frozenset({"open", "shut", "closed", "up", "down", "in", "out", "into_place"})
 """Particles that name where a part ends ("shove it back in", "swing it shut")."""
 
 

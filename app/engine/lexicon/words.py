@@ -182,7 +182,7 @@ MULTIWORD: tuple[str, ...] = (
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
     "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
-    "on top of", "real quick", "real fast", "real slow", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
+    "on top of", "real quick", "real fast", "real slow", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",

@@ -74,6 +74,8 @@ def _function_control(builder: Builder, frame: Frame) -> list[Part]:
 def _openables(builder: Builder, frame: Frame) -> list[Part]:
     """"Open the cabinet": its doors (all of one size class), else its lids, drawers, caps."""
     found = openable(builder.parts)
+    if frame.sense in (VerbSense.PULL_OUT, VerbSense.PUSH_IN):  # "pull the thing at the top out": what slides, not a door there
+        found = [p for p in found if p.geometry.type == "prismatic"] or found
     if not found:
         caps = [p for p in builder.parts if p.kind in (PartKind.CAP, PartKind.LID) and p.geometry.open_value is None]
         return caps[:1]
