@@ -68,7 +68,11 @@ def means_on_goal(builder: Builder, act: Act) -> Act:
     if means is not None and means.verb == "use" and goal.themes and goal.themes[0].is_object and builder.is_object_motion(goal):
         builder.notes.append(f"read '{means.text}' as how the whole {builder.asset.name} is held")  # "use it to lift the bucket 30 cm"
         return replace(act, means=None)
-    if means is None or builder.refs.last or not goal.themes or not means.themes or not all(m.pronoun for m in means.themes):
+    if means is None or builder.refs.last or not goal.themes or not means.themes:
+        return act
+    whole = all(m.is_object for m in means.themes) and all(m.pronoun for m in goal.themes) and means.quantities.amount is not None and (
+        means.sense is VerbSense.TURN and goal.sense in (VerbSense.OPEN, VerbSense.CLOSE))
+    if not whole and not all(m.pronoun for m in means.themes):  # "give the bottle a quarter turn to loosen it": the same, said of the object
         return act
     q, how = goal.quantities, means.quantities
     quantities = replace(q, amount=q.amount or how.amount, sense=q.sense or how.sense, direction=q.direction or how.direction)
