@@ -98,10 +98,10 @@ class KindInfo:
 REGISTRY: dict[PartKind, KindInfo] = {
     info.kind: info
     for info in (
-        KindInfo(PartKind.DOOR, ("door", "gate", "rotation door", "hatch door", "oven door", "front door"),
+        KindInfo(PartKind.DOOR, ("door", "gate", "hatch", "rotation door", "hatch door", "oven door", "front door"),
                  labels=("door", "rotation_door"), related=(PartKind.LID, PartKind.FLAP, PartKind.WINDOW, PartKind.SCREEN),
                  hinged=True, openable=True, affordances=("open", "close")),
-        KindInfo(PartKind.LID, ("lid", "cover", "hatch", "top lid", "rotation lid", "top cover"),
+        KindInfo(PartKind.LID, ("lid", "cover", "top lid", "rotation lid", "top cover"),
                  labels=("lid", "rotation_lid", "pump_lid"), related=(PartKind.DOOR, PartKind.FLAP, PartKind.SEAT, PartKind.SCREEN, PartKind.WINDOW, PartKind.CAP),
                  hinged=True, openable=True, lid_like=True, affordances=("open", "close", "lift")),
         KindInfo(PartKind.SEAT, ("seat", "toilet seat", "ring"), labels=("seat",), related=(PartKind.LID,),

@@ -1493,6 +1493,7 @@ ROWS: list[Row] = [
     R("extra/box_100214", "Snap the right-hand catch into place.", joints={"joint_2": E(end="upper"), "joint_1": E(still=True)}),  # r51h_050: "into place" is shut (had not moved, silently)
     R("storage_19179", "Pull the top drawer out, then push it back into place.", joints={"joint_1": E(peak="upper", end="lower")}),
     R("bottle_cap_3558", "Give the top of the bottle a quarter turn to loosen it.", joints={"joint_0": E(end=1.5708)}),  # r51g_001: the amount was lost (a half turn, silently)
+    R("microwave_7119", "Swing the front hatch of the microwave open.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # r51g_024: a hatch is a door or a lid
     R("storage_23472", "Pull the thing at the top all the way out.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),  # r51g_042: what slides, not the door there
     R("safe_101564", "Unlock it: my PIN is 9512. Then swing the door open.", joints={"joint_8": E(peak=0.004), "joint_4": E(peak=0.004), "joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_13": E(end="upper")}, order=(("joint_1", "joint_13"),)),  # r51h_004
 ]
