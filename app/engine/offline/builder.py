@@ -99,7 +99,7 @@ class Builder:
                     try:
                         found, notes = self.refs.resolve(mention, prefer=prefer)
                     except GroundingError as exc:
-                        if (apart := side_apart(self.refs, frame, mention, exc)) is None and not stray(mention, exc, mentions, frame.text):
+                        if (apart := side_apart(self.refs, frame, mention, exc)) is None and not stray(mention, exc, mentions, "" if frame.guessed_verb else frame.text):
                             raise
                         found, notes = apart or ([], [f"ignored the word '{mention.head}': it names no part of {self.asset.name}"])
                     self.notes.extend(notes)

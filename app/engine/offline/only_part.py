@@ -11,6 +11,7 @@ from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
 from app.engine.offline.grounding import Part, narrow
+from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
 
@@ -71,6 +72,12 @@ def _described(frame: Frame, mention: Mention) -> bool:
                 or mention.head in GENERIC_PART_NOUNS or set(mention.modifiers) & SHAPE_WORDS or mention.relation is not None)
 
 
+def _asked(frame: Frame) -> bool:
+    """A clause that asks for a motion ("swing the hatch open"), not a purpose, a result or a state ("to let the steam out",
+    "so it's a bit past square"): only there is the one part a verb fits what the words mean."""
+    return frame.verb is not None and not frame.let and not frame.stative and frame.link in (Link.FIRST, Link.SEQUENCE, Link.PARALLEL, Link.MEANS)
+
+
 def _unknown(mention: Mention) -> bool:
     """A head noun that says no part kind ("the portal", "the panel"), not the whole object or a pronoun."""
     return mention.kind is None and mention.head not in WHOLE_WORDS and not (
@@ -92,7 +99,7 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     if tied and len(builder.parts) == 1:
         fitting = [p for p in builder.parts if _fits_only(frame, p) or _fits(frame, mention, p)]
         how = "the only movable part"
-    elif len(frame.themes) == 1 and not frame.instruments and _described(frame, mention):
+    elif len(frame.themes) == 1 and not frame.instruments and _asked(frame) and _described(frame, mention):
         fitting = [p for p in builder.parts if _fits(frame, mention, p)]
         if mention.sides or mention.size or mention.ordinal is not None:
             fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())

@@ -92,7 +92,7 @@ def yaw(builder: Builder) -> float:
 def is_code(builder: Builder, frame: Frame) -> bool:
     """Keys named by digit or by place only ("press 1, 2, 3", "enter bottom-left then top-right"), on an asset with a keypad."""
     places = [c for c in frame.codes if c[0] == "place"]
-    if any(m.kind is PartKind.BUTTON and (m.plural or m.collective) for m in frame.themes) and len(frame.codes) == len(places):
+    if any(m.kind is PartKind.BUTTON and (m.plural or m.collective) for m in frame.themes) and len(frame.codes) - len(places) < 2:
         return False  # "press the three keys of the top row": keys named as a group ("the keys 1, 2 and 3": a code)
     named = [m for m in frame.themes if not m.is_object and m.kind not in (PartKind.BUTTON, PartKind.CODE) and not place_words(m.words)
              and m.words != "one"]  # "one after another"

@@ -57,8 +57,9 @@ def _adjunct(mention: Mention, mentions: tuple[Mention, ...], text: str) -> bool
     """A name we do not know said after what the clause moves, and not joined to it ("open the bin in a hands-free manner",
     "move the whole thing 25 cm in depth"): how or where, not a second part. "the door and the hatch" is joined: a part."""
     before = [m for m in mentions if m is not mention and m.end <= mention.start and not m.pronoun]
-    if not before or not mention.words or mention.pronoun or mention.anaphor or mention.plural or mention.collective:
-        return False
+    if not before or not mention.words or mention.pronoun or mention.anaphor or mention.plural or mention.collective or (
+            mention.sides or mention.ordinal is not None or mention.size or mention.relation is not None):
+        return False  # "the third key down in the left-hand column": a place we could not read, not a word to drop
     said, last = f" {text} ", before[-1].words
     at, start = said.find(f" {last} "), said.find(f" {mention.words} ")
     if not last or at < 0 or start < at:

@@ -1494,6 +1494,10 @@ ROWS: list[Row] = [
     R("storage_19179", "Pull the top drawer out, then push it back into place.", joints={"joint_1": E(peak="upper", end="lower")}),
     R("bottle_cap_3558", "Give the top of the bottle a quarter turn to loosen it.", joints={"joint_0": E(end=1.5708)}),  # r51g_001: the amount was lost (a half turn, silently)
     R("microwave_7119", "Swing the front hatch of the microwave open.", joints={"joint_0": E(end="upper"), "joint_1": E(still=True)}),  # r51g_024: a hatch is a door or a lid
+    R("safe_101564", "pls hit the three top row keys going left to right", joints={"joint_0": E(moves=True), "joint_1": E(moves=True), "joint_2": E(moves=True), "joint_13": E(still=True)},
+      order=(("joint_0", "joint_1"), ("joint_1", "joint_2"))),  # r47d_025: "three" counts the keys, no code (a regression the sweep caught)
+    R("extra/kitchen_pot_100015", "To let the steam out, raise the lid a little, and then set it back down.", joints={"joint_0": E(moves=True)}),  # r47c_101: no name is read by elimination in a purpose
+    R("safe_101564", "Actuate the third key down in the right-hand column of the keypad.", refuse=True),  # r8_044: a place not read is not a word to drop
     R("storage_23472", "Pull the thing at the top all the way out.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),  # r51g_042: what slides, not the door there
     R("safe_101564", "Unlock it: my PIN is 9512. Then swing the door open.", joints={"joint_8": E(peak=0.004), "joint_4": E(peak=0.004), "joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_13": E(end="upper")}, order=(("joint_1", "joint_13"),)),  # r51h_004
 ]
