@@ -1,5 +1,5 @@
 """A part name the lexicon does not know, read by elimination: the one movable part that can do what the verb
-says ("pull out the magazine" on a stapler, "swing open the hatch" on a bin whose only hinged closure is its lid).
+says ("pull out the magazine" on a stapler, "press the toast plunger down" on a toaster whose one pressed part is its slider).
 Always with a note naming the part chosen and why; never a bare guess: two parts that fit is a refusal."""
 
 from __future__ import annotations
