@@ -75,6 +75,10 @@ CASES: list[tuple[str, str]] = [
     ("extra/storage_25308", "Pull the left drawer fully open, then push it back until it's about halfway."),
     ("toaster_103483", "Push the lever down to start toasting; when the toast is done the lever springs back up."),
     ("toilet_102622", "I need to use the toilet."),
+    ("toaster_103483", "Press the toast plunger down and let it pop back up."),  # a name read by elimination
+    ("trash_can_102181", "The bin is to be opened in a hands-free manner."),  # a word after what moves is no part
+    ("safe_101564", "um the code is two five eight punch it in on the keypad"),  # a code told, then entered
+    ("extra/box_100214", "Snap the right-hand catch into place."),  # "into place" is the closed end
 ]
 STAGES = ("tokens", "clauses", "frames", "acts", "contract")
 
