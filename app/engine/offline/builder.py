@@ -26,7 +26,7 @@ from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, 
 from app.engine.offline.grounding import Part, movable_parts, openable
 from app.engine.offline.moves import Move
 from app.engine.offline.object_parts import object_parts, starts
-from app.engine.offline.only_part import only_part
+from app.engine.offline.only_part import only_part, sole_fit
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.codes import CODE_VERBS
 from app.engine.offline.reading.frames import Frame
@@ -219,10 +219,10 @@ class Builder:
             controls = self._instrument_controls(goal)
         effects_parts, effect_words = restated_means(self, act, controls, self.ground(goal, sense, goal.themes, prefer=prefer))
         if not effects_parts and not goal.themes and not controls:
-            implied = self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else []
-            # "flush!", "put the lid up, then flush": the part the verb works, not "it"
+            implied = self._object_parts(goal, sense) if goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].implies else []  # "flush!"
             effects_parts = implied or self.refs.pronoun(release=sense is VerbSense.RELEASE)
             effect_words = ["it"] * len(effects_parts)
+        effects_parts, effect_words = (effects_parts, effect_words) if effects_parts or controls or goal.themes else sole_fit(self, goal)
         if not effects_parts and not controls:
             raise self.refs.refuse(f"nothing in '{goal.text}' names a part to move")
         if sense is VerbSense.RELEASE and effects_parts and all(mech.is_control(p) for p in effects_parts) and not any(

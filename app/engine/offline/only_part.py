@@ -22,6 +22,7 @@ _CLOSURE_SENSES = frozenset({VerbSense.OPEN, VerbSense.CLOSE, VerbSense.RECLINE}
 _SLIDE_SENSES = frozenset({VerbSense.PULL_OUT, VerbSense.PUSH_IN})
 _TURN_SENSES = frozenset({VerbSense.TURN})
 _LIFT_SENSES = frozenset({VerbSense.RAISE, VerbSense.LOWER})
+_NOTHING_SAID = Mention(head="")
 
 
 def _fits(frame: Frame, mention: Mention, part: Part) -> bool:
@@ -113,3 +114,16 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     unknown = "" if generic or side_only else " (a name the agent does not know)"
     builder.notes.append(f"read '{mention.words}'{unknown} as {part.describe(builder.asset)}, {how}")
     return [part]
+
+
+def sole_fit(builder: Builder, frame: Frame) -> tuple[list[Part], list[str]]:
+    """A clause that asks for a motion of one kind and names nothing the reader could take ("spin the round thing on the
+    front", "flip the top all the way open"): the one movable part the verb fits, with a note; none or several: ([], [])."""
+    if not _asked(frame) or frame.sense not in _SPECIFIC_SENSES | _CLOSURE_SENSES | _LIFT_SENSES:
+        return [], []
+    fitting = [p for p in builder.parts if _fits(frame, _NOTHING_SAID, p)]
+    if len(fitting) != 1:
+        return [], []
+    builder.notes.append(f"nothing in '{frame.text}' names a part the agent knows: read as {fitting[0].describe(builder.asset)}, "
+                         f"the only movable part that can {frame.verb}")
+    return fitting, [frame.text]
