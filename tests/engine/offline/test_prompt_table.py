@@ -1498,6 +1498,10 @@ ROWS: list[Row] = [
       order=(("joint_0", "joint_1"), ("joint_1", "joint_2"))),  # r47d_025: "three" counts the keys, no code (a regression the sweep caught)
     R("extra/kitchen_pot_100015", "To let the steam out, raise the lid a little, and then set it back down.", joints={"joint_0": E(moves=True)}),  # r47c_101: no name is read by elimination in a purpose
     R("safe_101564", "Actuate the third key down in the right-hand column of the keypad.", refuse=True),  # r8_044: a place not read is not a word to drop
+    R("box_102456", "Flip the top all the way open.", joints={"joint_0": E(end="upper")}),  # r51g_006: nothing read as a part; the one lid
+    R("extra/bucket_100432", "Pull the wire loop up so it stands straight.", joints={"joint_0": E(end=0.4778)}),  # r51h_052
+    R("kitchen_pot_100038", "Lift the pot's top off, hold it up for two seconds, then set it back down.", joints={"joint_0": E(peak="upper", end="lower")}),  # r51g_020
+    R("stapler_103099", "Spin the whirligig.", refuse=True),  # nothing the verb fits: still refused
     R("storage_23472", "Pull the thing at the top all the way out.", joints={"joint_1": E(end="upper"), "joint_0": E(still=True)}),  # r51g_042: what slides, not the door there
     R("safe_101564", "Unlock it: my PIN is 9512. Then swing the door open.", joints={"joint_8": E(peak=0.004), "joint_4": E(peak=0.004), "joint_0": E(peak=0.004), "joint_1": E(peak=0.004), "joint_13": E(end="upper")}, order=(("joint_1", "joint_13"),)),  # r51h_004
 ]
