@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
+from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, NEGATIONS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
 from app.engine.offline.grounding import Part, narrow
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
@@ -119,8 +119,9 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
 def sole_fit(builder: Builder, frame: Frame) -> tuple[list[Part], list[str]]:
     """A clause that asks for a motion of one kind and names nothing the reader could take ("spin the round thing on the
     front", "flip the top all the way open"): the one movable part the verb fits, with a note; none or several: ([], [])."""
-    if not _asked(frame) or frame.sense not in _SPECIFIC_SENSES | _CLOSURE_SENSES | _LIFT_SENSES:
-        return [], []
+    words = frame.text.split()
+    if not _asked(frame) or frame.sense not in _SPECIFIC_SENSES | _CLOSURE_SENSES | _LIFT_SENSES or len(words) < 3 or words[0] in NEGATIONS | {"nothing"}:
+        return [], []  # "..., nothing opens or closes": a bare verb, or what stays still, names no part to guess
     fitting = [p for p in builder.parts if _fits(frame, _NOTHING_SAID, p)]
     if len(fitting) != 1:
         return [], []
