@@ -9,6 +9,7 @@ and the vertex checks (a texture is not decoded for a mesh that is refused anywa
 from __future__ import annotations
 
 import io
+import threading
 from collections import OrderedDict
 from typing import TYPE_CHECKING, Protocol
 
@@ -73,6 +74,7 @@ SOURCE_KEY = "artimo_source_sha256"
 
 _ENCODED: OrderedDict[tuple[str, str], bytes] = OrderedDict()
 _ENCODED_MAX = 32
+_ENCODED_LOCK = threading.Lock()
 
 
 def png(image: Image.Image) -> bytes:
@@ -82,16 +84,19 @@ def png(image: Image.Image) -> bytes:
     mode = "RGBA" if image.mode in ("RGBA", "LA", "P") else "RGB"
     source = image.info.get(SOURCE_KEY)
     key = (source, mode) if isinstance(source, str) else None
-    if key is not None and key in _ENCODED:
-        _ENCODED.move_to_end(key)
-        return _ENCODED[key]
+    if key is not None:
+        with _ENCODED_LOCK:  # the service may load assets on several threads
+            if key in _ENCODED:
+                _ENCODED.move_to_end(key)
+                return _ENCODED[key]
     buffer = io.BytesIO()
     image.convert(mode).save(buffer, format="PNG", optimize=False, compress_level=6)
     data = buffer.getvalue()
     if key is not None:
-        _ENCODED[key] = data
-        while len(_ENCODED) > _ENCODED_MAX:
-            _ENCODED.popitem(last=False)
+        with _ENCODED_LOCK:
+            _ENCODED[key] = data
+            while len(_ENCODED) > _ENCODED_MAX:
+                _ENCODED.popitem(last=False)
     return data
 
 
