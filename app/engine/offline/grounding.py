@@ -28,8 +28,9 @@ QUALIFIER_TOLERANCE = 0.25
 """Candidates within this fraction of the candidates' spread of the extreme value all qualify."""
 MIN_QUALIFIER_TOLERANCE_M = 1e-3
 SIZE_TOLERANCE = 0.15
-SIZE_TIE = 0.01
 """Relative size difference within which parts count as the same size ("both small knobs")."""
+SIZE_TIE = 0.01
+"""Within this relative difference "the small knob" cannot pick one of two: a tie (refused with both named)."""
 SALIENT_RATIO = 1.5
 """A part this much larger than every other candidate is what a bare singular mention means."""
 LID_MAX_VERTICAL_AXIS = 0.7

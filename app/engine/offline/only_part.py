@@ -32,7 +32,7 @@ def _fits(frame: Frame, mention: Mention, part: Part) -> bool:
     sense = frame.sense
     control = part.kind is not None and info(part.kind).control
     kind = part.geometry.type
-    motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
+    motion = _motion(frame)
     words = set(mention.modifiers)
     hinge, slide = motion == "hinge" or bool(words & HINGE_WORDS), motion == "slide" or bool(words & SLIDE_WORDS)
     if (hinge and kind == "prismatic") or (slide and kind != "prismatic"):
@@ -62,14 +62,19 @@ def _fits_only(frame: Frame, part: Part) -> bool:
 
 
 _SPECIFIC_SENSES = _SLIDE_SENSES | _TURN_SENSES | {VerbSense.PRESS, VerbSense.TOGGLE, VerbSense.SPIN}
+_ONE_MOTION_SENSES = _SPECIFIC_SENSES | _CLOSURE_SENSES | _LIFT_SENSES
+
+
+def _motion(frame: Frame) -> str:
+    """The verb's own motion ("swing": hinge, "slide": slide), "any" for other or unknown verbs."""
+    return VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
 
 
 def _described(frame: Frame, mention: Mention) -> bool:
     """Whether the words say more than "open the X": a place or size ("the little flap at the bottom"), a verb of one
     motion ("swing", "slide", "twist", "pull out"), or a word that names no kind on purpose ("the panel"). A bare "open the
     flux capacitor" says nothing a part could be chosen by: refused."""
-    motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
-    return bool(mention.sides or mention.size or mention.ordinal is not None or motion != "any" or frame.sense in _SPECIFIC_SENSES
+    return bool(mention.sides or mention.size or mention.ordinal is not None or _motion(frame) != "any" or frame.sense in _SPECIFIC_SENSES
                 or mention.head in GENERIC_PART_NOUNS or set(mention.modifiers) & SHAPE_WORDS or mention.relation is not None)
 
 
@@ -93,21 +98,22 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     side_only = mention.anaphor and mention.words.split()[-1:] != ["one"] and bool(mention.sides) and builder.refs.last_kind is None
     if side_only:  # "close the top" with nothing named before: the part there that the verb fits ("the lid")
         mention = replace(mention, anaphor=False)
-    elif not _unknown(mention) or builder.refs.ground(mention).parts:
-        return []  # a generic name placed ("the top part") is grounding's, and only its ambiguity comes here
+    elif not _unknown(mention):
+        return []
     category = builder.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
-    tied = mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)
-    if tied and len(builder.parts) == 1:
+    tied = (mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)) and len(builder.parts) == 1
+    chosen = len(frame.themes) == 1 and not frame.instruments and _asked(frame) and _described(frame, mention)
+    if not (tied or chosen) or (not side_only and builder.refs.ground(mention).parts):
+        return []  # a generic name placed ("the top part") is grounding's, and only its ambiguity comes here
+    if tied:
         fitting = [p for p in builder.parts if _fits_only(frame, p) or _fits(frame, mention, p)]
         how = "the only movable part"
-    elif len(frame.themes) == 1 and not frame.instruments and _asked(frame) and _described(frame, mention):
+    else:
         fitting = [p for p in builder.parts if _fits(frame, mention, p)]
         if mention.sides or mention.size or mention.ordinal is not None:
             fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())
         how = f"the only movable part that can {frame.verb or (frame.sense.value if frame.sense else 'move')}"
         how += " there" if mention.sides else ""
-    else:
-        return []
     if len(fitting) != 1:
         return []
     part = fitting[0]
@@ -120,7 +126,7 @@ def sole_fit(builder: Builder, frame: Frame) -> tuple[list[Part], list[str]]:
     """A clause that asks for a motion of one kind and names nothing the reader could take ("spin the round thing on the
     front", "flip the top all the way open"): the one movable part the verb fits, with a note; none or several: ([], [])."""
     words = frame.text.split()
-    if not _asked(frame) or frame.sense not in _SPECIFIC_SENSES | _CLOSURE_SENSES | _LIFT_SENSES or len(words) < 3 or words[0] in NEGATIONS | {"nothing"}:
+    if not _asked(frame) or frame.sense not in _ONE_MOTION_SENSES or len(words) < 3 or words[0] in NEGATIONS or words[0] == "nothing":
         return [], []  # "..., nothing opens or closes": a bare verb, or what stays still, names no part to guess
     fitting = [p for p in builder.parts if _fits(frame, _NOTHING_SAID, p)]
     if len(fitting) != 1:

@@ -182,15 +182,18 @@ def told_codes(frames: list[Frame]) -> list[Frame]:
 _CODE_WORDS = frozenset(w for w in info(PartKind.CODE).words if " " not in w)
 
 
+def _on_code(frame: Frame) -> bool:
+    """Every theme is "it", the code or the keypad."""
+    return bool(frame.themes) and all(m.pronoun or m.kind in (PartKind.CODE, PartKind.BUTTON) for m in frame.themes)
+
+
 def _code_said(frame: Frame) -> bool:
-    return bool(frame.themes) and any(m.kind is PartKind.CODE for m in frame.themes) and all(
-        m.pronoun or m.kind in (PartKind.CODE, PartKind.BUTTON) for m in frame.themes)
+    return _on_code(frame) and any(m.kind is PartKind.CODE for m in frame.themes)
 
 
 def _enters_code(frame: Frame) -> bool:
     """A code verb on "it", "the code" or the keypad with no digits of its own ("type it in on the keypad")."""
-    return frame.verb in CODE_VERBS and not frame.codes and bool(frame.themes) and all(
-        m.pronoun or m.kind in (PartKind.CODE, PartKind.BUTTON) for m in frame.themes) and not any(
+    return frame.verb in CODE_VERBS and not frame.codes and _on_code(frame) and not any(
         m.kind is PartKind.BUTTON and (m.plural or m.sides or m.ordinal is not None) for m in frame.themes)
 
 
