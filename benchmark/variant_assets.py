@@ -17,6 +17,7 @@ import sys
 import tempfile
 from pathlib import Path
 
+from benchmark.stacks import is_stack, write_stack
 from benchmark.variants import TRANSFORMS, make_variant
 
 
@@ -26,7 +27,7 @@ def write_assets(manifest: dict[str, dict[str, object]], assets: Path, out: Path
     for folder, recipe in sorted(manifest.items()):
         source = assets / str(recipe["source"])
         steps = [tuple(step) for step in recipe["steps"]]  # type: ignore[attr-defined]
-        unknown = [t for step in steps for t in step if t not in TRANSFORMS]
+        unknown = [t for step in steps if not is_stack(step) for t in step if t not in TRANSFORMS]
         if unknown or not steps:
             raise ValueError(f"{folder}: unknown transforms {unknown}" if unknown else f"{folder}: no steps")
         if not (source / "mobility.urdf").is_file() and not list(source.glob("*.urdf")):
@@ -37,7 +38,10 @@ def write_assets(manifest: dict[str, dict[str, object]], assets: Path, out: Path
             for k, step in enumerate(steps):
                 last = k == len(steps) - 1
                 step_out = target if last else Path(scratch) / str(k) / source.name  # the folder's name keeps the object's kind
-                make_variant(current, step_out, step)
+                if is_stack(step):
+                    write_stack(current, step_out, step[0])
+                else:
+                    make_variant(current, step_out, step)
                 current = step_out
         written.append(target)
     return written

@@ -271,7 +271,7 @@ def _axis_rotation(axis: np.ndarray, angle: float) -> np.ndarray:
     return np.eye(3) + math.sin(angle) * k + (1 - math.cos(angle)) * (k @ k)
 
 
-def _materialize(source: Path, target: Path) -> None:
+def materialize(source: Path, target: Path) -> None:
     """The asset's other files, hard-linked where the file system allows (meshes are large)."""
     def link(src: str, dst: str) -> object:
         try:
@@ -330,5 +330,5 @@ def make_variant(source: Path, target: Path, transforms: tuple[str, ...]) -> Map
     if (source / "semantics.txt").is_file():
         lines = [" ".join([links.get(parts[0], parts[0]), *parts[1:]]) if (parts := line.split()) else line for line in _semantics(source)]
         (target / "semantics.txt").write_text("\n".join(lines) + "\n")
-    _materialize(source, target)
+    materialize(source, target)
     return mapping

@@ -42,3 +42,18 @@ def test_a_bad_manifest_is_an_error(tmp_path: Path, steps: list[list[str]], mess
 def test_a_missing_source_is_an_error(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert variant_assets.main(["--manifest", str(_manifest(tmp_path, [["mirror"]])), "--assets", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "source asset not found" in capsys.readouterr().err
+
+
+def test_a_stack_repeats_the_object_with_every_name_unique(tmp_path: Path) -> None:
+    """``stack3z``: three copies one above the other, each with its own moving parts, fixed to the first copy's root."""
+    from app.engine.asset.loader import load_asset
+    from app.engine.asset.summary import world_bounds
+
+    variant_assets.write_assets({"g/storage_19179": {"source": "partnet/storage_19179", "steps": [["stack3z"]]}}, partnet_root().parent, tmp_path)
+    source, stacked = load_asset(partnet_root() / "storage_19179"), load_asset(tmp_path / "g" / "storage_19179")
+    assert len(stacked.movable_joints) == 3 * len(source.movable_joints)
+    assert len(set(stacked.links)) == 3 * len(source.links)
+    height = lambda model: float(max(b[1][2] for b in world_bounds(model).values()) - min(b[0][2] for b in world_bounds(model).values()))  # noqa: E731
+    assert height(stacked) == pytest.approx(3 * height(source) + 2 * 0.02, rel=1e-6)
+    lines = (tmp_path / "g" / "storage_19179" / "semantics.txt").read_text().split("\n")
+    assert len([line for line in lines if line]) == 3 * len([line for line in (partnet_root() / "storage_19179" / "semantics.txt").read_text().split("\n") if line])

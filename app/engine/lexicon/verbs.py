@@ -204,7 +204,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     # whole-object motion
     VerbInfo("move", S.MOVE, _p(back=S.RETURN), object_sense=S.MOVE),
     VerbInfo("go", S.MOVE, _p(out=S.PULL_OUT, **{"in": S.PUSH_IN}, up=S.RAISE, down=S.LOWER, back=S.RETURN, open=S.OPEN, shut=S.CLOSE,
-                              closed=S.CLOSE, over=S.TOGGLE), object_sense=S.MOVE),
+                              closed=S.CLOSE, over=S.TOGGLE, round=S.SPIN, around=S.SPIN), object_sense=S.MOVE),
     VerbInfo("follow", S.MOVE, _p(down=S.LOWER, up=S.RAISE, out=S.PULL_OUT, open=S.OPEN, back=S.RETURN)),
     VerbInfo("drag", S.MOVE, object_sense=S.MOVE),
     VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),
@@ -307,3 +307,8 @@ def ends_after_back(info: VerbInfo | None, word: str) -> bool:
     if info is None or "back" not in info.particles:
         return word in STATE_PARTICLES
     return info.particles["back"] is VerbSense.RELEASE and word in ("on", "in", "into") and word in info.particles
+
+
+CHOOSING_VERBS = frozenset({"take", "pick", "choose", "use", "select", "grab"})
+"""Verbs that, with one of several like units as their only object and a step after them, only say which unit the
+steps are on ("Take the left one and swing its lever"): no step of their own."""

@@ -36,7 +36,7 @@ SPATIAL: Mapping[str, tuple[Side, bool]] = MappingProxyType({
     "backmost": (Side.BACK, True), "rearmost": (Side.BACK, True),
     "middle": (Side.MIDDLE, False), "center": (Side.MIDDLE, False), "centre": (Side.MIDDLE, False), "central": (Side.MIDDLE, False),
     "inner": (Side.INNER, False), "inside": (Side.INNER, False), "internal": (Side.INNER, False), "outer": (Side.OUTER, False),
-    "outside": (Side.OUTER, False),
+    "outside": (Side.OUTER, False), "outermost": (Side.OUTER, True), "innermost": (Side.INNER, True),
 })
 ORDINALS: Mapping[str, int] = MappingProxyType({
     "first": 1, "second": 2, "third": 3, "fourth": 4, "fifth": 5, "sixth": 6, "seventh": 7, "eighth": 8, "ninth": 9, "tenth": 10,
@@ -133,7 +133,7 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
 })
 PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
-GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half"})
+GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half", "thing"})
 """Nouns that name no kind of part: with a place or a size ("the topmost piece", "the left-hand section") any movable part there."""
 PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator",
                           "thief", "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse",
@@ -183,7 +183,7 @@ MULTIWORD: tuple[str, ...] = (
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
     "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
     "on top of", "real quick", "real fast", "real slow", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
-    "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one at a time",
+    "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one after another", "one at a time", "every other", "apart from", "except for", "aside from", "other than",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
     "a couple of seconds", "a couple of", "a few seconds", "a full second", "a whole second", "a full minute", "a whole minute", "a second and a half", "half a second", "do the same", "the same amount",
@@ -265,7 +265,7 @@ WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like", "
 """What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
 ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
-SAME_MEANING: Mapping[str, str] = MappingProxyType({"shall": "must", "shan't": "mustn't"})
+SAME_MEANING: Mapping[str, str] = MappingProxyType({"shall": "must", "shan't": "mustn't", "apart_from": "except", "except_for": "except", "aside_from": "except", "other_than": "except"})
 """Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):
 replaced without a note, as no guess is made."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})

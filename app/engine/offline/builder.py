@@ -104,6 +104,7 @@ class Builder:
                         found, notes = apart or ([], [f"ignored the word '{mention.head}': it names no part of {self.asset.name}"])
                     self.notes.extend(notes)
                 if (mention.plural or mention.collective) and len(found) > 1:
+                    found = [p for p in found if p.joint not in self.excluded] or found  # "open every drawer except the top one"
                     self.refs.group = list(found)
             for part in mech.opened_through(found, VERBS[frame.verb].sense if frame.verb is not None and frame.verb in VERBS else sense,
                                             self.parts, self.asset):
@@ -168,8 +169,7 @@ class Builder:
 
     # --- acts ----------------------------------------------------------------------
     def add(self, act: Act) -> None:
-        if act.note:
-            self.notes.append(act.note)
+        self.notes.extend([act.note] if act.note else [])
         for exclusion in act.exclusions:
             exclude(self, exclusion)
         act = means_on_goal(self, act)
@@ -202,7 +202,7 @@ class Builder:
         if goal.first is not None and act.means is None:
             seq.first_then_rest(self, act)
             return
-        if act.means is None and ((goal.in_turn is not None and (any(m.plural or m.collective for m in goal.themes) or len(goal.themes) > 1)) or seq.keys_listed(goal)):
+        if act.means is None and ((goal.in_turn is not None and (any(m.plural or m.collective for m in goal.themes) or len(goal.themes) > 1)) or seq.keys_listed(goal) or seq.alternating(goal)):
             seq.in_turn(self, act)
             return
         if act.means is not None and self._aimless(goal):

@@ -90,11 +90,13 @@ def reading_order(candidates: list[Part], obj: ObjectGeometry) -> list[Part]:
     return [p for _, p in sorted(zip(keys, candidates, strict=True), key=lambda item: item[0])]
 
 
-def _apply_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], obj: ObjectGeometry) -> list[Part]:
+def _apply_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], obj: ObjectGeometry, plural: bool = False) -> list[Part]:
     for side, extreme in sides:
         if len(candidates) < 2:
             break
-        if side in _AXIS_OF:
+        if plural and side in (Side.MIDDLE, Side.INNER, Side.OUTER) and len(candidates) > 2:
+            candidates = _in_row(reading_order(candidates, obj), side)  # "the two middle drawers", "the outer pair of doors"
+        elif side in _AXIS_OF:
             axis, largest = _AXIS_OF[side]
             candidates = _extreme(candidates, obj, axis, largest, strict=extreme)
         elif side is Side.MIDDLE:
@@ -104,6 +106,16 @@ def _apply_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], o
             distances = [float(np.linalg.norm(position(p, obj))) for p in candidates]
             candidates = [candidates[int(np.argmin(distances) if side is Side.INNER else np.argmax(distances))]]
     return candidates
+
+
+def _in_row(ordered: list[Part], side: Side) -> list[Part]:
+    """Of parts in a row: its two ends (outer), all but its ends (inner), or its middle one or two (middle)."""
+    if side is Side.OUTER:
+        return [ordered[0], ordered[-1]]
+    if side is Side.INNER:
+        return ordered[1:-1]
+    half = len(ordered) // 2
+    return ordered[half - 1:half + 1] if len(ordered) % 2 == 0 else ordered[half:half + 1]
 
 
 def _lines(candidates: list[Part], obj: ObjectGeometry, axis: int) -> list[list[Part]]:
@@ -219,7 +231,7 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
         candidates = [max(candidates, key=lambda p: p.geometry.size)]
     if mention.ordinal is not None and mention.ordinal_from is not None:
         return _ordinal_from(candidates, mention, obj)
-    candidates = _named_sides(candidates, mention.sides, asset) or _apply_sides(candidates, mention.sides, obj)
+    candidates = _named_sides(candidates, mention.sides, asset) or _apply_sides(candidates, mention.sides, obj, mention.plural or mention.collective)
     if mention.size is not None and len(candidates) > 1:
         pick = max if mention.size == "large" else min
         chosen = pick(candidates, key=lambda p: p.geometry.size)

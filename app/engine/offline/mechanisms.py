@@ -73,13 +73,20 @@ def controls_for(effect: Part, parts: list[Part], tracker: Tracker, excluded: se
     found = [p for p in parts if p.joint not in excluded and p.joint != effect.joint and (holds(p) or (popped and shut)) and drives(p, effect, parts, tracker)]
     if popped and shut and len(found) > 1:
         return []
-    return found[:1]
+    return _same_body_first(effect, found, tracker.asset)[:1]
 
 
 def effects_of(control: Part, parts: list[Part], tracker: Tracker, excluded: set[str]) -> list[Part]:
     """What working ``control`` opens on its own (the lid a pedal lifts)."""
     candidates = [p for p in openable(parts) if p.joint not in excluded and drives(control, p, parts, tracker)]
-    return candidates[:1]
+    return _same_body_first(control, candidates, tracker.asset)[:1]
+
+
+def _same_body_first(part: Part, others: list[Part], asset: ArticulatedAsset) -> list[Part]:
+    """``others`` with those hung from the same body as ``part`` first: of two pedal bins side by side, a pedal lifts
+    its own bin's lid."""
+    body = asset.joints[part.joint].parent
+    return sorted(others, key=lambda p: asset.joints[p.joint].parent != body)
 
 
 def holds(control: Part) -> bool:

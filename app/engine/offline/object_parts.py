@@ -15,6 +15,7 @@ from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.holders import side_of_object
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import tie_break
+from app.engine.offline.units import in_unit, like_units
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -86,11 +87,17 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
     told = side_of_object(frame.text.split())  # "open the left side of the fridge"
     sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ()) or ((told,) if told else ()) or (
         builder.refs.scene if any(m.pronoun for m in frame.themes) else ())  # "the casserole is in the bottom oven - open it up"
-    if sides and len(group) > 1:  # "open the lower oven": the door on that side
-        placed, _ = narrow(Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())
+    placed = group
+    if sides and len(group) > 1:  # "open the lower oven": the door on that side (the doors of that one of two ovens stacked)
+        placed = in_unit(sides, group, builder.parts, builder.asset, builder.tracker.obj) or narrow(
+            Mention(head="part", kind=first_kind, sides=sides), group, builder.asset, builder.tracker.obj, [], set())[0]
         builder.refs.scene = builder.refs.scene or sides  # "open the top oven and get that rack out": that oven's rack
         if len(placed) == 1:
             return placed
+    if (units := like_units(group, builder.asset)) > 1 and len(placed) == len(group):
+        raise builder.refs.refuse(f"'{frame.text}': {builder.asset.name} is {units} like units side by side or stacked; say which one "
+                                  "(the left one, the upper one, ...)", group)
+    group = placed or group
     largest = group[0].geometry.size
     same = [p for p in group if p.geometry.size >= largest / 1.5]
     if len(same) == 1:
@@ -111,6 +118,8 @@ def _one_implied(builder: Builder, frame: Frame, found: list[Part]) -> Part:
     nothing to tell them apart, a refusal naming them (never the URDF's first)."""
     kind = found[0].kind
     words = kind.value if kind is not None else "part"
+    if len(unit := in_unit(builder.refs.scene, found, builder.parts, builder.asset, builder.tracker.obj)) == 1:
+        return unit[0]  # "flush the toilet on the left" of two toilets side by side: that toilet's button
     picked = tie_break(Mention(head=words, kind=kind), kind, found, builder.tracker.obj, builder.asset)
     if picked is None:
         raise builder.refs.refuse(f"'{frame.text}' could work {len(found)} {words}s", found)

@@ -7,6 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import TYPE_CHECKING
 
+from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, NEGATIONS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
@@ -103,7 +104,7 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     category = builder.tracker.obj.category or ""  # "the staple magazine": tied to a stapler by its own word too
     tied = (mention.whose is not None or any(len(m) >= 4 and category.startswith(m) for m in mention.modifiers)) and len(builder.parts) == 1
     chosen = len(frame.themes) == 1 and not frame.instruments and _asked(frame) and _described(frame, mention)
-    if not (tied or chosen) or (not side_only and builder.refs.ground(mention).parts):
+    if not (tied or chosen) or (not side_only and _grounded(builder, mention, generic)):
         return []  # a generic name placed ("the top part") is grounding's, and only its ambiguity comes here
     if tied:
         fitting = [p for p in builder.parts if _fits_only(frame, p) or _fits(frame, mention, p)]
@@ -120,6 +121,17 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
     unknown = "" if generic or side_only else " (a name the agent does not know)"
     builder.notes.append(f"read '{mention.words}'{unknown} as {part.describe(builder.asset)}, {how}")
     return [part]
+
+
+def _grounded(builder: Builder, mention: Mention, generic: bool) -> bool:
+    """Grounding names the part; a generic name placed where several parts are ("the round thing on the front": the
+    door and the knob) is left to the verb here."""
+    try:
+        return bool(builder.refs.ground(mention).parts)
+    except GroundingError as exc:
+        if generic and exc.candidates:
+            return False
+        raise
 
 
 def sole_fit(builder: Builder, frame: Frame) -> tuple[list[Part], list[str]]:

@@ -18,7 +18,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
-from app.engine.lexicon.verbs import VERBS, VerbSense
+from app.engine.lexicon.verbs import CHOOSING_VERBS, VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
@@ -28,6 +28,7 @@ from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
 from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import build_acts
+from app.engine.offline.reading.between import paused_between
 from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
@@ -36,6 +37,7 @@ from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
+from app.engine.offline.units import unit_topic
 from app.engine.offline.uses import answer_use
 from app.engine.offline.whole_object import whole_named
 
@@ -106,15 +108,25 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     builder = Builder(asset)
     frames, fetched = wanted_things(builder, told_how(told_codes(frames)))  # "I need the napkins from the drawer": open it
     builder.notes.extend(fetched)
-    acts = repeated(build_acts(frames))
+    acts, gaps = paused_between(repeated(build_acts(frames)))  # "…, pausing a moment between each digit"
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     pending = 0.0  # the wait before a clause that moved nothing goes before the next ("2 s pause while it's open, then shut")
-    for act in acts:
+    for index, act in enumerate(acts):
         act, pending, steps = replace(act, wait_before_s=act.wait_before_s + pending), 0.0, len(builder.steps)
+        part_said = any(m.kind is not None for a in acts[:index] for f in a.frames for m in (*f.themes, *f.instruments))
+        if topic := unit_topic(tuple(m for f in act.frames for m in (*f.themes, *f.instruments)), builder.parts, asset, part_said):
+            builder.refs.scene = topic  # "the microwave on the right", "the one in the middle": the unit the next parts are on
+        if index + 1 < len(acts) and act.goal.verb is None and act.goal.themes and all(m.is_object and m.plural and not m.sides for m in act.goal.themes) and not (
+                act.condition or act.goal.heading or act.wait_before_s or act.goal.stative):
+            builder.notes.append(f"read '{act.goal.text}' as a description of {asset.name}")  # "Two mixer taps side by side. Take ..."
+            continue
+        if topic and index + 1 < len(acts) and act.goal.verb in CHOOSING_VERBS and all(m.is_object or m.anaphor for m in act.goal.themes):
+            builder.notes.append(f"read '{act.goal.text}' as which one the steps after it are on")  # "Take the left one and ..."
+            continue
         try:
             if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and not act.results and (
                     act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
@@ -143,6 +155,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)
+                builder.steps[steps + 1:] = [s.model_copy(update={"wait_before_s": s.wait_before_s + gaps[index]}) for s in builder.steps[steps + 1:]] if (
+                    index in gaps) else builder.steps[steps + 1:]
                 fetched_through(builder, act, list(clauses[act.goal.clause].tokens) if act.goal.clause < len(clauses) else [], steps)
             except GroundingError as exc:
                 if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:

@@ -29,6 +29,7 @@ from app.engine.offline.lone_side import lone_compared, lone_side_refusal
 from app.engine.offline.naming import did_you_mean
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import carried_alike, tie_break, wheel_shaped
+from app.engine.offline.units import in_unit
 
 EXTREME_GAP_M = 0.01
 """A part at least this much further toward the named side than the next one is "the bottom one"."""
@@ -127,11 +128,14 @@ class Referents:
         if (wheel := wheel_shaped(mention, candidates)) is not None:
             mention = replace(mention, size="large")  # "turn the wheel handle" among a wheel and a small dial: the wheel
             notes.append(wheel)
-        if not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
+        unit_named = mention.anaphor and mention.kind is None and bool(mention.sides)  # "then the right one": another unit, not the scene's
+        if not mention.region and self.scene and len(candidates) > 1 and not unit_named and (unit := in_unit(self.scene, candidates, self.parts, self.asset, self.obj)):
+            candidates = unit  # "Left-hand fridge: open the right door": the right door of that fridge
+        elif not mention.region and self.scene and len(candidates) > 1 and not (mention.sides or mention.plural or mention.ordinal):
             mention = replace(mention, region=self.scene)  # under "top oven:", "the door" is the top oven's
             candidates = narrow(replace(mention, sides=self.scene), candidates, self.asset, self.obj, [], set())[0] or candidates
         if mention.region and len(candidates) > 1:
-            candidates = self._compartment(mention, candidates) or candidates
+            candidates = in_unit(mention.region, candidates, self.parts, self.asset, self.obj) or self._compartment(mention, candidates) or candidates
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
         if mention.possessive and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
             candidates = self._behind(hosts[0], candidates) or candidates  # "open the top door; its rack ...": the rack behind it
@@ -248,7 +252,7 @@ class Referents:
     def _host(self, mention: Mention, prefer: list[Part] | None) -> tuple[list[Part], list[str]] | None:
         """"the door latch", "the lid catch" on an asset whose latch is not a movable part: the part it
         belongs to, named by its modifier (with a note)."""
-        from app.engine.offline.reading.mentions import kind_of_word
+        from app.engine.offline.reading.part_words import kind_of_word
 
         for word in reversed(mention.modifiers):
             kind = kind_of_word(word)
@@ -266,13 +270,11 @@ class Referents:
         if all(p.kind is not None and info(p.kind).hinged for p in candidates):
             return narrow(replace(mention, sides=mention.region, region=()), candidates, self.asset, self.obj, [], set())[0]
         doors = [p for p in self.parts if p.kind is not None and info(p.kind).hinged and p not in candidates]
-        if len(doors) < 2:
-            return []
-        door_mention = Mention(head="door", kind=doors[0].kind, sides=mention.region)
-        chosen, _ = narrow(door_mention, doors, self.asset, self.obj, [], set())
-        if len(chosen) != 1:
-            return []
-        return self._behind(chosen[0], candidates)
+        door_mention = Mention(head="door", kind=doors[0].kind, sides=mention.region) if len(doors) >= 2 else None
+        chosen = narrow(door_mention, doors, self.asset, self.obj, [], set())[0] if door_mention is not None else []
+        behind = self._behind(chosen[0], candidates) if len(chosen) == 1 else []
+        # "the lever on the left toaster" of toasters side by side: the one on that side, when no door closes them in
+        return behind or narrow(replace(mention, sides=mention.region, region=()), candidates, self.asset, self.obj, [], set())[0]
 
     def _behind(self, door: Part, candidates: list[Part]) -> list[Part]:
         """The candidates ``door`` closes in (its closed leaf blocks their way out)."""

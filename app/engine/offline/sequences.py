@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 from app.engine.contracts.steps import Goal
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind, info
-from app.engine.lexicon.verbs import VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.offline.goals import goal_for
 from app.engine.offline.keypad import code_keys
 from app.engine.offline.moves import Move
@@ -129,6 +129,11 @@ def first_then_rest(builder: Builder, act: Act) -> None:
 _ORDER_KEYS = {"left_to_right": (1, False), "right_to_left": (1, True), "top_to_bottom": (2, True), "bottom_to_top": (2, False)}
 
 
+def alternating(goal: Frame) -> bool:
+    """"open every other drawer": every second one; "leave every other drawer shut": all the others (a verb that keeps)."""
+    return any(m.alternate for m in goal.themes) and not goal.stative and not (goal.verb is not None and goal.verb in VERBS and VERBS[goal.verb].stative)
+
+
 def in_turn(builder: Builder, act: Act) -> None:
     """"press the three keys of the top row, left to right", "open the drawers one by one": one step per part."""
     from app.engine.offline.grounding import position, reading_order
@@ -146,6 +151,10 @@ def in_turn(builder: Builder, act: Act) -> None:
         ordered = parts  # "key in the code: top-left button, the one right under it, then the bottom-right one"
     else:
         ordered = reading_order(parts, builder.tracker.obj)
+    if alternating(goal) and len(ordered) > 2:  # "every other drawer, starting with the bottom one"
+        builder.notes.append(f"read 'every other' as {', '.join(p.link for p in ordered[::2])}: every second one from the "
+                             f"{'first in reading order' if order in ('reading', 'said') else 'end said'}")
+        ordered = ordered[::2]
     _one_after_another(builder, act, goal, sense, ordered, [words[parts.index(part)] for part in ordered])
 
 

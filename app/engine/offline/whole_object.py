@@ -65,8 +65,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
 def is_yaw(frame: Frame) -> bool:
     """"turn it around", "rotate the box 90 degrees (on the table)", "spin the chair"."""
     info = VERBS.get(frame.verb or "")
-    if info is not None and frame.sense is VerbSense.YAW:
-        return True  # "flip it round", "yaw it"
+    if info is not None and (frame.sense is VerbSense.YAW or (frame.sense is VerbSense.SPIN and frame.particle in ("around", "round"))):
+        return True  # "flip it round", "yaw it", "make it go round"
     if info is None or info.object_sense is not VerbSense.YAW:
         return False
     words = set(frame.text.split())

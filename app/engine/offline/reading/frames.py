@@ -42,7 +42,7 @@ from app.engine.offline.reading.held_for import held_for
 from app.engine.offline.reading.light_verbs import light_verb
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
-from app.engine.offline.reading.part_words import kind_of_word
+from app.engine.offline.reading.part_words import kind_of_word, shape_adjective
 from app.engine.offline.reading.quantities import Quantities, read_quantities
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part, unknown_verb
@@ -150,7 +150,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         word = tokens[i].text
         if i in inside or (i >= verb + 9 and not any(m.end == i for m in mentions)):
             continue  # past the usual reach only right after a long part name ("snap the clasp on the front of the chest shut")
-        if word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions):
+        if (word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions)) or shape_adjective(tokens, i):
             continue  # "the third drawer down": how it is counted, not where it goes
         own = VERBS.get(tokens[verb].lemma)
         if word == "back" and [t.text for t in tokens[i + 1:i + 3]] == ["down", "on"] and own is not None and "down" in own.particles:
@@ -254,7 +254,7 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
 
 
 _SAME = frozenset({"do_the_same", "the_same_amount", "the_same_way", "as_much", "the_same_distance", "the_same_angle"})
-_IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_at_a_time": "reading", "in_turn": "reading",
+_IN_TURN = {"in_the_reverse_order": "reverse", "in_reverse_order": "reverse", "one_by_one": "reading", "one_after_the_other": "reading", "one_after_another": "reading", "one_at_a_time": "reading", "in_turn": "reading",
             "in_sequence": "reading", "in_order": "reading", "in_that_order": "reading", "in_this_order": "reading", "left_to_right": "left_to_right", "right_to_left": "right_to_left",
             "top_to_bottom": "top_to_bottom", "bottom_to_top": "bottom_to_top", "in_the_order_said": "said"}
 
@@ -379,7 +379,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
         guessed_verb=guessed, same_direction=bool(words & SAME_WAY),
         codes=codes, first=first,
-        same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=next((_IN_TURN[w] for w in words if w in _IN_TURN), None), wish=wish,
+        same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=min((_IN_TURN[w] for w in words if w in _IN_TURN), key=lambda o: (o == "reading", o), default=None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
         brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays
     )

@@ -8,10 +8,10 @@ door", "press the release button to make the door drop open"); sentences of any 
 from __future__ import annotations
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import AMOUNTS, DETERMINERS, OBJECT_NOUNS, WISHES
+from app.engine.lexicon.words import AMOUNTS, DETERMINERS, OBJECT_NOUNS, SPATIAL, WISHES
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
-from app.engine.offline.reading.word_class import can_be_verb
+from app.engine.offline.reading.word_class import can_be_verb, lemma_of
 
 _BREAKS = frozenset({",", ":"})
 _HOW = frozenset({"far", "high", "much", "wide", "long", "low"})
@@ -117,9 +117,18 @@ def _wish_then_means(sentence: list[Token]) -> list[Token] | None:
 
 
 def _place_first(sentence: list[Token]) -> list[Token] | None:
-    """"On the washing machine (,) rotate the knob furthest left": the object said first only sets the scene."""
+    """"On the washing machine (,) rotate the knob furthest left": the object said first only sets the scene. "On the
+    left-hand fridge, open the right door": one of the object's units said first is a heading ("left-hand fridge: ...")."""
+    comma = next((k for k, t in enumerate(sentence[:10]) if t.text == ","), None)
+    if comma is not None and len(sentence) > comma + 2 and sentence[0].text in ("in", "on", "among", "across", "along") and (
+            sentence[1].text in DETERMINERS and sentence[2].text in _GROUP_WORDS and sentence[3].text == "of"):
+        return sentence[comma + 1:]  # "In the column of four drawers, open the second one from the top": how they stand, no step
     if len(sentence) < 4 or sentence[0].text not in ("on", "for", "with") or sentence[1].text not in DETERMINERS:
         return None
+    comma = next((k for k, t in enumerate(sentence[:7]) if t.text == ","), None)
+    if comma is not None and any(t.text in SPATIAL or t.text.split("-")[0] in SPATIAL for t in sentence[2:comma]) and any(
+            t.lemma in OBJECT_NOUNS or t.text in OBJECT_NOUNS for t in sentence[2:comma]):  # "For the microwave on the right, .."
+        return [*sentence[2:comma], Token(":", ":", sentence[comma].start, sentence[comma].end), *sentence[comma + 1:]]
     verb = next((k for k in range(2, len(sentence) - 1) if sentence[k].lemma in VERBS and sentence[k].text not in OBJECT_NOUNS and (
         sentence[k + 1].text not in OBJECT_NOUNS)), None)  # not "washing" in "the washing machine"
     if verb is None or sentence[verb - 1].text in DETERMINERS or not any(t.text in OBJECT_NOUNS for t in sentence[2:verb]) or not all(
@@ -132,6 +141,43 @@ def _place_first(sentence: list[Token]) -> list[Token] | None:
 _EMPTY_TAILS = (("make", "it", "happen"), ("make", "that", "happen"), ("make", "this", "happen"), ("do", "it"), ("do", "that"),
                 ("handle", "it"), ("sort", "it"), ("sort", "it", "out"), ("get", "it", "done"), ("get", "that", "done"))
 """A last clause that only asks for what was said before it ("I want some toast, make it happen")."""
+
+
+_GROUP_WORDS = frozenset({"column", "row", "stack", "set", "bank", "line", "pair", "group", "tower"})
+_ORDERS = frozenset({"left_to_right", "right_to_left", "top_to_bottom", "bottom_to_top", "one_by_one", "one_after_another",
+                     "one_after_the_other", "one_at_a_time", "in_turn"})
+_ORDER_LEADS = frozenset({"going", "working", "moving", "from", "and", "in", "order", "work", "go", "move", "your", "way", "along", "across", "the",
+                          "row", "line", "of", "down", "up", "them", "each", "every"})
+
+
+def _order_first(sentence: list[Token]) -> list[Token] | None:
+    """"Going from left to right, open the four drawers one by one": the order said first goes after the step."""
+    comma = next((k for k, t in enumerate(sentence[:14]) if t.text == ","), None)
+    if comma is None or comma + 2 >= len(sentence) or not any(t.text in _ORDERS for t in sentence[:comma]) or not all(
+            t.text in _ORDERS or t.text in _ORDER_LEADS or lemma_of(t.text)[0] in OBJECT_NOUNS for t in sentence[:comma]):  # "Work your way along the row of fridges from right to left, ..."
+        return None
+    return [*sentence[comma + 1:], *(t for t in sentence[:comma] if t.text in _ORDERS)]
+
+
+_FROM_END = {"top": "top_to_bottom", "bottom": "bottom_to_top", "left": "left_to_right", "right": "right_to_left", "leftmost": "left_to_right",
+             "rightmost": "right_to_left", "topmost": "top_to_bottom", "bottommost": "bottom_to_top", "lowest": "bottom_to_top",
+             "highest": "top_to_bottom", "uppermost": "top_to_bottom"}
+_START_WORDS = frozenset({"starting", "beginning", "start", "begin"})
+_ORDER_FILLERS = frozenset({"at", "with", "from", "the", "one", "very", "and", "working", "going", "moving", "your", "way", "down", "up",
+                            "across", "along", "to", "over", "then", "on", "side", "end", "drawer", "door", "switch", "lever", "knob",
+                            "to_the_bottom", "to_the_top", "to_the_left", "to_the_right", "to_the_end"})
+
+
+def _order_after(sentence: list[Token]) -> list[Token] | None:
+    """"Open all six drawers one at a time, starting at the top and working down to the bottom": the end said to start
+    from is the order ("top_to_bottom")."""
+    at = next((k for k in range(1, len(sentence) - 2) if sentence[k].text == "," and sentence[k + 1].text in _START_WORDS), None)
+    if at is None or not all(t.text in _ORDER_FILLERS or t.text in _FROM_END or t.text in _START_WORDS for t in sentence[at + 1:]):
+        return None
+    first = next((t for t in sentence[at + 1:] if t.text in _FROM_END), None)
+    if first is None:
+        return None
+    return [*sentence[:at], Token(_FROM_END[first.text], _FROM_END[first.text], first.start, first.end)]
 
 
 def _empty_tail(sentence: list[Token]) -> list[Token] | None:
@@ -164,6 +210,6 @@ def fronted(tokens: list[Token]) -> list[Token]:
     out: list[Token] = []
     for start, end in _sentences(tokens):
         sentence = tokens[start:end]
-        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or _duration_first(sentence) or sentence
+        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _order_first(sentence) or _order_after(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or _duration_first(sentence) or sentence
         out += tokens[end:end + 1]
     return out

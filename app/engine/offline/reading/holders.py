@@ -45,7 +45,8 @@ def inside_end(tokens: list[Token], i: int) -> int:
     words = [t.text for t in tokens[i + 1:end]]
     inside = words[-1:] in (["inside"], ["in_there"]) or words[-2:] in (["in", "there"], ["in", "here"]) or (
         words[-3:-1] == ["in", "the"] and words[-1] in OBJECT_NOUNS) or (  # "peek at the roast in the oven"
-        2 <= len(words) <= 4 and words[0] in ("on", "at") and words[1] in _THINGS_OWNED and words[-1] not in OBJECT_NOUNS)  # "check on the roast"
+        2 <= len(words) <= 4 and words[0] in ("on", "at") and words[1] in _THINGS_OWNED and words[-1] not in OBJECT_NOUNS) or (
+        words in (["on", "it"], ["on", "them"]))  # "check on the roast"; "Pizza's in the top oven, I'd like to check on it"
     if not inside or any(names_kind(w) for w in words):
         return 0
     return end

@@ -7,6 +7,10 @@ from dataclasses import dataclass
 
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.words import Side
+from app.engine.offline.reading.token import Token
+
+ALTERNATE = frozenset({"every_other", "alternate", "alternating"})
+"""Words that keep every second one of the parts named (\"every other drawer\")."""
 
 
 @dataclass(frozen=True)
@@ -31,6 +35,8 @@ class Mention:
     size: str | None = None
     plural: bool = False
     collective: bool = False
+    alternate: bool = False
+    """"every other drawer", "alternate doors": every second one of them, from the end the order starts at."""
     modifiers: tuple[str, ...] = ()
     """Other words before the head ("release" in "the release button")."""
     owner: Mention | None = None
@@ -48,3 +54,10 @@ class Mention:
     end: int = 0
     """Token span inside the clause."""
     words: str = ""
+
+
+def apposed(tokens: list[Token], before: Mention, mention: Mention) -> bool:
+    """``mention`` ("the one on the left") only says which of ``before`` (a part noun, just before it after a comma)."""
+    return (mention.anaphor and not mention.other and before.kind is not None and not (before.pronoun or before.is_object or before.plural)
+            and [t.text for t in tokens[before.end:mention.start]] in ([","], [",", "the"]) and bool(
+                mention.sides or mention.ordinal is not None or mention.size))

@@ -10,6 +10,7 @@ names, else refused). Trailing phrases qualify or own it: "the knob on the left"
 from __future__ import annotations
 
 from dataclasses import replace
+from itertools import takewhile
 
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.relations import PLACE_PREPS, RELATION_ADVERBS, RELATIONS, RELATIVE, RESTING, VIEWERS
@@ -21,6 +22,7 @@ from app.engine.lexicon.words import (
     DEFINITES,
     DETERMINERS,
     FACE_RELATIONS,
+    GENERIC_PART_NOUNS,
     HEDGE_ADVERBS,
     MODALS,
     NOT_PART_NOUNS,
@@ -39,35 +41,31 @@ from app.engine.lexicon.words import (
     STATIVE_VERBS,
     Side,
 )
-from app.engine.offline.reading.mention import Mention
-from app.engine.offline.reading.part_words import control_name, kind_at, kind_of_word, side_run
+from app.engine.offline.reading.mention import ALTERNATE, Mention, apposed
+from app.engine.offline.reading.part_words import control_name, kind_at, line_index, shape_adjective, side_run
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.word_class import can_be_verb, finite_unknown_verb, nounless, verb_ing, verb_only
 
-__all__ = ["Mention", "kind_at", "kind_of_word", "parse_mentions"]
+__all__ = ["Mention", "kind_at", "parse_mentions"]
 
 _REGION_NOUNS = frozenset({"half", "part", "section", "portion", "side", "end"})
+_GROUPS = frozenset({"row", "pair", "set", "bank", "stack", "line", "group", "column", "couple"})
 _OWNER_PREPS = frozenset({"of", "on", "in", "at", "from", "inside"})
 _LINE_WORDS = frozenset({"row", "column"})
 _ING_NOUNS = frozenset({"opening", "housing", "casing", "ceiling", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STOP = PHRASE_BREAKS
 _NOT_HEADS = NOT_PART_NOUNS
 _OBJECT_WORDS = frozenset(OBJECT_NOUNS)
+_SITS = frozenset({"is", "'s", "stands", "sits", "sitting", "standing", "placed", "located", "set"})
 _KEY_OWNERS = frozenset({"my", "your", "our", "his", "her", "their", "car", "house", "spare", "front-door", "door", "office"})
-
-
-def _line_index(word: str) -> int | None:
-    side = SPATIAL.get(word)
-    return ORDINALS[word] if word in ORDINALS else None if side is None else {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1,
-                                                                              Side.MIDDLE: 0}.get(side[0])
 
 
 def _nominal(token: Token) -> bool:
     word = token.text
     if token.ident:
         return True  # "joint_1", "link_0": a part by its URDF name
-    if word in _OBJECT_WORDS:
-        return True  # "chest_of_drawers"
+    if word in _OBJECT_WORDS or word in ALTERNATE:
+        return True  # "chest_of_drawers", "every_other"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
             and word not in STATIVE_VERBS and word not in PERSONS and word not in HEDGE_ADVERBS and word not in PERSON_NOUNS)
 
@@ -83,9 +81,12 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
         mention, i = _phrase(tokens, i, used)
         if mention is None:
             continue
+        if mention.anaphor and mention.sides and i + 1 < len(tokens) and tokens[i].text == "'s" and (
+                (owned := _phrase(tokens, i + 1, used)[0]) is not None and owned.kind is not None):  # "the left one's door": that unit's
+            mention, i = replace(owned, region=mention.sides, start=mention.start, words=_words(tokens, mention.start, owned.end)), owned.end
         mention = _trailing(tokens, mention, used, mentions)
         i = max(i, mention.end)
-        if mention.head and mentions and _apposed(tokens, mentions[-1], mention):
+        if mention.head and mentions and apposed(tokens, mentions[-1], mention):
             before = mentions.pop()  # "the big knob, the one on the left": one knob, told twice
             mention = replace(before, sides=(*before.sides, *mention.sides), ordinal=before.ordinal if before.ordinal is not None else mention.ordinal,
                               ordinal_from=before.ordinal_from or mention.ordinal_from, size=before.size or mention.size, end=mention.end,
@@ -97,19 +98,13 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
     return mentions
 
 
-def _apposed(tokens: list[Token], before: Mention, mention: Mention) -> bool:
-    """``mention`` ("the one on the left") only says which of ``before`` (a part noun, just before it after a comma)."""
-    return (mention.anaphor and not mention.other and before.kind is not None and not (before.pronoun or before.is_object or before.plural)
-            and [t.text for t in tokens[before.end:mention.start]] in ([","], [",", "the"]) and bool(
-                mention.sides or mention.ordinal is not None or mention.size))
-
 
 def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention | None, int]:
     """The noun phrase starting at ``i`` and the index after it."""
     begin = i
     sides: list[tuple[Side, bool]] = []
     ordinal = size = None
-    collective = other = False
+    collective = other = alternate = False
     nouns: list[tuple[int, int, PartKind | None, bool]] = []  # (start, length, kind, is_object)
     unknown: list[int] = []
     determiner = possessive = chosen_freely = False
@@ -157,8 +152,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             possessive = possessive or word in ("its", "their")
         elif word == "both" and (i + 1 == len(tokens) or tokens[i + 1].text in ("back", "in", "out", "up", "down", "shut", "closed", "open", ",", ".", "together")):
             return Mention(head="them", pronoun=True, plural=True, start=begin, end=i + 1, words=_words(tokens, begin, i + 1)), i + 1  # "then both back in"
-        elif word in COLLECTIVE:
-            collective = True
+        elif word in COLLECTIVE or word in ALTERNATE:
+            collective, alternate, other = True, alternate or word in ALTERNATE, other or word in ALTERNATE
         elif word in OTHER_WORDS:
             other = True
         elif word in ORDINALS and not (word == "second" and i > 0 and tokens[i - 1].number is not None):
@@ -192,14 +187,14 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         elif word in MODALS and i + 1 < len(tokens) and can_be_verb(tokens[i + 1].text) and tokens[i + 1].text != "'s" and not (i and tokens[i - 1].text in DETERMINERS):
             break  # "the entire 6 cm it can travel": a modal, not the noun "can"
         elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
-            nouns.append((i, 1, None, True))
+            nouns.append((i, 1, None, token.lemma not in GENERIC_PART_NOUNS or not (size or any(shape_adjective(tokens, j) for j in range(begin, i)))))
         elif i > begin and control_name(tokens, i):
             unknown.append(i)  # "the start button": a word of the control's name
         elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not _continues(tokens, i + 1))):
             break  # a verb ends the phrase ("the lid | drops"); "the door release button" goes on
         elif "-" in word and all(part in SPATIAL or part in ("side", "hand") for part in word.split("-")) and word.split("-")[0] in SPATIAL:
             sides.extend(SPATIAL[part] for part in word.split("-") if part in SPATIAL)  # "upper-left", "bottom-right", "left-side"
-        elif word in PARTICLES:
+        elif word in PARTICLES and not shape_adjective(tokens, i):
             break
         elif token.lemma not in _NOT_HEADS and any(token.lemma.endswith(s) and token.lemma != s for s in OBJECT_SUFFIXES) and word.isalpha():
             nouns.append((i, 1, None, True))  # "the toolbox", "the breadbin": a compound object name
@@ -244,7 +239,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         # "press in its lower half": a place on the part "it" names
         return Mention(head="it", pronoun=True, sides=tuple(sides), start=begin, end=end, words=_words(tokens, begin, end)), end
     return Mention(head=head_word, kind=kind, is_object=is_object, other=other, sides=tuple(sides), ordinal=ordinal, size=size, plural=plural,
-                   collective=collective, possessive=possessive, one_of=chosen_freely, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
+                   collective=collective, alternate=alternate, possessive=possessive, one_of=chosen_freely, modifiers=tuple(m for m in modifiers if m != "'s"), owner=owner, whose=whose, start=begin, end=end,
                    region=region, words=_words(tokens, begin, end)), end
 
 
@@ -263,7 +258,7 @@ def _inner(tokens: list[Token], i: int, begin: int) -> bool:
         return True  # "the back lever", "the back door": a side, not the particle
     if token.text == "half" and i > begin and tokens[i - 1].text in SPATIAL:
         return True  # "the front half of the case": a region, not an amount
-    inside = i > begin and (token.number is not None or token.text in ("open", "closed", "shut", "opened"))
+    inside = i > begin and (token.number is not None or token.text in ("open", "closed", "shut", "opened") or shape_adjective(tokens, i))
     return inside and i + 1 < len(tokens) and _nominal(tokens[i + 1])
 
 
@@ -353,6 +348,8 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
         return replace(mention, sides=(SPATIAL[tokens[i].text],), end=i + 1, words=_words(tokens, mention.start, i + 1))
     if i + 1 < len(tokens) and tokens[i].text == "on_top_of" and not mention.sides:  # "the lever on top of the machine": its top one
         return replace(mention, sides=(SPATIAL["top"],), end=i + 1, words=_words(tokens, mention.start, i + 1))
+    k = i + 1 + sum(1 for _ in takewhile(lambda t: t.text in _SITS, tokens[i + 1:])) if i < len(tokens) and tokens[i].text in ("that", "which", "that's") else i
+    i = k if k < len(tokens) and tokens[k].text in _OWNER_PREPS else i  # "the laptop that's sitting on the left": where it stands
     if i + 1 >= len(tokens) or tokens[i].text not in _OWNER_PREPS | {"from", "out_of", "across", "along"}:
         return mention
     prep = tokens[i].text
@@ -369,7 +366,7 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     if prep in ("across", "along") and not ((word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS):
         return mention  # "across the top row" places keys; "across the room" says nothing of which part
     if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
-        return _lined(mention, nxt, _line_index(word), j + 2, tokens)
+        return _lined(mention, nxt, line_index(word), j + 2, tokens)
     if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one") and (
             nxt not in DETERMINERS)):  # "the wheel on the right a full turn": "a" opens the amount, it is no noun of the side
         end = j + 1 + (1 if nxt in ("side", "hand", "end") else 0)
@@ -380,21 +377,24 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
             return _trailing(tokens, placed, used, earlier) if end < len(tokens) and tokens[end].text == "of" else placed
         return mention
     if prep in ("of", "on", "in", "at", "inside", "out_of", "from"):
-        owner, end = _phrase(tokens, j, used)
+        owner, end = _phrase(tokens, i + 1 if tokens[j].number is not None else j, used)  # "the lids of the two outer boxes"
         if prep in ("out_of", "from") and not (owner is not None and owner.is_object and owner.sides):
             return mention  # "pull the tray out of the oven": where it goes, not which one
         if owner is not None and owner.head in _LINE_WORDS and (owner.ordinal is not None or owner.sides):
-            index = owner.ordinal if owner.ordinal is not None else _line_index(owner.sides[0][0].value)
+            index = owner.ordinal if owner.ordinal is not None else line_index(owner.sides[0][0].value)
             return _lined(mention, owner.head, index, end, tokens)  # "the keypad's second row"
         if owner is not None and (owner.kind is not None or owner.is_object or owner.pronoun):
             owner = _trailing(tokens, owner, used, earlier)
             end = max(end, owner.end)
-            if owner.is_object and mention.kind is None and mention.head in _REGION_NOUNS:
-                return replace(owner, sides=(*mention.sides, *owner.sides), start=mention.start, end=end,
-                               words=_words(tokens, mention.start, end))  # "the front half of the case": the case, on that side
+            if owner.is_object and mention.kind is None and (mention.head in _REGION_NOUNS or mention.head in _GROUPS):
+                return replace(owner, sides=(*mention.sides, *owner.sides), start=mention.start, end=end, words=_words(tokens, mention.start, end),
+                               collective=owner.collective or mention.head in _GROUPS)  # "the front half of the case", "the pair of safes"
             if owner.is_object:
                 return replace(mention, end=end, words=_words(tokens, mention.start, end), whose=owner.head, region=owner.sides)
             return replace(mention, owner=owner, end=end, words=_words(tokens, mention.start, end))
+        owner = _phrase(tokens, i + 1, used)[0] if word == "one" and mention.kind is not None else owner  # "the door of the one on the right"
+        if owner is not None and owner.anaphor and not owner.other and mention.kind is not None and (owner := _trailing(tokens, owner, used, earlier)).sides:
+            return replace(mention, end=owner.end, words=_words(tokens, mention.start, owner.end), region=owner.sides)  # "the door of the one on the right"
         if owner is not None and owner.kind is None and not owner.anaphor:
             return replace(mention, end=end)  # "the button on the control strip": a place on the object, not a part
     return mention

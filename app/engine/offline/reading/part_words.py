@@ -6,7 +6,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from app.engine.lexicon.kinds import REGISTRY, PartKind, info
-from app.engine.lexicon.words import DETERMINERS, SPATIAL, Side
+from app.engine.lexicon.words import DETERMINERS, ORDINALS, PHRASE_BREAKS, SHAPE_WORDS, SIZES, SPATIAL, Side
 from app.engine.offline.reading.token import Token
 
 
@@ -66,3 +66,19 @@ def control_name(tokens: list[Token], i: int) -> bool:
     its name), even one that is elsewhere a verb or a place ("from the start")."""
     found = kind_at(tokens, i + 1) if i > 0 and tokens[i - 1].text in DETERMINERS and tokens[i].text.isalpha() else None
     return found is not None and info(found[0]).control
+
+
+def shape_adjective(tokens: list[Token], i: int) -> bool:
+    """``tokens[i]`` ("flat", "round") describes the noun that follows ("the long flat bar"), not an end state ("lay the
+    lid flat"): a shape word after a determiner or another adjective, before a word that can head a noun phrase."""
+    if tokens[i].text not in SHAPE_WORDS or i == 0 or i + 1 >= len(tokens):
+        return False
+    before, after = tokens[i - 1].text, tokens[i + 1]
+    return (before in DETERMINERS or before in SIZES or before in SHAPE_WORDS) and after.text.isalpha() and after.text not in PHRASE_BREAKS
+
+
+def line_index(word: str) -> int | None:
+    """The row or column a word names (1-based from the top / left; -1 last; 0 middle): "second", "top", "right"."""
+    side = SPATIAL.get(word)
+    return ORDINALS[word] if word in ORDINALS else None if side is None else {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1,
+                                                                              Side.MIDDLE: 0}.get(side[0])

@@ -32,6 +32,7 @@ from app.engine.lexicon.words import (
 )
 from app.engine.offline.reading.numbers import RELATIVE_AFTER as _RELATIVE_AFTER
 from app.engine.offline.reading.numbers import Unit, axis_at, bare_relative, fraction_of_turn, rate_at, target_value
+from app.engine.offline.reading.part_words import shape_adjective
 from app.engine.offline.reading.tokens import Token
 
 Reference = Literal["closed", "current"]
@@ -354,7 +355,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         if token.text in MULTIPLIERS:
             values["times"] = int(MULTIPLIERS[token.text])
             used.add(i)
-        elif token.text in ("almost", "nearly") and amount is None and nxt is not None and tokens[i + 1].text in _NEAR_STATES:
+        elif token.text in ("almost", "nearly") and amount is None and nxt is not None and (tokens[i + 1].text in _NEAR_STATES or tokens[i + 1].text in TO_THE_END):
             amount = Amount(0.9, "fraction", loose=True, words=f"{token.text} {tokens[i + 1].text}")  # "almost shut": most of the way
             used.add(i)
         elif token.text.replace("_", " ") in AMOUNTS and amount is None and not _region_noun(tokens, i):
@@ -384,7 +385,7 @@ def read_quantities(tokens: list[Token], carried: tuple[Unit, float] | None = No
         elif token.text in ("flat", "flush") and (_on_the_body(tokens, i + 1) or _against_a_face(tokens, i + 1) or shut_words):
             used.add(i)  # "down flat on the box", "fold it flat shut": shut on the body, not the other flat pose
             values["onto_body"] = True
-        elif (token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up":
+        elif ((token.text in STATES and STATES[token.text] in ("vertical", "flat")) or token.text == "straight_up") and not shape_adjective(tokens, i):
             values["orientation"] = STATES.get(token.text, "vertical")
             used.add(i)
         elif token.text in ("moment", "beat", "second", "sec") and i > 0 and tokens[i - 1].text in ("a", "one"):

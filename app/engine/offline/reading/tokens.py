@@ -15,7 +15,17 @@ import re
 from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import AMOUNTS, DEFINITES, DENOMINATORS, MULTIWORD, NUMBER_WORDS, OBJECT_NOUNS, SIZES
+from app.engine.lexicon.words import (
+    AMOUNTS,
+    DEFINITES,
+    DENOMINATORS,
+    MULTIWORD,
+    NUMBER_WORDS,
+    OBJECT_NOUNS,
+    SAME_MEANING,
+    SIZES,
+)
+from app.engine.offline.reading.counted_from import counted_from
 from app.engine.offline.reading.counts import counted_unit, tidy_counts
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.framing import drop_framing
@@ -270,7 +280,7 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
         for phrase in _PHRASES:
             n = len(phrase)
             if tuple(t.text for t in tokens[i:i + n]) == phrase:
-                joined = "_".join(phrase)
+                joined = SAME_MEANING.get("_".join(phrase), "_".join(phrase))  # "apart from": except
                 said = [t.corrected_from or t.text for t in tokens[i:i + n]]  # "all teh way", not just "teh"
                 typed = " ".join(w for k, w in enumerate(said) if k == 0 or not (w == said[k - 1] and tokens[i + k].corrected_from))  # "it'll"
                 out.append(Token(joined, joined, tokens[i].start, tokens[i + n - 1].end,
@@ -322,7 +332,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, counted_from, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []

@@ -33,7 +33,7 @@ def unknown_verb(token: Token, following: str = "") -> bool:
     (nor an object's name, unless a determiner follows: "sink the toaster lever")."""
     from lemminflect import getAllLemmas
 
-    from app.engine.offline.reading.mentions import kind_of_word
+    from app.engine.offline.reading.part_words import kind_of_word
 
     word = token.text
     if not word.isalpha() or word in DETERMINERS or word in ORDINALS or word in PARTICLES or word in PERSONS or word in STATIVE_VERBS or kind_of_word(word) is not None or (

@@ -7,7 +7,7 @@ from dataclasses import replace
 
 from app.engine.lexicon.verbs import VERBS, WISHED_SENSES, VerbSense
 from app.engine.lexicon.words import DETERMINERS, EVERYDAY_WORDS, PERSON_NOUNS, PERSONS, SPATIAL, STATES, WISHES
-from app.engine.offline.reading.mentions import kind_of_word
+from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
 _STATE_OF = {VerbSense.CLOSE: "closed", VerbSense.OPEN: "open", VerbSense.RAISE: "up", VerbSense.LOWER: "down", VerbSense.PULL_OUT: "out",
