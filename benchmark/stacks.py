@@ -24,7 +24,7 @@ import numpy as np
 
 from app.engine.asset.loader import load_asset
 from app.engine.asset.summary import world_bounds
-from benchmark.variants import materialize
+from benchmark.variants import materialize, relink
 
 STEP = re.compile(r"^stack([2-4])([xyz])$")
 """A stack step's name: ``stack<copies><axis>``, e.g. ``stack3z`` (three copies, one above the other)."""
@@ -65,13 +65,7 @@ def _copied(elements: list[ET.Element], copy_index: int, stride: int) -> tuple[l
     for element in elements:
         twin = copy.deepcopy(element)
         twin.set("name", (links if element.tag == "link" else joints)[element.get("name", "")])
-        for tag in ("parent", "child"):
-            end = twin.find(tag)
-            if end is not None:
-                end.set("link", links.get(end.get("link", ""), end.get("link", "")))
-        mimic = twin.find("mimic")
-        if mimic is not None:
-            mimic.set("joint", joints.get(mimic.get("joint", ""), mimic.get("joint", "")))
+        relink(twin, links, joints)
         out.append(twin)
     return out, links
 

@@ -98,6 +98,17 @@ def _numbered_backwards(names: list[str], prefix: str) -> dict[str, str]:
     return {f"{prefix}_{a}": f"{prefix}_{b}" for a, b in zip(numbers, reversed(numbers), strict=True)}
 
 
+def relink(joint: ET.Element, links: dict[str, str], joints: dict[str, str]) -> None:
+    """The joint's parent, child and mimicked joint renamed by ``links`` / ``joints`` (names not in them kept)."""
+    for tag in ("parent", "child"):
+        element = joint.find(tag)
+        if element is not None:
+            element.set("link", links.get(element.get("link", ""), element.get("link", "")))
+    mimic = joint.find("mimic")
+    if mimic is not None:
+        mimic.set("joint", joints.get(mimic.get("joint", ""), mimic.get("joint", "")))
+
+
 def _rename(robot: ET.Element, mapping: Mapping) -> dict[str, str]:
     links = _numbered_backwards([lk.get("name", "") for lk in robot.iter("link")], "link")
     joints = _numbered_backwards([j.get("name", "") for j in robot.iter("joint")], "joint")
@@ -105,13 +116,7 @@ def _rename(robot: ET.Element, mapping: Mapping) -> dict[str, str]:
         link.set("name", links.get(link.get("name", ""), link.get("name", "")))
     for joint in robot.iter("joint"):
         joint.set("name", joints.get(joint.get("name", ""), joint.get("name", "")))
-        for tag in ("parent", "child"):
-            element = joint.find(tag)
-            if element is not None:
-                element.set("link", links.get(element.get("link", ""), element.get("link", "")))
-        mimic = joint.find("mimic")
-        if mimic is not None:
-            mimic.set("joint", joints.get(mimic.get("joint", ""), mimic.get("joint", "")))
+        relink(joint, links, joints)
     mapping.names = {old: joints.get(old, old) for old in set(mapping.signs) | set(joints)}
     return links
 

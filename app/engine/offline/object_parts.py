@@ -86,7 +86,7 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
         return group
     told = side_of_object(frame.text.split())  # "open the left side of the fridge"
     sides = next((m.sides for m in frame.themes if m.is_object and m.sides), ()) or ((told,) if told else ()) or (
-        builder.refs.scene if any(m.pronoun for m in frame.themes) else ())  # "the casserole is in the bottom oven - open it up"
+        builder.refs.scene if any(m.pronoun for m in frame.themes) or like_units(group, builder.asset) > 1 else ())  # "the casserole is in the bottom oven - open it up"
     placed = group
     if sides and len(group) > 1:  # "open the lower oven": the door on that side (the doors of that one of two ovens stacked)
         placed = in_unit(sides, group, builder.parts, builder.asset, builder.tracker.obj) or narrow(

@@ -115,6 +115,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     pending = 0.0  # the wait before a clause that moved nothing goes before the next ("2 s pause while it's open, then shut")
+    if len(named := {t for f in frames for m in (*f.themes, *f.instruments) if (t := unit_topic((m,), builder.parts, asset, True))}) == 1:
+        builder.refs.scene = next(iter(named))  # "I'd like some toast out of the middle toaster": the one unit the prompt names
     for index, act in enumerate(acts):
         act, pending, steps = replace(act, wait_before_s=act.wait_before_s + pending), 0.0, len(builder.steps)
         part_said = any(m.kind is not None for a in acts[:index] for f in a.frames for m in (*f.themes, *f.instruments))

@@ -139,3 +139,16 @@ def test_check_on_it_opens_where_it_is() -> None:
     """"Pizza's in the top oven and I'd like to check on it": open the door to look (had been read as starting the oven)."""
     moved = _moved(load_asset(asset_dir("extra/oven_7179")), "The pizza is in the top oven and I'd like to check on it.")
     assert set(moved) == {"joint_4"}
+
+
+@pytest.mark.parametrize("prompt", ["open a door, either one is fine", "Open a door - any will do."])
+def test_a_choice_left_open_is_taken(prompt: str) -> None:
+    """The user accepts either door: one is opened, with a note (it had been refused as ambiguous)."""
+    reading = read_prompt(prompt, load_asset(asset_dir("refrigerator_11178")))
+    assert [m.joint for s in reading.extension.steps for m in s.effects] == ["joint_0"]
+    assert any("leaves the choice" in note for note in reading.notes)
+
+
+def test_without_the_choice_left_open_it_is_refused() -> None:
+    with pytest.raises(GroundingError, match="could mean 2 parts"):
+        read_prompt("open a door", load_asset(asset_dir("refrigerator_11178")))
