@@ -15,6 +15,7 @@ from app.engine.offline.grounding import Part, narrow
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
+from app.engine.offline.units import in_unit
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -111,6 +112,7 @@ def only_part(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
         how = "the only movable part"
     else:
         fitting = [p for p in builder.parts if _fits(frame, mention, p)]
+        fitting = in_unit(builder.refs.scene, fitting, builder.parts, builder.asset, builder.tracker.obj) or fitting  # on the unit said
         if mention.sides or mention.size or mention.ordinal is not None:
             fitting, _ = narrow(mention, fitting, builder.asset, builder.tracker.obj, [], set())
         how = f"the only movable part that can {frame.verb or (frame.sense.value if frame.sense else 'move')}"

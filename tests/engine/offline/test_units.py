@@ -26,6 +26,7 @@ COMPOSITES = {
     "drawers": ("storage_19179", "stack3z"),  # six drawers, top to bottom: link_7, 6, 4, 3, 1, 0
     "desks": ("extra/storage_25308", "stack2y"),  # four drawers, left to right: link_4, 3, 1, 0
     "microwaves": ("microwave_7304", "stack2z"),  # doors: lower link_1, upper link_3
+    "coffee": ("extra/coffee_machine_102145", "stack2y"),  # capsule holders ("rotation_slider"): right link_3, left link_8
 }
 
 
@@ -67,6 +68,7 @@ def _started(model: ArticulatedAsset, prompt: str) -> list[str]:
     ("desks", "Leave the two outermost drawers shut and pull out the remaining drawers.", {"joint_3", "joint_1"}),
     ("desks", "Open all of the drawers apart from the leftmost one.", {"joint_3", "joint_1", "joint_0"}),
     ("drawers", "Open every drawer except the top one.", {"joint_6", "joint_4", "joint_3", "joint_1", "joint_0"}),
+    ("coffee", "On the coffee machine on the left, swing up the capsule holder at the front.", {"joint_8"}),  # a name not known, on that unit
 ])
 def test_the_unit_then_its_part(composites: dict[str, ArticulatedAsset], name: str, prompt: str, joints: set[str]) -> None:
     assert set(_moved(composites[name], prompt)) == joints
