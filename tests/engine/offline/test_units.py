@@ -154,3 +154,17 @@ def test_a_choice_left_open_is_taken(prompt: str) -> None:
 def test_without_the_choice_left_open_it_is_refused() -> None:
     with pytest.raises(GroundingError, match="could mean 2 parts"):
         read_prompt("open a door", load_asset(asset_dir("refrigerator_11178")))
+
+
+@pytest.mark.parametrize(("name", "prompt", "joint"), [
+    ("dishwasher_12553", "The dishwasher needs loading.", "joint_0"),  # the button had been pressed ("loading" dropped)
+    ("dishwasher_12553", "the dishwasher needs to be loaded", "joint_0"),
+    ("trash_can_102155", "gotta chuck this banana peel in the bin", "joint_2"),  # "gotta" had been read as a part
+])
+def test_everyday_needs(name: str, prompt: str, joint: str) -> None:
+    assert set(_moved(load_asset(asset_dir(name)), prompt)) == {joint}
+
+
+def test_the_unit_a_need_names(composites: dict[str, ArticulatedAsset]) -> None:
+    """"The upper microwave needs cleaning" of two stacked: that one's door (it had been refused as one of two units)."""
+    assert set(_moved(composites["microwaves"], "The upper microwave needs cleaning.")) == {"joint_3"}

@@ -143,6 +143,9 @@ def accessed(tokens: list[Token], i: int, out: list[Token]) -> tuple[int, list[T
     inside = "inside" in words or "in_there" in words or words[-2:] == ["in", "there"]
     objects = [w for w in words if w in OBJECT_NOUNS]
     things = words[0] in ("the", "my", "some", "our", "this", "those", "these", "all") or words[0] in ("on", "out", "up")
+    placed = next((k for k, w in enumerate(words) if w in OBJECT_NOUNS and k and (words[k - 1] in SPATIAL or words[k - 1].split("-")[0] in SPATIAL)), None)
+    if placed is not None and words[0] == "the":  # "load the upper dishwasher": that one of the units
+        return end, list(tokens[i + 1:i + 2 + placed])
     return (end, []) if (inside or objects or (things and tokens[i].text in ("load", "unload", "empty"))) else None
 
 

@@ -30,6 +30,7 @@ from app.engine.offline.reading.counts import counted_unit, tidy_counts
 from app.engine.offline.reading.everyday import everyday_words
 from app.engine.offline.reading.framing import drop_framing
 from app.engine.offline.reading.free_choice import free_choice
+from app.engine.offline.reading.needs_doing import needs_doing
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.rewrites import corrections, drop_asides, expand, facing, same_words
 from app.engine.offline.reading.token import Token
@@ -333,7 +334,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, counted_from, free_choice, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []
