@@ -18,7 +18,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
-from app.engine.lexicon.verbs import CHOOSING_VERBS, VERBS, VerbSense
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
@@ -37,7 +37,7 @@ from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
-from app.engine.offline.units import unit_topic
+from app.engine.offline.unit_scene import prompt_unit, unit_clause
 from app.engine.offline.uses import answer_use
 from app.engine.offline.whole_object import whole_named
 
@@ -115,20 +115,11 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
     pending = 0.0  # the wait before a clause that moved nothing goes before the next ("2 s pause while it's open, then shut")
-    if len(named := {t for f in frames for m in (*f.themes, *f.instruments) if (t := unit_topic((m,), builder.parts, asset, True))}) == 1:
-        builder.refs.scene = next(iter(named))  # "I'd like some toast out of the middle toaster": the one unit the prompt names
+    prompt_unit(builder, frames)  # of like units (two fridges side by side), the one the prompt names
     for index, act in enumerate(acts):
         act, pending, steps = replace(act, wait_before_s=act.wait_before_s + pending), 0.0, len(builder.steps)
-        part_said = any(m.kind is not None for a in acts[:index] for f in a.frames for m in (*f.themes, *f.instruments))
-        if topic := unit_topic(tuple(m for f in act.frames for m in (*f.themes, *f.instruments)), builder.parts, asset, part_said):
-            builder.refs.scene = topic  # "the microwave on the right", "the one in the middle": the unit the next parts are on
-        if index + 1 < len(acts) and act.goal.verb is None and act.goal.themes and all(m.is_object and m.plural and not m.sides for m in act.goal.themes) and not (
-                act.condition or act.goal.heading or act.wait_before_s or act.goal.stative):
-            builder.notes.append(f"read '{act.goal.text}' as a description of {asset.name}")  # "Two mixer taps side by side. Take ..."
-            continue
-        if topic and index + 1 < len(acts) and act.goal.verb in CHOOSING_VERBS and all(m.is_object or m.anaphor for m in act.goal.themes):
-            builder.notes.append(f"read '{act.goal.text}' as which one the steps after it are on")  # "Take the left one and ..."
-            continue
+        if unit_clause(builder, acts, index, act):
+            continue  # "Two mixer taps side by side.", "Take the left one and ...": which unit, no step
         try:
             if len(acts) > 1 and not act.condition and not act.goal.themes and not act.goal.instruments and not act.results and (
                     act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
