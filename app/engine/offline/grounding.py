@@ -13,7 +13,7 @@ differ clearly in size, takes the largest and warns).
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Literal
+from typing import Literal, TypeVar
 
 import numpy as np
 
@@ -24,6 +24,7 @@ from app.engine.offline.geometry import JointGeometry, ObjectGeometry
 from app.engine.offline.naming import describe_link, link_words
 from app.engine.offline.reading.mentions import Mention
 
+_T = TypeVar("_T")
 QUALIFIER_TOLERANCE = 0.25
 """Candidates within this fraction of the candidates' spread of the extreme value all qualify."""
 MIN_QUALIFIER_TOLERANCE_M = 1e-3
@@ -95,7 +96,7 @@ def _apply_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], o
         if len(candidates) < 2:
             break
         if plural and side in (Side.MIDDLE, Side.INNER, Side.OUTER) and len(candidates) > 2:
-            candidates = _in_row(reading_order(candidates, obj), side)  # "the two middle drawers", "the outer pair of doors"
+            candidates = in_row(reading_order(candidates, obj), side)  # "the two middle drawers", "the outer pair of doors"
         elif side in _AXIS_OF:
             axis, largest = _AXIS_OF[side]
             candidates = _extreme(candidates, obj, axis, largest, strict=extreme)
@@ -108,8 +109,9 @@ def _apply_sides(candidates: list[Part], sides: tuple[tuple[Side, bool], ...], o
     return candidates
 
 
-def _in_row(ordered: list[Part], side: Side) -> list[Part]:
-    """Of parts in a row: its two ends (outer), all but its ends (inner), or its middle one or two (middle)."""
+def in_row(ordered: list[_T], side: Side) -> list[_T]:
+    """Of things in a row (parts, or the units of :mod:`.units`): its two ends (outer), all but its ends (inner), or its
+    middle one or two (middle)."""
     if side is Side.OUTER:
         return [ordered[0], ordered[-1]]
     if side is Side.INNER:

@@ -148,8 +148,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)
-                builder.steps[steps + 1:] = [s.model_copy(update={"wait_before_s": s.wait_before_s + gaps[index]}) for s in builder.steps[steps + 1:]] if (
-                    index in gaps) else builder.steps[steps + 1:]
+                if index in gaps:  # "…, pausing a moment between each digit": before each press after the first
+                    builder.steps[steps + 1:] = [s.model_copy(update={"wait_before_s": s.wait_before_s + gaps[index]}) for s in builder.steps[steps + 1:]]
                 fetched_through(builder, act, list(clauses[act.goal.clause].tokens) if act.goal.clause < len(clauses) else [], steps)
             except GroundingError as exc:
                 if act.means is not None and act.goal.link is Link.PURPOSE and not exc.candidates:

@@ -11,7 +11,7 @@ from app.engine.lexicon.verbs import CHOOSING_VERBS
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.mentions import Mention
-from app.engine.offline.units import unit_topic
+from app.engine.offline.units import like_units, unit_named, unit_topic
 
 if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
@@ -23,7 +23,9 @@ def _mentions(frames: tuple[Frame, ...] | list[Frame]) -> tuple[Mention, ...]:
 
 def prompt_unit(builder: Builder, frames: list[Frame]) -> None:
     """The scene is the one unit the prompt names, when it names exactly one."""
-    named = {t for m in _mentions(frames) if (t := unit_topic((m,), builder.parts, builder.asset, True))}
+    if like_units(builder.parts, builder.asset) < 2:
+        return
+    named = {t for m in _mentions(frames) if (t := unit_named(m, True))}
     if len(named) == 1:
         builder.refs.scene = next(iter(named))
 

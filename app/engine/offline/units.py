@@ -12,7 +12,7 @@ import numpy as np
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.lexicon.words import Side
 from app.engine.offline.geometry import ObjectGeometry
-from app.engine.offline.grounding import _AXIS_OF, QUALIFIER_TOLERANCE, Part, position
+from app.engine.offline.grounding import _AXIS_OF, QUALIFIER_TOLERANCE, Part, in_row, position
 from app.engine.offline.reading.mentions import Mention
 
 
@@ -38,11 +38,7 @@ def _chosen(centres: dict[str, np.ndarray], side: Side) -> set[str]:
         spread = np.ptp(np.array(list(centres.values())), axis=0)
         axis = int(np.argmax(spread))
         order = sorted(centres, key=lambda b: float(centres[b][axis]))  # along the row or column the units stand in
-        if side is Side.OUTER:
-            return {order[0], order[-1]}  # "the two outer boxes"
-        if side is Side.INNER:
-            return set(order[1:-1])
-        return {order[len(order) // 2]} if len(order) % 2 else set()
+        return set(in_row(order, side)) if side is not Side.MIDDLE or len(order) % 2 else set()  # "the two outer boxes"; one middle unit
     if side not in _AXIS_OF:
         return set()
     axis, largest = _AXIS_OF[side]
@@ -77,9 +73,13 @@ def unit_topic(mentions: tuple[Mention, ...], parts: list[Part], asset: Articula
     one" is a drawer). Its parts are what "its lid", "the door" mean next. () if none."""
     if like_units(parts, asset) < 2:
         return ()
-    for mention in mentions:
-        if mention.sides and (mention.is_object or (mention.anaphor and mention.kind is None and not mention.other and not part_said)):
-            return mention.sides
-        if mention.region and mention.kind is not None:
-            return mention.region  # "the carry handle of the left-hand suitcase ..., then open that suitcase's lid"
+    return next((named for mention in mentions if (named := unit_named(mention, part_said))), ())
+
+
+def unit_named(mention: Mention, part_said: bool) -> tuple[tuple[Side, bool], ...]:
+    """The sides by which ``mention`` names a unit (see :func:`unit_topic`), else ()."""
+    if mention.sides and (mention.is_object or (mention.anaphor and mention.kind is None and not mention.other and not part_said)):
+        return mention.sides
+    if mention.region and mention.kind is not None:
+        return mention.region  # "the carry handle of the left-hand suitcase ..., then open that suitcase's lid"
     return ()
