@@ -64,8 +64,8 @@ END_STATE: Mapping[VerbSense, Mapping[PartClass, GoalState]] = MappingProxyType(
     S.PUSH_IN: _row("closed", pushed="pressed", levered="pressed", turned="cw"),
     S.TURN: _row("cw", openable="open", pushed="pressed"),
     S.SPIN: _row("velocity", openable="open", pushed="pressed", levered="pressed"),
-    S.RAISE: _row("up", openable="open"),
-    S.LOWER: _row("down", openable="closed"),
+    S.RAISE: _row("up", openable="open", turned="cw"),  # "turn up the browning knob": more
+    S.LOWER: _row("down", openable="closed", turned="ccw"),
     S.TOGGLE: _row("pressed", openable="open", turned="cw"),
     S.MOVE: _row("open", pushed="pressed", levered="pressed", turned="cw"),
     S.UNLATCH: _row("pressed", turned="cw", levered="pressed", openable="open"),

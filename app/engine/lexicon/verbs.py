@@ -46,6 +46,7 @@ class VerbSense(StrEnum):
 
 Motion = Literal["any", "hinge", "slide"]
 _NONE: Mapping[str, VerbSense] = MappingProxyType({})
+_NONE_KINDS: Mapping[PartKind, VerbSense] = MappingProxyType({})
 
 
 @dataclass(frozen=True)
@@ -64,6 +65,8 @@ class VerbInfo:
     """Kinds a bare use works ("flush the toilet" -> its lever or button)."""
     stative: bool = False
     """Describes a state to keep ("hold", "keep", "leave"), not a motion."""
+    kind_senses: Mapping[PartKind, VerbSense] = field(default_factory=lambda: _NONE_KINDS)
+    """Sense on parts of a kind that the verb means otherwise ("undo" a latch unfastens it; "undo" elsewhere reverts)."""
     rocker_sense: VerbSense | None = None
     """Sense on a rocker or button (a part pressed into its face) when no particle says the way: the verb names a hinge
     motion but no way of its own ("tilt the wall switch" rocks it over, it does not raise it)."""
@@ -116,6 +119,9 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("stamp", S.PRESS, _p(on=S.PRESS)),
     VerbInfo("tread", S.PRESS, _p(on=S.PRESS, down=S.PRESS)),
     VerbInfo("tap", S.PRESS),
+    VerbInfo("jab", S.PRESS),  # "jab the release with my knuckle"
+    VerbInfo("prod", S.PRESS),
+    VerbInfo("poke", S.PRESS),
     VerbInfo("hit", S.PRESS, displaces=True, object_sense=S.MOVE),
     VerbInfo("punch", S.PRESS, _p(**{"in": S.PRESS}), displaces=True, object_sense=S.MOVE),
     VerbInfo("click", S.PRESS),
@@ -145,6 +151,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("retract", S.PUSH_IN),
     VerbInfo("insert", S.PUSH_IN),
     VerbInfo("tuck", S.PUSH_IN, _p(**{"in": S.PUSH_IN})),
+    VerbInfo("tidy", S.CLOSE, _p(away=S.PUSH_IN, up=S.CLOSE)),  # "tidy the drawer away"
     VerbInfo("zip", S.CLOSE, _p(up=S.CLOSE, shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN)),  # "zip the suitcase back up"
     VerbInfo("unzip", S.OPEN, _p(open=S.OPEN)),
     VerbInfo("yank", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
@@ -214,6 +221,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("transport", S.MOVE, object_sense=S.MOVE),
     VerbInfo("translate", S.MOVE, object_sense=S.MOVE),
     VerbInfo("shift", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("sweep", S.MOVE),  # "sweep the lever across to the right"
     VerbInfo("roll", S.MOVE, object_sense=S.MOVE),
     VerbInfo("wheel", S.MOVE, object_sense=S.MOVE),
     VerbInfo("drive", S.MOVE, object_sense=S.MOVE),
@@ -263,7 +271,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("wait", S.WAIT, stative=True),
     VerbInfo("pause", S.WAIT, stative=True),
     VerbInfo("return", S.RETURN),
-    VerbInfo("undo", S.RETURN),
+    VerbInfo("undo", S.RETURN, kind_senses=MappingProxyType({PartKind.LATCH: S.UNLATCH})),
     VerbInfo("revert", S.RETURN),
     VerbInfo("centre", S.RETURN),
     VerbInfo("center", S.RETURN),

@@ -135,9 +135,10 @@ PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "bre
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
 GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half", "thing"})
 """Nouns that name no kind of part: with a place or a size ("the topmost piece", "the left-hand section") any movable part there."""
-PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator",
-                          "thief", "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse",
-                          "waiter", "janitor", "guy", "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "effector", "end-effector",
+PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator", "thief",
+                          "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse", "waiter", "janitor", "guy",
+                          "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "grandpa", "mum", "granny", "grandad", "grandfather", "grandmother", "wife",
+                          "husband", "son", "daughter", "sister", "brother", "flatmate", "roommate", "friend", "partner", "boss", "effector", "end-effector",
                           "manipulator", "gripper"})
 """People (and robot hands) in a scene: never a part ("the thief yanks the lower drawer open": the drawer)."""
 AGENT_NOUNS = PERSON_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",
@@ -188,7 +189,7 @@ MULTIWORD: tuple[str, ...] = (
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
     "a couple of seconds", "a couple of", "a few seconds", "a full second", "a whole second", "a full minute", "a whole minute", "a second and a half", "half a second", "do the same", "the same amount",
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
-    "bottom to top", "in order", "hands-free", "hands free", "i need", "i want", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
+    "bottom to top", "in order", "hands-free", "hands free", "last of all", "'s been", "'s got", "has got", "have got", "'ve got", "i need", "i want", "i only want", "i just want", "i really want", "i only need", "i just need", "i really need", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
     "we'd like", "we want", "we would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
     "toward the middle", "toward the centre", "toward the center", "towards the middle", "towards the centre", "towards the center",
@@ -216,7 +217,7 @@ OBJECT_NOUNS: tuple[str, ...] = (
     "mixer", "juicer", "grill", "range", "hamper", "tub", "carton", "package", "case", "pc", "basin",
     "workbench", "nightstand", "endtable", "drawers", "pail", "spigot", "chiller", "top-loader", "front-loader", "loo", "lavatory", "wc",
 )
-PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody"})
+PERSONS = frozenset({"i", "i'm", "i'll", "i've", "i'd", "you", "you're", "you'll", "we", "we're", "we'll", "me", "my", "someone", "somebody", "nobody"})
 """The user and other people: a clause about them is not about the asset ("so I can reach in")."""
 MODALS = frozenset({"can", "could", "will", "would", "may", "might", "should", "must", "won't", "can't"})
 _PROGRESS = tuple((when, who, state) for when in ("when", "once", "after") for who in ("i'm", "you're", "we're", "i've", "you've", "we've")
@@ -239,15 +240,6 @@ CORRECTIONS: tuple[tuple[str, ...], ...] = (
 CORRECTION_LEADS: tuple[tuple[str, ...], ...] = (("make", "it"), ("make", "that"), ("change", "it", "to"), ("change", "that", "to"), ("go", "for"),
                                                    ("i", "meant"), ("i", "mean"))
 """What may come between a correction and its new amount (or its other part: "no wait, I meant the other one")."""
-SHORTHAND: Mapping[str, str] = MappingProxyType({
-    # text-speak and chat abbreviations -> the word they stand for
-    "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
-    "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
-    "asap": "quickly", "gotta": "need to", "hafta": "need to", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
-    "thats": "that's", "theres": "there's", "whats": "what's", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
-    "btn": "button", "btns": "buttons", "seq": "sequence", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",
-})
-"""Abbreviations typed in chats and on phones: replaced before spelling correction (too short to correct)."""
 PLACE_SIDES: Mapping[str, Side] = MappingProxyType({
     "floor": Side.BOTTOM, "ground": Side.BOTTOM, "counter": Side.BOTTOM, "countertop": Side.BOTTOM, "worktop": Side.BOTTOM,
     "table": Side.BOTTOM, "ceiling": Side.TOP, "wall": Side.BACK})
@@ -263,11 +255,6 @@ ASPECT_VERBS = frozenset({"starts", "start", "started", "begins", "begin", "bega
 WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like", "i'd_love", "i_would_love", "i'd_prefer", "i_would_prefer",
                     "we'd_like", "we_want", "we_would_like"})
 """What opens a wish ("I need the rack out", "..., I want the lid up"): a clause of its own."""
-ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
-"""Adverbs that say what a particle says ("push the sash outward" = push it out)."""
-SAME_MEANING: Mapping[str, str] = MappingProxyType({"shall": "must", "shan't": "mustn't", "apart_from": "except", "except_for": "except", "aside_from": "except", "other_than": "except"})
-"""Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):
-replaced without a note, as no guess is made."""
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",

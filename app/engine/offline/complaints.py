@@ -20,7 +20,7 @@ if TYPE_CHECKING:
     from app.engine.offline.reading.frames import Frame
 
 _COPULAS = frozenset({"is", "are", "was", "were", "been", "left", "keeps", "stays", "still", "always", "again", "now", "all", "the", "way",
-                      "wide", "sticking", "hanging", "standing", "poking", "sitting", "partly", "half", "a", "bit", "little", "slightly"})
+                      "wide", "sticking", "hanging", "standing", "poking", "sitting", "partly", "half", "a", "bit", "little", "slightly", "both"})
 _SOMEONE = frozenset({"someone", "somebody", "they", "you", "he", "she", "kids", "i", "we", "who"})
 _TWO_WORD = {("sticking", "out"): "sticking_out", ("poking", "out"): "sticking_out", ("hanging", "open"): "hanging_open",
              ("sticking", "up"): "up", ("straight", "up"): "up"}
@@ -46,7 +46,7 @@ def _stem(word: str) -> str:
 def complained(act: Act) -> tuple[VerbSense, str] | None:
     """The sense that puts the part of a told state the other way, and the state word ("sticking out")."""
     frame = act.goal
-    if not frame.themes or (frame.verb is not None and frame.verb not in ("have", "leave", "keep", "stick", "hang", "get")):
+    if not frame.themes or (frame.verb is not None and frame.verb not in ("have", "leave", "keep", "stick", "hang", "get", "sit", "stand")):
         return None
     words = frame.text.split()
     copula = next((k for k, w in enumerate(words) if w in ("is", "are", "was", "were")), len(words))

@@ -54,7 +54,7 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     manual = builder.manual or act.goal.manual or (act.means is not None and act.means.manual)
     if not controls and opening and not manual and sense is not VerbSense.RECLINE:
         for move in opening:
-            popped = act.goal.verb in POPPING_VERBS  # "pop the microwave open": by its release
+            popped = act.goal.verb in POPPING_VERBS or move.part.joint in builder.excluded  # "pop the microwave open", "... without touching the door": by its release
             for control in mech.controls_for(move.part, builder.parts, builder.tracker, builder.excluded | builder.mentioned, popped=popped):
                 controls.append(Move(control, "control", goal_for(_NOTHING, VerbSense.PRESS, control, builder.tracker).goal, words=""))
                 notes[control.joint] = f"{_kind(control)} ({control.joint}) opens the {_kind(move.part)}"
@@ -288,11 +288,12 @@ def _prerequisites(builder: Builder, act: Act, moves: list[Move]) -> None:
         if move.part.joint in builder.tracker.before:
             continue
         target = resolve(move.goal, move.part.geometry, builder.tracker.obj, builder.asset, builder.tracker.value(move.part.joint)).value
-        if target is None:
-            continue
+        if target is None and not act.goal.manual:
+            continue  # a spin (a speed, no end) meets nothing; "spin the plate half a turn by hand" still reaches in
         reached = [d for d in mech.enclosing(move.part, builder.parts, builder.tracker) if d.joint not in builder.mentioned | builder.excluded] if (
             act.goal.manual) else []  # "turn the glass plate by hand": the door is opened to reach in
-        for blocker in mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded) or reached:
+        blocking = mech.blockers(move.part, target, builder.parts, builder.tracker, builder.mentioned | builder.excluded) if target is not None else []
+        for blocker in blocking or reached:
             builder.mentioned.add(blocker.joint)
             opening = Move(blocker, "direct", goal_for(_NOTHING, VerbSense.OPEN, blocker, builder.tracker).goal, words="")
             latches = _latches(builder, [opening])

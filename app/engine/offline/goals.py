@@ -179,6 +179,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
         return "open"  # a latch whose open end is known: "the other stays open" is that end, not a turn of the URDF's sense
     if state == "open" and geometry.open_value is None and part_class_ is PartClass.OPENABLE and geometry.up_value is not None and sense is VerbSense.RAISE:
         return "up"
+    if sense in (VerbSense.RAISE, VerbSense.LOWER) and part_class_ is PartClass.TURNED and geometry.up_value is None and geometry.down_value is None:
+        return state  # "turn up the browning knob": clockwise, more; "turn it down": less
     if sense is VerbSense.RAISE and part_class_ is not PartClass.OPENABLE and geometry.up_value is None:
         return "pressed"
     if sense is VerbSense.LOWER and part_class_ is not PartClass.OPENABLE and geometry.down_value is None:

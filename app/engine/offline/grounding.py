@@ -233,6 +233,10 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
         candidates = [max(candidates, key=lambda p: p.geometry.size)]
     if mention.ordinal is not None and mention.ordinal_from is not None:
         return _ordinal_from(candidates, mention, obj)
+    counted = next((int(w) for w in mention.modifiers if w.isdigit()), None) if mention.plural else None
+    if counted and len(mention.sides) == 1 and mention.sides[0][0] in _AXIS_OF and len(candidates) >= counted:
+        axis, largest = _AXIS_OF[mention.sides[0][0]]  # "the top 3 keys of the right-hand column", "the bottom two drawers"
+        candidates, mention = sorted(candidates, key=lambda p: float(position(p, obj)[axis]), reverse=largest)[:counted], replace(mention, sides=())
     candidates = _named_sides(candidates, mention.sides, asset) or _apply_sides(candidates, mention.sides, obj, mention.plural or mention.collective)
     if mention.size is not None and len(candidates) > 1:
         pick = max if mention.size == "large" else min

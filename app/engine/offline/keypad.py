@@ -17,8 +17,27 @@ _PHONE: dict[str, tuple[int, int]] = {str(d): ((d - 1) // 3, (d - 1) % 3) for d 
 _PHONE["0"] = (3, 1)
 
 
+def _phone(rows: list[list[Part]], columns: list[list[Part]]) -> bool:
+    return len(columns) == 3 and len(rows) in (3, 4)
+
+
 def _grid(keys: list[Part], refs: Referents) -> tuple[list[list[Part]], list[list[Part]]]:
-    return _lines(keys, refs.obj, axis=2), _lines(keys, refs.obj, axis=1)
+    """Rows and columns of the keypad. A key outside the grid (an "open" or "enter" button of its own size, or alone in
+    its row or column) is left out when the rest make a phone layout."""
+    rows, columns = _lines(keys, refs.obj, axis=2), _lines(keys, refs.obj, axis=1)
+    if _phone(rows, columns):
+        return rows, columns
+    sizes = sorted(k.geometry.size for k in keys)
+    middle = sizes[len(sizes) // 2]
+    odd = {k.joint for k in keys if not middle / 1.5 <= k.geometry.size <= middle * 1.5}
+    lone = {p.joint for line in (*rows, *columns) if len(line) == 1 for p in line}
+    for outside in (odd, lone, odd | lone):
+        kept = [k for k in keys if k.joint not in outside]
+        if outside and len(kept) >= 9:
+            grid = _lines(kept, refs.obj, axis=2), _lines(kept, refs.obj, axis=1)
+            if _phone(*grid):
+                return grid
+    return rows, columns
 
 
 def _at(rows: list[list[Part]], columns: list[list[Part]], row: int, column: int) -> Part | None:
@@ -72,7 +91,7 @@ def code_keys(codes: tuple[tuple[str, ...], ...], refs: Referents) -> list[Part]
     out: list[Part] = []
     for code in codes:
         if code[0] == "digit":
-            if len(columns) != 3 or len(rows) not in (3, 4) or (code[1] == "0" and len(rows) != 4):
+            if not _phone(rows, columns) or (code[1] == "0" and len(rows) != 4):
                 raise refs.refuse(f"cannot tell which key is '{code[1]}' on a keypad of {len(rows)} rows and {len(columns)} columns; "
                                   "name keys by place instead (e.g. 'the top-left key')")
             row, column = _PHONE[code[1]]

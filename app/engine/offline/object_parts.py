@@ -80,6 +80,10 @@ def _openables(builder: Builder, frame: Frame) -> list[Part]:
     if not found:
         caps = [p for p in builder.parts if p.kind in (PartKind.CAP, PartKind.LID) and p.geometry.open_value is None]
         return caps[:1]
+    ajar = [p for p in found if p.geometry.closed_value is not None and abs(builder.tracker.value(p.joint) - p.geometry.closed_value) > 1e-3]
+    if frame.sense is VerbSense.CLOSE and len(ajar) > 1 and not any(m.sides for m in frame.themes) and like_units(ajar, builder.asset) <= 1:
+        builder.notes.append(f"'{frame.text}': shut every part that stood open ({', '.join(p.link for p in ajar)})")
+        return ajar  # "close this cabinet up properly" with its door and its drawer both open
     first_kind = found[0].kind
     group = [p for p in found if p.kind == first_kind]
     if len(group) > 1 and any(m.plural or m.collective for m in frame.themes):

@@ -17,9 +17,10 @@ from app.engine.asset.layout import direction_name
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
+from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSONS, Side
+from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSON_NOUNS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.complaints import answer_complaint, answer_finished, answer_room, left_open, mishap
@@ -27,7 +28,7 @@ from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
 from app.engine.offline.naming import GENERIC, tokens
-from app.engine.offline.reading.acts import build_acts
+from app.engine.offline.reading.acts import Act, build_acts
 from app.engine.offline.reading.between import paused_between
 from app.engine.offline.reading.clauses import Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
@@ -65,7 +66,11 @@ def asset_words(asset: ArticulatedAsset) -> frozenset[str]:
 
 
 def _corrections(tokens_: list[Token]) -> list[str]:
-    return [f"read '{t.corrected_from}' as '{t.text.replace('_', ' ')}'" for t in tokens_ if t.corrected_from]
+    said: dict[tuple[str, int], list[str]] = {}  # "toiletlid": one slip read as two words
+    for t in tokens_:
+        if t.corrected_from:
+            said.setdefault((t.corrected_from, t.start), []).append(t.text.replace("_", " "))
+    return [f"read '{typed}' as '{' '.join(words)}'" for (typed, _), words in said.items()]
 
 
 def _incidental(frame: Frame) -> bool:
@@ -82,6 +87,7 @@ def _incidental(frame: Frame) -> bool:
 
 
 _BE = frozenset({"is", "are", "was", "were"})
+_FACING = frozenset({"facing", "face", "faces", "pointing", "points", "point"})
 
 
 def _said_of_someone(frame: Frame) -> bool:
@@ -89,7 +95,7 @@ def _said_of_someone(frame: Frame) -> bool:
     words = frame.text.split()
     if words[:1] in (["the"], ["a"], ["an"], ["their"], ["his"], ["her"]):
         return len(words) > 1 and words[1] in AGENT_NOUNS
-    return bool(words) and words[0] in PERSONS and words[0] not in ("my", "me")
+    return bool(words) and ((words[0] in PERSONS and words[0] not in ("my", "me")) or words[0] in PERSON_NOUNS or (words[0] == "my" and words[1:2] != [] and words[1] in PERSON_NOUNS))
 
 
 def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
@@ -125,6 +131,10 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     act.goal.sense is not VerbSense.RELEASE and _said_of_someone(act.goal)):  # "the foot comes off" still lets go
                 builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
                 continue
+            if len(acts) > 1 and act.goal.aside and act.goal.text.split()[:1] in (["i"], ["we"]) and act.goal.verb is not None and act.goal.themes and all(
+                    m.kind is None and not (m.pronoun or m.is_object) for m in act.goal.themes):
+                builder.notes.append(f"ignored '{act.goal.text}': it tells what the user did, not a step")  # "I put my bowl in off-centre"
+                continue
             if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and not act.goal.themes and not act.goal.instruments:
                 continue  # "Nothing else moves.": what stays still, which it does unless asked
             if len(acts) > 1 and mishap(act):
@@ -134,6 +144,10 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 continue  # "somebody left the bottom drawer open": shut it, whatever its pose
             if not builder.steps and len(acts) == 1 and answer_stored(builder, acts):
                 continue  # "my keys are in the top drawer": open it
+            if act.means is not None and act.goal.link is Link.PURPOSE and act.means.themes and all(m.is_object for m in act.means.themes) and (
+                    _FACING & set(act.goal.text.split())):  # "turn the whole safe 90 degrees to make its door end up facing left"
+                builder.notes.append(f"read '{act.goal.text}' as where turning the whole {asset.name} leaves it")
+                act = replace(act, goal=act.means, means=None)
             if act.means is not None and act.goal.link is Link.PURPOSE and act.goal.verb is None and act.goal.sense is None and not act.goal.themes:
                 builder.notes.append(f"ignored the purpose '{act.goal.text}': it names no part and no motion")  # "so it's ready to travel"
                 act = replace(act, goal=act.means, means=None)
@@ -162,6 +176,10 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                             raise
                         break  # "I'm done packing, get it ready to carry": neither names a part; the wish says what is wanted
                     continue
+                if len(acts) > 1 and any(m.kind is PartKind.CODE for m in act.goal.themes) and all(m.kind in (None, PartKind.CODE) for m in act.goal.themes) and (
+                        not act.goal.codes):
+                    builder.notes.append(f"did not animate '{act.goal.text}': the prompt does not say the code (say its keys, e.g. 'enter 1-2-3-4')")
+                    continue  # "Punch the code into the keypad and open up the safe": which keys is not said
                 if len(acts) > 1 and not exc.candidates and put_in_only(act.goal.text.split(), act.goal.verb, all(
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
@@ -169,13 +187,16 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)
                                                                   or answer_use(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
-                if len(acts) < 2 or not _incidental(act.goal) or (exc.candidates and not {"already"} & set(act.goal.text.split())):
+                if len(acts) < 2 or not _incidental(act.goal) or (exc.candidates and not {"already"} & set(act.goal.text.split()) and not (
+                        act.goal.verb is not None and _said_of_someone(act.goal))):  # not "Grandpa left me the combination on a note": a story
                     raise  # a clause that names parts but not which one is never skipped, unless it tells how things already are
                 skipped.append(exc)
                 set_topic(builder, act.goal)
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
+    for told in [f for f in frames if f.heading and f.verb is not None and f.themes and all(m.is_object for m in f.themes)] if not builder.steps else []:
+        builder.add(Act(goal=replace(told, heading=False)))  # "Close this cabinet up properly: the door and the drawer are both sitting open"
     if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, frames)
                               or answer_use(builder, frames)):
         skipped = []  # "the lower drawer is sticking out and I keep bumping my knee on it": shut it (with a note)

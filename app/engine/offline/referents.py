@@ -27,6 +27,7 @@ from app.engine.offline.grounding import (
 )
 from app.engine.offline.lone_side import lone_compared, lone_side_refusal
 from app.engine.offline.naming import did_you_mean
+from app.engine.offline.others import other_than_said
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import carried_alike, tie_break, wheel_shaped
 from app.engine.offline.units import in_unit
@@ -84,7 +85,7 @@ class Referents:
 
     def ground(self, mention: Mention, *, prefer: list[Part] | None = None) -> Grounding:
         """The parts ``mention`` names (pronouns and objects are the caller's: see :meth:`pronoun`)."""
-        kind = mention.kind if not mention.anaphor else (mention.kind or self.last_kind)
+        kind, said_before = other_than_said(self, mention, mention.kind if not mention.anaphor else (mention.kind or self.last_kind))
         notes: list[str] = []
         if kind is None and (kind := carrier_of(mention.head, self.obj.category, lambda k: bool(self.of_kind(k)))) is not None:
             notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
@@ -137,9 +138,11 @@ class Referents:
         if mention.region and len(candidates) > 1:
             candidates = in_unit(mention.region, candidates, self.parts, self.asset, self.obj) or self._compartment(mention, candidates) or candidates
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
-        if mention.possessive and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
+        if (mention.possessive or not (_qualified(mention) or mention.plural)) and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
             candidates = self._behind(hosts[0], candidates) or candidates  # "open the top door; its rack ...": the rack behind it
-        kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced)
+        if mention.owner is not None and mention.owner.pronoun and len(owners) == 1 and owners[0].kind is not None and info(owners[0].kind).hinged:
+            candidates, owners = (self._behind(owners[0], candidates), []) if self._behind(owners[0], candidates) else (candidates, owners)  # "shelves inside it"
+        kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced | said_before)
         if mention.relation is not None and kept:
             kept = self._placed(mention.relation, kept)
         if overflow is not None:
@@ -391,6 +394,6 @@ def _shuts(part: Part) -> bool:
 
 
 def _qualified(mention: Mention) -> bool:
-    """The mention says which one (a side, an ordinal, a size, a row, a name, an owner)."""
+    """The mention says which one (a side, an ordinal, a size, a row, a name, an owner, a place by another part)."""
     return bool(mention.sides or mention.ordinal is not None or mention.size or mention.row is not None or mention.column is not None
-                or mention.modifiers or mention.owner is not None or mention.other)
+                or mention.modifiers or mention.owner is not None or mention.other or mention.relation is not None)

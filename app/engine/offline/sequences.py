@@ -210,11 +210,13 @@ def lock_object(builder: Builder, act: Act) -> bool:
         return False
     latches = [p for p in builder.parts if p.kind is not None and info(p.kind).latches_host]
     dials = [p for p in builder.parts if p.kind is PartKind.KNOB and p.geometry.type == "continuous"]
-    if act.means is None and not goal.instruments and not latches and len(dials) != 1:
+    if act.means is None and not goal.instruments and not latches and not dials:
         return False
     shut_open_doors(builder, act, "locks")
-    if act.means is None and not goal.instruments and not latches:  # "lock up the safe": shut, then its one dial spun
-        builder.notes.append(f"read '{goal.text}' as its door shut, then {dials[0].link} (its one dial) spun to scramble it")
+    if act.means is None and not goal.instruments and not latches:  # "lock up the safe": shut, then its dial spun (of two, the smaller)
+        which = "one" if len(dials) == 1 else "smaller"
+        dials = sorted(dials, key=lambda p: (p.geometry.size, p.joint))[:1]
+        builder.notes.append(f"read '{goal.text}' as its door shut, then {dials[0].link} (its {which} dial) spun to scramble it")
         builder.complete(replace(act, parallel=False), VerbSense.SPIN, [], builder.moves(goal, VerbSense.SPIN, dials, ["dial"], None))
         return True
     if act.means is not None:

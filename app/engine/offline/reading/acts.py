@@ -10,8 +10,9 @@ from dataclasses import dataclass, replace
 
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, FUNCTION_VERBS, OPPOSITE_SIDES, PAUSE_NOUNS
+from app.engine.lexicon.words import ASPECT_VERBS, COUPLING_WORDS, FUNCTION_VERBS, PAUSE_NOUNS
 from app.engine.offline.reading.clauses import Link
+from app.engine.offline.reading.corrected import corrected, recast
 from app.engine.offline.reading.ellipsis import carry
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.reading.measured_from import measured_from
@@ -86,11 +87,11 @@ def _summarises(frame: Frame, after: list[Frame]) -> bool:
 
 
 def _topic(frame: Frame, after: list[Frame]) -> bool:
-    """A clause that only names one part, followed by one that works "it"."""
+    """A clause that only names one part, followed by one that works "it" ("middle knob, rotate 90 degrees", "top drawer, open")."""
     bare = frame.verb is None and not frame.heading and len(frame.themes) == 1 and not frame.themes[0].is_object and not frame.themes[0].pronoun
-    plain = frame.quantities == Quantities() and frame.particle is None and not frame.returning
-    return bare and plain and bool(after) and after[0].verb is not None and (any(m.pronoun and not m.plural for m in after[0].themes) or (
-        not after[0].themes and not after[0].instruments and after[0].marker == "," and after[0].quantities != Quantities()))  # "middle knob, rotate 90 degrees"
+    plain, nxt = frame.quantities == Quantities() and frame.particle is None and not frame.returning, after[0] if after else None
+    return bare and plain and nxt is not None and nxt.verb is not None and (any(m.pronoun and not m.plural for m in nxt.themes) or (
+        not nxt.themes and not nxt.instruments and nxt.marker == "," and (nxt.quantities != Quantities() or nxt.text.split()[:1] == [nxt.verb])))
 
 
 def _is_subjectless_event(frame: Frame) -> bool:
@@ -136,36 +137,6 @@ def _narrated(before: Frame, frame: Frame) -> bool:
         m.kind is not None and not info(m.kind).control for m in before.themes) and all(not m.pronoun for m in frame.themes)
 
 
-def _corrected(act: Act, frame: Frame) -> Act | None:
-    """``act`` with the amount a correction gives ("make that 20 cm" replaces it, "make it 20 more" adds to it)."""
-    said, new = act.goal.quantities.amount, frame.quantities.amount
-    if said is None or new is None or new.unit != said.unit or any(m.kind is not None or m.is_object for m in frame.themes) or act.condition:
-        return None
-    value = said.value + new.value if new.reference == "current" else new.value
-    amount = replace(said, value=value, words=f"{said.words}, corrected to {new.words}")
-    return replace(act, goal=replace(act.goal, quantities=replace(act.goal.quantities, amount=amount)))
-
-
-def _recast(act: Act, frame: Frame) -> Act | None:
-    """``act`` on the part a correction names instead ("... the right drawer, no wait, I meant the other one"): "the
-    other one" is the said part's opposite side, "the left one" the said part on that side."""
-    said = act.goal.themes
-    if frame.verb is not None or frame.quantities.amount is not None or len(frame.themes) != 1 or len(said) != 1 or act.condition:
-        return None
-    new, old = frame.themes[0], said[0]
-    if new.is_object or new.pronoun or old.is_object or old.pronoun or (new.kind is not None and new.kind is not old.kind):
-        return None
-    if new.other:
-        if not old.sides:
-            return None
-        sides = tuple((OPPOSITE_SIDES.get(side, side), strict) for side, strict in old.sides)
-        theme = replace(old, sides=sides, words=f"{old.words}, corrected to {new.words}")
-    else:
-        theme = replace(old, sides=new.sides, ordinal=new.ordinal, ordinal_from=new.ordinal_from, size=new.size,
-                        words=f"{old.words}, corrected to {new.words}")
-    return replace(act, goal=replace(act.goal, themes=(theme,)))
-
-
 def _appositive_amount(before: Act, frame: Frame) -> bool:
     """An amount alone after a comma, with the step before saying none: the same step, said again with its amount."""
     q = frame.quantities
@@ -194,8 +165,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if zero is not None and frame.quantities.amount is not None and frame.quantities.amount.reference is None:
             frame, zero = replace(frame, quantities=replace(frame.quantities, amount=replace(frame.quantities.amount, reference=zero))), None
         verbless = frame.verb is None
+        wished = len(acts) > 1 and acts[-1].goal.wish and acts[-1].goal.verb is None and not acts[-1].goal.themes  # "..., I only want to peek inside"
         if frame.link is Link.PURPOSE and acts and (frame.guessed_verb or frame.verb) in _LOOKING | FUNCTION_VERBS and not any(m.kind is not None for m in frame.themes) and (
-                acts[-1].goal.verb is not None and bool(acts[-1].goal.themes)):
+                (acts[-1].goal.verb is not None and bool(acts[-1].goal.themes)) or wished):
+            acts = acts[:-1] if wished else acts
             if (frame.guessed_verb or frame.verb) in FUNCTION_VERBS:
                 acts[-1] = replace(acts[-1], runs=True)  # "turn the dial to start the wash": it runs shut
             continue  # "open the door 45 degrees to see inside", "push the button to start it": what follows, not a motion
@@ -204,6 +177,12 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "the bin shouldn't go anywhere - just the wheel turning in place": the step before, said again
         if acts and frame.conjoined and frame.verb in _SETTLING and frame.quantities.duration_s is None and all(m.is_object for m in frame.themes):
             continue  # "drop down and rest against the side of the bucket": where the motion before ends, no step of its own
+        if acts and acts[-1].goal.wish and acts[-1].goal.verb is None and acts[-1].goal.sense is not None and frame.link is Link.RESULT and frame.returning and (
+                frame.quantities.amount is None and frame.themes and all(m.pronoun for m in frame.themes) and frame.text.split()[:1] == [frame.verb]):
+            continue  # "I want it sitting flush in its frame again, so swing it back": how the wish is done, not a step back
+        if acts and frame.link is Link.RESULT and frame.marker in ("until", "till") and frame.subject_theme and frame.verb is not None and (
+                acts[-1].goal.sense is VerbSense.HOLD and frame.themes and all(m.kind is not None for m in frame.themes)):
+            frame = replace(frame, link=Link.SEQUENCE, subject_theme=False)  # "hold it open until the rack has slid all the way out": the rack's step
         merged = merged_result(acts[-1], frame) if acts and not acts[-1].condition else None
         if merged is not None:
             acts[-1] = merged  # "drop the handle so it lies flat along the back side", "swing it back so it sits flush"
@@ -218,7 +197,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
                 f"'{things}' is no part: opened {place.words or place.head}, where it is kept")
             acts[-1] = replace(acts[-1], goal=open_holder(acts[-1].goal, place), note=note)  # "I need the ketchup, which lives in the left door"
             continue
-        revised = (_corrected(acts[-1], frame) or _recast(acts[-1], frame)) if acts and frame.correction else None
+        revised = (corrected(acts[-1], frame) or recast(acts[-1], frame)) if acts and frame.correction else None
         if revised is not None:
             acts[-1] = revised  # "open it 60 degrees... no wait, make it 45"
             continue
@@ -264,7 +243,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         if frame.let and frame.verb in _IDLE_VERBS and frame.quantities.duration_s is not None and all(m.pronoun or m.is_object for m in frame.themes):
             pending_wait += frame.quantities.duration_s  # "let it run for 4 seconds": time passes, nothing moves
             continue
-        if (frame.verb is None or frame.sense is VerbSense.HOLD) and frame.text.split()[0] in _STAY_WORDS and frame.quantities.duration_s is not None:
+        if (((frame.verb is None or frame.sense is VerbSense.HOLD) and frame.text.split()[0] in _STAY_WORDS) or (frame.verb == "hover" and acts and (
+                frame.quantities.amount is None and all(m.pronoun for m in frame.themes)))) and frame.quantities.duration_s is not None:  # "let it hover there for 2 s"
             frame = replace(frame, verb="hold", sense=VerbSense.HOLD, themes=(), subject_theme=False, stative=False)  # "..., rests there for 2 s"
         if (frame.verb is None or (frame.sense in (VerbSense.HOLD, VerbSense.WAIT) and frame.text.split()[-1] == frame.verb)) and not frame.themes and (
                 frame.quantities.duration_s is not None and set(frame.text.split()) & (PAUSE_NOUNS | {"hold"})):
@@ -304,6 +284,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         said_aside = False
         if frame.aside and (frame.link in (Link.RESULT, Link.PURPOSE) or frame.verb is None or frame.guessed_verb) and (acts or index + 1 < len(frames)):
             said_aside = True
+            if acts and frame.link is Link.PARALLEL and frame.quantities.duration_s is not None and not acts[-1].hold_s and not acts[-1].condition:
+                acts[-1] = replace(acts[-1], hold_s=frame.quantities.duration_s)  # "keep your foot on the pedal while I scrape the plates, 5 s or so"
             if acts and frame.link in (Link.RESULT, Link.PURPOSE) and _BY_HAND & set(frame.text.split()):
                 acts[-1] = replace(acts[-1], goal=replace(acts[-1].goal, manual=True))  # "..., so I can reach the mess": by hand
             if frame.link is Link.FIRST and frame.stative and len(frame.themes) == 1 and frame.themes[0].kind is not None:

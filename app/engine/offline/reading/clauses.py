@@ -219,6 +219,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             boundary = (Link.SEQUENCE, word, True)  # "all the way to the left and back to centre"
         elif word == "," and current and _pause_at(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "full open on the door, a 4-second beat, then back shut": a wait of its own
+        elif word == "and" and current and current[0].text in DETERMINERS and not any(verb_at(current, k, strict=True) for k in range(len(current))) and any(
+                t.text in ("are", "were") for t in tokens[nxt:nxt + 5]):
+            boundary = None  # "the door and the drawer are both sitting open": one subject, two parts
         elif word == "and" and any(t.text == "between" for t in current[-4:]):
             boundary = None  # "until the angle between it and the keyboard is 45 degrees": one thing measured
         elif word == "as" and len(current) >= 2 and current[-2].text == "as":

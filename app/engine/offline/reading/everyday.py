@@ -14,6 +14,7 @@ from app.engine.lexicon.words import (
     GENERIC_PART_NOUNS,
     NUMBER_WORDS,
     OBJECT_NOUNS,
+    PERSON_NOUNS,
     ROTATION_SENSE,
     SCREWING_SENSES,
     TURN_UNITS,
@@ -46,6 +47,10 @@ _POSITION_STATES = {"locked": "shut", "latched": "shut", "closed": "shut", "shut
 _ON_THE_SIDE = frozenset({"on", "to", "down", "onto", "toward", "towards", "over"})
 _SITS = frozenset({"sits", "is", "lies", "sitting", "located"})
 _PLACED_AT = frozenset({"at", "on", "in", "inside", "by", "near", "beside", "behind", "in_front_of", "on_top_of"})
+
+
+_LEAVERS = PERSON_NOUNS | frozenset({"i", "you", "we", "they", "he", "she", "who", "someone", "somebody", "people", "everyone", "everybody", "nobody"})
+"""Who leaves a part as it is ("somebody's left the door open"): "left" after them is a verb, not a side."""
 
 
 def _facing_viewer(tokens: list[Token], i: int) -> int:
@@ -121,6 +126,12 @@ def _as_far_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
     return (words[2], last) if last > i + 3 else None
 
 
+def _first_person(out: list[Token]) -> bool:
+    """The sentence written so far begins with the user ("I'm wrapping a present and ...")."""
+    start = max((k + 1 for k, w in enumerate(out) if w.is_sentence_end), default=0)
+    return start < len(out) and out[start].text in ("i", "i'm", "i've", "we", "we're")
+
+
 def everyday_words(tokens: list[Token]) -> list[Token]:
     """``tokens`` with the everyday phrasings of this module's docstring rewritten (new tokens keep the offsets of the
     words they replace)."""
@@ -139,6 +150,13 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue
+        if t.text == "whoever" and (not out or out[-1].is_sentence_end) and (left := next((k for k in range(i + 2, min(len(tokens), i + 9))
+                                                                                         if tokens[k].text == "left"), None)) is not None:
+            out.append(Token("somebody", "somebody", t.start, tokens[left - 1].end, corrected_from=" ".join(w.text for w in tokens[i:left])))
+            skip = left - 1  # "Whoever used the toolbox last left the lid standing up": somebody left it
+            continue
+        if t.text in ("need", "want") and before == "and" and out and _first_person(out):
+            out.append(Token("i", "i", t.start, t.start))  # "I'm wrapping a present and need the scissors": and I need them
         if t.text == "lower" and before in ("", ",", ".", ";", ":", "then", "and", "first", "please") and kind_of_word(after) is not None and (
                 i + 2 < len(tokens) and tokens[i + 2].text in ("until", "till", "to", "slowly", "gently", "fully", "flat", "completely")):
             out.extend((t, Token("the", "the", t.end, t.end)))  # "Lower door until flat": lower the door (no lower one of several)
@@ -245,13 +263,18 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.extend((Token("toward", "toward", t.start, t.end), Token("me", "me", t.start, tokens[viewer - 1].end)))
             skip = viewer - 1
             continue
-        elif t.text == "left" and before in ("i", "you", "we", "they", "he", "she", "who", "someone", "somebody", "kids", "people"):
+        elif t.text == "release" and before in ("the", "its", "that", "door") and kind_of_word(after) is None:
+            out.extend((t, Token("button", "button", t.start, t.end)))  # "jab the release with my knuckle": the release button
+            continue
+        elif t.text == "left" and (before in _LEAVERS or (out and out[-1].text in _LEAVERS) or after in ("me", "us", "him", "her", "them") or (before in ("'s", "has", "have", "'ve", "had", "'d") and i > 1 and tokens[i - 2].text in _LEAVERS)):
             t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
         elif t.text in _TAP_SIDES and after == "water" and before in ("the", "me", "some"):
             if [w.text for w in out[-2:]] == ["give", "me"]:
                 out[-2:] = [Token("run", "run", out[-2].start, out[-2].end, corrected_from="give me")]  # "give me cold water": run it
             if out and out[-1].text == "some":
                 out.pop()
+            if [w.text for w in out[-2:]] in (["i'd", "like"], ["i", "want"], ["i", "need"], ["we", "need"]):  # "I'd like some cold water": run it
+                out[-2:] = [Token("run", "run", out[-2].start, out[-1].end, corrected_from=f"{out[-2].text} {out[-1].text}")]
             out += [Token("the", "the", t.start, t.start)] if not out or out[-1].text != "the" else []
             out += [Token("water", "water", t.start, t.end), *(Token(w, w, t.start, t.end) for w in ("to", "the")),
                     Token(_TAP_SIDES[t.text], _TAP_SIDES[t.text], t.start, t.end, corrected_from=f"{t.text} water")]

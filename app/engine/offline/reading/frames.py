@@ -93,14 +93,12 @@ class Frame:
     heading: bool = False
     simultaneous: bool = False
     manual: bool = False
-    stative: bool = False
-    aside: bool = False
+    stative: bool = False  # describes a state ("the door is open"), not a motion
+    aside: bool = False  # said about the user or the story, not the asset ("so I can put my plate in", "so they can air-dry")
     same_direction: bool = False
     """"another 40 degrees in the same direction": the direction of the clause before."""
     guessed_verb: str | None = None
     """A verb we do not know, read from its particle ("fling it back": open)."""
-    """Said about the user or the story, not the asset ("so I can put my plate in", "so they can air-dry")."""
-    """Describes a state ("the door is open"), not a motion."""
     extra_verbs: tuple[str, ...] = ()
     codes: tuple[tuple[str, ...], ...] = ()
     """Keys of a code, in order: ("digit", "4") or ("place", "top", "left") ("enter 1-2-3", "type top-left, bottom-middle")."""
@@ -150,8 +148,9 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         word = tokens[i].text
         if i in inside or (i >= verb + 9 and not any(m.end == i for m in mentions)):
             continue  # past the usual reach only right after a long part name ("snap the clasp on the front of the chest shut")
-        if (word in ("down", "up") and any(m.ordinal is not None and m.end == i for m in mentions)) or shape_adjective(tokens, i):
-            continue  # "the third drawer down": how it is counted, not where it goes
+        if (word in ("down", "up") and any((m.ordinal is not None or (m.anaphor and tokens[i + 1:i + 2] and tokens[i + 1].text in ("by", "near", "at")))
+                                           and m.end == i for m in mentions)) or shape_adjective(tokens, i):
+            continue  # "the third drawer down": how it is counted, not where it goes; "the one down by the base": where it is
         own = VERBS.get(tokens[verb].lemma)
         if word == "back" and [t.text for t in tokens[i + 1:i + 3]] == ["down", "on"] and own is not None and "down" in own.particles:
             return "down", i + 1  # "set it back down on the pot": resting on it (its closed end), not where it was (``back_before``)
@@ -181,8 +180,7 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
                     continue  # "lift the pot off the stove": where from, not a particle
                 return "off", i  # "take the lid off the box"
             return word, i
-        hinge = VERBS.get(tokens[verb].lemma)
-        if word in ("backward", "backwards") and hinge is not None and "back" in hinge.particles and hinge.motion == "hinge":
+        if word in ("backward", "backwards") and own is not None and "back" in own.particles and own.motion == "hinge":
             return "back", i  # "fold the screen backwards": a hinge verb's "back"
         if word in ("to", "by", "so", "and", "then", "while", "until") and i > verb + 1:
             break
@@ -194,12 +192,14 @@ _FURTHER = frozenset({"further", "farther", "more"})
 _SWITCHED = frozenset({"on", "off"})
 
 
-def _sense(verb: str | None, particle: str | None) -> VerbSense | None:
+def _sense(verb: str | None, particle: str | None, themes: list[Mention] | None = None) -> VerbSense | None:
     if verb is None:
         return None
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
-    if particle is not None and particle in info.particles:
-        return info.particles[particle]
+    if particle is not None and particle in info.particles:  # not "turn the turntable round half a turn": a part turns, the object yaws
+        return info.sense if info.particles[particle] is VerbSense.YAW and themes and all(m.kind is not None for m in themes) else info.particles[particle]
+    if themes and all(m.kind in info.kind_senses for m in themes):
+        return info.kind_senses[themes[0].kind]  # type: ignore[index]  # "undo the latch": unfasten it
     if particle in STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
                                                           VerbSense.CLOSE, VerbSense.RECLINE):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
@@ -333,7 +333,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
             verb = tokens[inner].lemma
             particle, _ = _particle(tokens, inner, objects)
             themes = [m for m in themes if not m.start <= inner < m.end]  # "make some toast": toast is the action
-    sense = _sense(verb, particle) if verb in VERBS or verb == GENERIC.lemma else None
+    sense = _sense(verb, particle, themes) if verb in VERBS or verb == GENERIC.lemma else None
     if sense is VerbSense.RETURN and verb is not None and verb in VERBS and VERBS[verb].sense is VerbSense.OPEN and quantities.amount is not None and quantities.amount.unit == "fraction" and quantities.amount.value < 1:
         sense = VerbSense.OPEN  # "then open it back up halfway": half of its range, not half of the way back
     made = next((m for m in themes if m.kind is None and m.head in FUNCTION_VERBS and m.head in VERBS), None) if (

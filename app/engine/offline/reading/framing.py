@@ -40,6 +40,7 @@ _AWAY_WORDS = frozenset({"away", "out", "off", "home", "to", "from", "for", "int
 _REASON_SUBJECTS = frozenset({"it's", "it'll", "it'd", "they're", "they'll", "they'd", "that's", "that'll", "that'd"})
 _CLAUSE_ENDS = frozenset({".", ";", "!", "?", ",", "so", "and", "so_that"})
 _RESTING_WORDS = frozenset({"sitting", "resting", "lying", "perched", "seated", "loose", "attached"})
+_POSTURES = frozenset({"stand", "standing", "kneel", "kneeling", "crouch", "crouching", "sit", "sitting"})
 _HANDS = frozenset({"gripper", "arm", "hand", "robot", "effector", "manipulator", "finger"})
 _NOW_WORDS = frozenset({"half", "partly", "partially", "already", "still", "slightly", "a_bit", "a_little", "open", "closed", "shut", "ajar", "up",
                         "down", "rn", "now", "right_now", "currently", "at_the_moment", "wide_open", "all_the_way", "half_open"})
@@ -136,8 +137,8 @@ def _resting_part(tokens: list[Token], i: int) -> int:
         return 0
     k += 2 if words[k + 1] in ("is", "are") else 1
     k += words[k] == "just"
-    if words[k] not in ("sits", "rests") and words[k] not in _RESTING_WORDS:
-        return 0
+    if (words[k] not in ("sits", "rests") and words[k] not in _RESTING_WORDS) or words[k + 1] in _NOW_WORDS:
+        return 0  # not "the door is sitting open": a state, told as a complaint
     end = until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "so", "and"}))
     return end - i + (end < len(tokens) and tokens[end].text == ",")
 
@@ -163,6 +164,9 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         if out and out[-1].text in (",", "-") and not (i + skip < len(tokens) and tokens[i + skip].is_sentence_end):
             out.pop()
         return i + skip
+    if t.text in _POSTURES and (not out or out[-1].is_sentence_end) and after[:1] and after[0] in ("in_front_of", "facing", "before", "at", "by") and (
+            (end := until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "and", "then", "and_then"}))) < len(tokens) and tokens[end].text in ("and", "and_then")):
+        return end + 1  # "stand in front of the box and fasten ...": where the user is ("Standing in front of the fridge, slide it ..." names "it")
     if t.text == "for" and (not out or out[-1].is_sentence_end) and after[:1] and after[0] in ("a", "an", "the", "my", "our", "this") and (
             wish := next((k for k in range(i + 2, min(len(tokens), i + 7)) if tokens[k].text in WISHES), None)) is not None and not any(
             tokens[k].is_punct or kind_of_word(tokens[k].text) is not None for k in range(i + 1, wish)):

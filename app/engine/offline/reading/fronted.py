@@ -76,6 +76,20 @@ def _rewritten(sentence: list[Token]) -> list[Token] | None:
     return None
 
 
+def _amount_is_where(sentence: list[Token]) -> list[Token] | None:
+    """"90 degrees is where I want the screen", "15 cm up is where the lid should go": I want the screen at 90 degrees,
+    the lid should go 15 cm up."""
+    words = [t.text for t in sentence]
+    at = next((k for k in range(1, min(len(words) - 2, 6)) if words[k:k + 2] == ["is", "where"]), None)
+    if at is None or not _amount(sentence[:at]):
+        return None
+    rest = sentence[at + 2:]
+    end = next((k for k, t in enumerate(rest) if t.text in (";", ",", "-")), len(rest))
+    angle = any(t.lemma in ("degree", "degrees") or t.text in ("degrees", "degree", "°") for t in sentence[:at])
+    lead = [Token("at", "at", sentence[at].start, sentence[at].end)] if angle and not any(t.text in ("up", "down", "out", "open") for t in sentence[:at]) else []
+    return [*rest[:end], *lead, *sentence[:at], *rest[end:]]
+
+
 def _purpose_first(sentence: list[Token]) -> list[Token] | None:
     """"To open the door, press the button": press the button to open the door."""
     if len(sentence) < 4 or sentence[0].text != "to" or not can_be_verb(sentence[1].text):
@@ -139,7 +153,9 @@ def _place_first(sentence: list[Token]) -> list[Token] | None:
 
 
 _EMPTY_TAILS = (("make", "it", "happen"), ("make", "that", "happen"), ("make", "this", "happen"), ("do", "it"), ("do", "that"),
-                ("handle", "it"), ("sort", "it"), ("sort", "it", "out"), ("get", "it", "done"), ("get", "that", "done"))
+                ("handle", "it"), ("sort", "it"), ("sort", "it", "out"), ("get", "it", "done"), ("get", "that", "done"), ("set", "it", "like_that"),
+                ("make", "it", "like_that"), ("put", "it", "like_that"), ("get", "it", "like_that"), ("set", "it", "that_way"), ("make", "it", "that_way"),
+                ("make", "it", "so"), ("set", "it", "to", "that"), ("put", "it", "there"), ("set", "it", "there"))
 """A last clause that only asks for what was said before it ("I want some toast, make it happen")."""
 
 
@@ -183,7 +199,7 @@ def _order_after(sentence: list[Token]) -> list[Token] | None:
 def _empty_tail(sentence: list[Token]) -> list[Token] | None:
     words = tuple(t.text for t in sentence)
     tail = next((tail for tail in _EMPTY_TAILS if words[-len(tail):] == tail), None)
-    if tail is None or len(words) <= len(tail) + 2 or words[-len(tail) - 1] not in (",", "and", "so", "-"):
+    if tail is None or len(words) <= len(tail) + 2 or words[-len(tail) - 1] not in (",", "and", "so", "-", ";"):
         return None
     return sentence[:-len(tail) - 1]
 
@@ -204,12 +220,35 @@ def _asked_of_you(sentence: list[Token]) -> list[Token] | None:
     return sentence[3:] if len(sentence) > 3 and words[0] in WISHES and words[1] in ("you", "u") and words[2] == "to" else None
 
 
+_PLACE_HEADS = frozenset({"row", "column", "level", "tier", "section", "half", "corner", "side", "end", "stack", "bank"})
+
+
+def _place_heading(sentence: list[Token]) -> list[Token] | None:
+    """"bottom row, left-hand drawer, all the way out": the place said first as a heading says where the part is (the
+    bottom left-hand drawer, all the way out)."""
+    comma = next((k for k, t in enumerate(sentence[:5]) if t.text in _BREAKS), None)
+    if comma is None or comma < 2 or sentence[comma - 1].text not in _PLACE_HEADS:
+        return None
+    place = [t for t in sentence[:comma - 1] if t.text not in DETERMINERS]
+    if not place or not all(t.text in SPATIAL or t.text.split("-")[0] in SPATIAL for t in place):
+        return None
+    end = next((k for k in range(comma + 1, len(sentence)) if sentence[k].text in _BREAKS), len(sentence))
+    part = sentence[comma + 1:end]
+    if not 1 <= len(part) <= 6 or all(kind_of_word(t.text) is None for t in part) or any(t.lemma in VERBS and kind_of_word(t.text) is None for t in part):
+        return None
+    said = 1 if part[0].text in DETERMINERS else 0
+    return [*part[:said], *place, *part[said:], *sentence[end:]]
+
+
 def fronted(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each sentence that says its amount or purpose first rewritten in the plain order (see the module
     docstring)."""
     out: list[Token] = []
     for start, end in _sentences(tokens):
         sentence = tokens[start:end]
-        out += _rewritten(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _order_first(sentence) or _order_after(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or _duration_first(sentence) or sentence
+        if out and tuple(t.text for t in sentence if t.text not in ("please", "just", "now", "then")) in _EMPTY_TAILS:
+            continue  # "90 degrees is where I want the screen; set it to that.": the sentence before says it
+        out += (_rewritten(sentence) or _amount_is_where(sentence) or _purpose_first(sentence) or _wish_then_means(sentence) or _place_first(sentence) or _order_first(sentence) or _order_after(sentence) or _empty_tail(sentence) or _asked_of_you(sentence) or _duration_first(sentence) or _place_heading(sentence)
+                or sentence)
         out += tokens[end:end + 1]
     return out

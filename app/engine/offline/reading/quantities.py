@@ -137,8 +137,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
     if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
         return "closed"  # "30 degrees, measured from where it sits shut"; "by 0.52 rad, counting from where it's shut"
-    if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):
-        return "current"
+    if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):  # not "it should be open by 10 cm": a state
+        return "closed" if before[-2:-1] in (["open"], ["opened"], ["ajar"]) and before[-3:-2] and before[-3] in _STATE_COPULAS else "current"
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
     if after and after[0] in ("open", "opened") and before[-1:] != ["by"]:
         return "closed"  # "nearly shut, just 10 degrees open": a position, measured from closed
@@ -149,8 +149,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "until it is open only about 45 degrees": a position, measured from closed
     if {"angle", "between"} <= {t.text for t in tokens[max(0, start - 10):start]}:
         return "closed"  # "the angle between it and the keyboard is 45 degrees": the angle the part makes, from shut
-    if before[-2:] in (["angle", "of"], ["opening", "of"], ["angle", "to"]):
-        return "closed"  # "at an angle of 120 degrees": the part's angle, from where it is shut
+    if before[-2:] in (["angle", "of"], ["opening", "of"], ["angle", "to"]) or (after[:1] == ["angle"] and before[-1:] not in (["through"], ["by"])):
+        return "closed"  # "at an angle of 120 degrees", "makes a 45 degree angle with the keyboard": the part's angle, from shut
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):
         return "closed"
     if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] in ("the", "fully", "completely") and len(after) > 2 and after[2] in _CLOSED_WORDS)):

@@ -12,9 +12,9 @@ from dataclasses import replace
 from functools import lru_cache
 
 from app.engine.lexicon.kinds import info
+from app.engine.lexicon.said_otherwise import ADVERB_PARTICLES, SAME_MEANING, SHORTHAND
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
-    ADVERB_PARTICLES,
     ANGLE_UNITS,
     ASIDE_PHRASES,
     ASIDE_WORDS,
@@ -24,11 +24,10 @@ from app.engine.lexicon.words import (
     OBJECT_NOUNS,
     OTHER_WORDS,
     REQUEST_PHRASES,
-    SAME_MEANING,
-    SHORTHAND,
     SPATIAL,
     VIEWER_POSSESSIVES,
 )
+from app.engine.offline.reading.far_side import far_side
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -332,9 +331,7 @@ def same_words(tokens: list[Token]) -> list[Token]:
         elif t.text == "right" and after in _ALL_THE_WAY and before not in ("the", "to", "on", "at", "turn", "its", "", ",", ".", ";", "and"):
             out.extend((Token("all", "all", t.start, t.end), Token("the", "the", t.start, t.end), Token("way", "way", t.start, t.end)))
             continue
-        elif t.text in ("far-left", "far-right") or (t.text == "far" and after in ("left", "right") and before in ("the", "its")):
-            side = t.text.split("-")[-1] if "-" in t.text else after
-            out.append(Token(f"{side}most", f"{side}most", t.start, t.end))  # "the far-right drawer": the rightmost
+        elif far_side(out, t, before, after):
             continue
         elif (t.text in ("left", "right") and before == "far" and out and out[-1].text.endswith("most")) or (
                 t.text in ("face", "surface") and before in ("front", "top", "back", "rear", "side") and after in ("of", ",", ".", "", "and")):

@@ -32,7 +32,28 @@ def _said_at(tokens: list[Token], k: int) -> int | None:
     return j
 
 
+_HOW = (("the", "way"), ("how",), ("as",), ("where",), ("like",))
+_FOUND = frozenset({"you", "i", "we"})
+_NOW = (("is", "right", "now"), ("is", "now"), ("sits", "now"), ("sits", "right", "now"), ("'s", "now"), ("'s", "right", "now"))
+
+
+def _found_at(tokens: list[Token], k: int) -> int | None:
+    """The index after "(the way | how | as) you found it" or, after "to", "(the way | how) it is (right) now": the pose
+    before the prompt's steps."""
+    words = [t.text for t in tokens[k:k + 6]]
+    how = next((len(h) for h in _HOW if tuple(words[:len(h)]) == h), 0)
+    if not how or len(words) < how + 2:
+        return None
+    if words[how] in _FOUND and words[how + 1] == "found" and len(words) > how + 2 and words[how + 2] in ("it", "them"):
+        return k + how + 3
+    if k and tokens[k - 1].text == "to" and words[how] in ("it", "they"):
+        now = next((len(n) for n in _NOW if tuple(words[how + 1:how + 1 + len(n)]) == n), 0)
+        return k + how + 1 + now if now else None
+    return None
+
+
 def start_place(tokens: list[Token]) -> list[Token]:
     """``tokens`` with each place said as where a part started read as ``where_it_started``."""
-    return replace_spans(tokens, lambda ts, k: _said_at(ts, k) if k and ts[k - 1].text in ("to", "into", "in") else None,
+    said = replace_spans(tokens, lambda ts, k: _said_at(ts, k) if k and ts[k - 1].text in ("to", "into", "in") else None,
                          lambda ts, k, end: [Token("where_it_started", "where_it_started", ts[k].start, ts[end - 1].end)])
+    return replace_spans(said, _found_at, lambda ts, k, end: [Token("where_it_started", "where_it_started", ts[k].start, ts[end - 1].end)])

@@ -14,6 +14,7 @@ import itertools
 import re
 from dataclasses import replace
 
+from app.engine.lexicon.said_otherwise import SAME_MEANING
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
@@ -22,7 +23,6 @@ from app.engine.lexicon.words import (
     MULTIWORD,
     NUMBER_WORDS,
     OBJECT_NOUNS,
-    SAME_MEANING,
     SIZES,
 )
 from app.engine.offline.reading.counted_from import counted_from
@@ -316,12 +316,33 @@ def _halved(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     return out
 
 
+def _compounds(tokens: list[Token], known: frozenset[str]) -> list[Token]:
+    """"the toiletlid", "pushdown": two words run together (a domain word and a part, a verb and its particle): split."""
+    from app.engine.lexicon.verbs import PARTICLES
+    from app.engine.offline.reading.part_words import kind_of_word
+    from app.engine.offline.reading.spelling import _is_english, domain_words
+
+    out: list[Token] = []
+    for t in tokens:
+        word = t.text
+        split = next((k for k in range(3, len(word) - 1) if ((word[:k] in domain_words() or word[:k] in known) and kind_of_word(word[k:]) is not None) or (
+            word[:k] in VERBS and word[k:] in PARTICLES)), None) if (  # "toiletlid", "pushdown"
+            len(word) >= 7 and word.isalpha() and word not in known and word not in domain_words() and not _is_english(word) and not word.startswith("keyfram")) else None
+        out += [Token(word[:split], word[:split], t.start, t.end, corrected_from=word), Token(word[split:], word[split:], t.start, t.end, corrected_from=word)] if split else [t]
+    return out
+
+
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
+    from app.engine.offline.reading.count_lines import count_lines
+    from app.engine.offline.reading.do_that_after import do_that_after
+    from app.engine.offline.reading.flanked import flanked, of_that_group
     from app.engine.offline.reading.fronted import fronted
+    from app.engine.offline.reading.hand_side import hand_side
     from app.engine.offline.reading.learner import learner
     from app.engine.offline.reading.left_out import left_out
+    from app.engine.offline.reading.paused_after import paused_after
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.start_place import start_place
     from app.engine.offline.reading.step_labels import step_labels
@@ -329,12 +350,13 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
     from app.engine.offline.reading.waits_out import waits_out
+    from app.engine.offline.reading.which_of import which_of
     from app.engine.offline.reading.whose_side import row_first, whose_side
 
-    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _halved(expand(_raw_tokens(prompt), known), known)]
+    tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (same_words, everyday_words, _join_phrases, _join_numbers, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, count_lines, do_that_after, paused_after, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []

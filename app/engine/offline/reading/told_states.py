@@ -151,7 +151,7 @@ def _cannot_open(tokens: list[Token], k: int, out: list[Token]) -> int:
     return end - k
 
 
-_AS_FOUND = (("as_it_was",), ("as_they_were",), ("the", "way", "it", "was"), ("the", "way", "you", "found", "it"), ("how", "you", "found", "it"),
+_AS_FOUND = (("as_it_was",), ("as_they_were",), ("where_it_started",), ("the", "way", "it", "was"), ("the", "way", "you", "found", "it"), ("how", "you", "found", "it"),
              ("as", "you", "found", "it"), ("the", "way", "they", "were"), ("the", "way", "you", "found", "them"), ("how", "it", "was"))
 
 

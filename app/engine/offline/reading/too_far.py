@@ -29,6 +29,10 @@ def too_far(tokens: list[Token]) -> list[Token]:
         start, be, end, verb, back, amount = found
         said = " ".join(t.text for t in out[start:end])
         subject = out[start:be]
+        if end + 1 < len(out) and out[end].text in (".", "!", ";") and (out[end + 1].text in VERBS or out[end + 1].lemma in VERBS):
+            out[start:end] = subject  # "The screen is tilted back too far. Bring it forward so ...": what to do is said next
+            k = start + len(subject)
+            continue
         at = out[start]
         rewritten = [Token(verb, verb, at.start, at.end, corrected_from=said), *subject]
         if back is not None:

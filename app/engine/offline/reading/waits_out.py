@@ -23,17 +23,26 @@ def _made_at(tokens: list[Token], k: int) -> int | None:
         return None
     if tokens[k + 1].text in ("it's", "they're") and tokens[k + 2].text in _MADE:
         return k + 3  # "when it's done": whatever it makes, or its step, is over
-    if k + 3 >= len(tokens) or tokens[k + 1].text not in _OWNERS:
+    if k + 3 >= len(tokens) or (tokens[k + 1].text not in _OWNERS and tokens[k + 1].text not in ("both", "all")):
         return None
     j = k + 2
-    if kind_of_word(tokens[j].text) is not None or not tokens[j].text.isalpha():
-        return None  # "when the door is open": a part's state, read by the condition stages
+    j += tokens[j - 1].text in ("both", "all") and tokens[j].text in ("the", "of")  # "once both knobs are done", "once all the keys are done"
+    j += tokens[j - 1].text == "of" and tokens[j].text == "the"
+    part = kind_of_word(tokens[j].text) is not None
+    if (part and not _over(tokens, j + 1)) or not tokens[j].text.isalpha():
+        return None  # "when the door is open": a part's state, read by the condition stages; not "once both knobs are done": finished with
     j += 1
     if j < len(tokens) and tokens[j].text in _IS:
         j += 1
     if j < len(tokens) and tokens[j].text == "been":
         j += 1
     return j + 1 if j < len(tokens) and tokens[j].text in _MADE else None
+
+
+def _over(tokens: list[Token], j: int) -> bool:
+    """"(are) done", "(are) finished": the work on the part is over, not a state of it."""
+    j += j < len(tokens) and tokens[j].text in _IS
+    return j < len(tokens) and tokens[j].text in ("done", "finished", "through")
 
 
 def waits_out(tokens: list[Token]) -> list[Token]:
