@@ -18,7 +18,8 @@ SHORTHAND: Mapping[str, str] = MappingProxyType({
 ADVERB_PARTICLES: Mapping[str, str] = MappingProxyType({"outward": "out", "outwards": "out", "inward": "in", "inwards": "in"})
 """Adverbs that say what a particle says ("push the sash outward" = push it out)."""
 SAME_MEANING: Mapping[str, str] = MappingProxyType({
-    "shall": "must", "shan't": "mustn't", "apart_from": "except", "except_for": "except", "aside_from": "except", "other_than": "except", "last_of_all": "finally",
+    "shall": "must", "shan't": "mustn't", "apart_from": "except", "except_for": "except", "aside_from": "except", "other_than": "except", "last_of_all": "finally", "a_tiny_bit": "a_little_bit", "a_wee_bit": "a_little_bit",
+    "a_teeny_bit": "a_little_bit",
     "'s_got": "has", "'s_been": "has", "has_got": "has", "have_got": "have", "'ve_got": "have", "i_only_want": "i_want", "i_just_want": "i_want",
     "i_really_want": "i_want", "i_only_need": "i_need", "i_just_need": "i_need", "i_really_need": "i_need"})
 """Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):

@@ -189,7 +189,7 @@ MULTIWORD: tuple[str, ...] = (
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
     "a couple of seconds", "a couple of", "a few seconds", "a full second", "a whole second", "a full minute", "a whole minute", "a second and a half", "half a second", "do the same", "the same amount",
     "the same way", "as much", "the same distance", "the same angle", "one by one", "left to right", "right to left", "top to bottom",
-    "bottom to top", "in order", "hands-free", "hands free", "last of all", "'s been", "'s got", "has got", "have got", "'ve got", "i need", "i want", "i only want", "i just want", "i really want", "i only need", "i just need", "i really need", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
+    "bottom to top", "in order", "hands-free", "hands free", "last of all", "a tiny bit", "a wee bit", "a teeny bit", "'s been", "'s got", "has got", "have got", "'ve got", "i need", "i want", "i only want", "i just want", "i really want", "i only need", "i just need", "i really need", "i'd like", "we need", "i would like", "i'd love", "i would love", "i'd prefer", "i would prefer",
     "we'd like", "we want", "we would like",
     "as high as it goes", "as high as possible", "as low as it goes", "as low as possible", "as wide as it goes", "as far as it will",
     "toward the middle", "toward the centre", "toward the center", "towards the middle", "towards the centre", "towards the center",

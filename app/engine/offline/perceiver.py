@@ -132,7 +132,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it is about who acts, not a part of {asset.name}")  # "then the robot lets go"
                 continue
             if len(acts) > 1 and act.goal.aside and act.goal.text.split()[:1] in (["i"], ["we"]) and act.goal.verb is not None and act.goal.themes and all(
-                    m.kind is None and not (m.pronoun or m.is_object) for m in act.goal.themes):
+                    m.kind is None and not m.pronoun for m in act.goal.themes) and not all(m.is_object for m in act.goal.themes):
                 builder.notes.append(f"ignored '{act.goal.text}': it tells what the user did, not a step")  # "I put my bowl in off-centre"
                 continue
             if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and not act.goal.themes and not act.goal.instruments:

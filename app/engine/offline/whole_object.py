@@ -41,6 +41,8 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
     info = VERBS.get(frame.verb)
     if info is None or (info.object_sense is None and frame.sense not in _TRANSLATING and frame.sense is not VerbSense.YAW):
         return False  # ("flip it round": its particle turns the object)
+    if info.object_sense is None and info.motion == "hinge" and frame.sense is not VerbSense.YAW:
+        return False  # "fold it down": a verb of hinged parts does not carry the whole object
     quantities = frame.quantities
     if pronoun and frame.let and frame.sense is VerbSense.LOWER:
         return False  # "the handle is upright. Let it fall toward me": a part let fall, not the object sent that way

@@ -161,6 +161,12 @@ def _started(name: str, prompt: str) -> list[str]:
     ("extra/oven_7179", "Open the top oven door and hold it open until the rack has slid all the way out.", {"joint_4", "joint_0"}),
     ("safe_101564", "Grandpa left me the combination on a sticky note before he went into hospital. Punch the code into the keypad and open up "
      "the safe so I can get his passport out.", {"joint_13"}),  # the code is not said: a note, the door opens
+    ("microwave_7119", "I put my leftover soup in the microwave already and the door's shut — just run it for a few seconds to warm it up.",
+     {"joint_1"}),  # what the user did already is no step (the door had opened)
+    ("storage_20453", "Where did I leave my keys... probably in the drawer of the side table. Pull it out so I can have a look.", {"joint_0"}),
+    ("bucket_100454", "The bucket's handle is sticking straight up and I want to stack another bucket on top of it. Fold it down.",
+     {"joint_0"}),  # "fold" works a hinged part: the whole bucket had been lowered 0.45 m
+    ("extra/safe_101623", "Right, I'm off to bed — secure the safe for the night, would you?", {"joint_1", "joint_2"}),  # shut, its smaller dial spun
 ])
 def test_round55_part_meant(name: str, prompt: str, joints: set[str]) -> None:
     assert set(_moved(name, prompt)) == joints
@@ -191,3 +197,23 @@ def test_hover_there_is_a_hold() -> None:
     k = trajectory.joint_names.index("joint_0")
     assert float(trajectory.q[:, k].max()) == pytest.approx(0.15, abs=0.01)
     assert trajectory.q[-1, k] == pytest.approx(trajectory.q[0, k], abs=1e-3)
+
+
+@pytest.mark.parametrize(("name", "prompt", "joints"), [  # round 56
+    ("oven_7138", "Sunday lunch is nearly ready and I need to baste the roast, so get the oven open for me.", {"joint_0"}),  # "so get ... open"
+    ("box_102456", "Target state for the box: lid at 30 degrees from shut. Generate the motion.", {"joint_0"}),  # "generate the motion": no step
+])
+def test_round56_part_meant(name: str, prompt: str, joints: set[str]) -> None:
+    assert set(_moved(name, prompt)) == joints
+
+
+def test_a_tiny_bit_is_a_little() -> None:
+    moved = _moved("microwave_7119", "Just crack the microwave door open a tiny bit so the steam can escape.")
+    assert 0.05 < moved["joint_0"] < 0.6
+
+
+def test_open_by_an_angle_is_how_far_it_stands_open() -> None:
+    """"tilt open by 20 degrees" on a window resting ajar: 20 degrees from shut (two blind writers, rounds 53 and 56)."""
+    spec = asset("window_103135").joints["joint_0"]
+    moved = _moved("window_103135", "Please the window tilt open by 20 degree.")
+    assert min(abs(moved["joint_0"] - spec.lower), abs(moved["joint_0"] - spec.upper)) == pytest.approx(math.radians(20), abs=0.05)  # type: ignore[operator]

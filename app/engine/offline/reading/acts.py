@@ -320,7 +320,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
         waits_for = frame.marker in ("once", "when", "after") and frame.link is not Link.RESULT
         after_act = bool(acts) and not acts[-1].condition and acts[-1].goal.verb is not None and not acts[-1].goal.aside
         # a summary, a state or a clause about the user has no results of its own
-        imperative = frame.verb is not None and not frame.subject_theme and frame.text.split()[0] in (frame.verb, frame.guessed_verb)
+        imperative = frame.verb is not None and not frame.subject_theme and frame.text.split()[0] in (frame.verb, frame.guessed_verb, "get")  # "..., so get the oven open"
         if (frame.link is Link.RESULT and after_act and not imperative) or (_is_event(frame) and after_act and not waits_for and not _narrated(acts[-1].goal, frame)):
             acts[-1] = replace(acts[-1], results=(*acts[-1].results, frame))
             continue

@@ -155,7 +155,9 @@ def _place_first(sentence: list[Token]) -> list[Token] | None:
 _EMPTY_TAILS = (("make", "it", "happen"), ("make", "that", "happen"), ("make", "this", "happen"), ("do", "it"), ("do", "that"),
                 ("handle", "it"), ("sort", "it"), ("sort", "it", "out"), ("get", "it", "done"), ("get", "that", "done"), ("set", "it", "like_that"),
                 ("make", "it", "like_that"), ("put", "it", "like_that"), ("get", "it", "like_that"), ("set", "it", "that_way"), ("make", "it", "that_way"),
-                ("make", "it", "so"), ("set", "it", "to", "that"), ("put", "it", "there"), ("set", "it", "there"))
+                ("make", "it", "so"), ("set", "it", "to", "that"), ("put", "it", "there"), ("set", "it", "there"),
+                *((verb, "the", made) for verb in ("generate", "create", "make", "render", "produce", "animate", "show")
+                  for made in ("motion", "animation", "movement", "trajectory", "clip")))
 """A last clause that only asks for what was said before it ("I want some toast, make it happen")."""
 
 

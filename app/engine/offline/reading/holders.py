@@ -82,8 +82,9 @@ def stowed(tokens: list[Token], i: int) -> int:
     was named before), else 0. The holder follows that index; when none does, the object itself holds it."""
     verb = tokens[i].text
     into = _INTO if verb in _PUTTING else _OUT_OF if verb in _FETCHING else None
-    if into is None or (i and tokens[i - 1].text in ("the", "a", "its")):
-        return 0
+    if into is None or (i and tokens[i - 1].text in ("the", "a", "its")) or (i and tokens[i - 1].text in ("i", "we", "i've", "we've") and any(
+            t.text == "already" for t in tokens[i:i + 12])):
+        return 0  # "I put my leftover soup in the microwave already": done, told
     k = i + 1
     while k < len(tokens) and k < i + 8 and tokens[k].text not in into and not tokens[k].is_punct:
         k += 1

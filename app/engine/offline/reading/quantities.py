@@ -137,8 +137,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
     since = next((k for k, w in enumerate(later[:4]) if w == "from" and all(v in (",", "measured", "counting", "counted") for v in later[:k])), None)
     if since is not None and any(w in _CLOSED_WORDS for w in later[since + 1:since + 6]):
         return "closed"  # "30 degrees, measured from where it sits shut"; "by 0.52 rad, counting from where it's shut"
-    if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):  # not "it should be open by 10 cm": a state
-        return "closed" if before[-2:-1] in (["open"], ["opened"], ["ajar"]) and before[-3:-2] and before[-3] in _STATE_COPULAS else "current"
+    if (before and before[-1] in _RELATIVE_BEFORE) or (after and after[0] in _RELATIVE_AFTER):  # not "should be open by 10 cm", "tilt it open by 20 degrees"
+        return "closed" if before[-1:] == ["by"] and before[-2:-1] in (["open"], ["opened"], ["ajar"]) else "current"  # how far open it stands, from shut
     around = after + [t.text for t in tokens[end + 3:end + 5]] + [t.text for t in tokens[max(0, start - 3):start]]
     if after and after[0] in ("open", "opened") and before[-1:] != ["by"]:
         return "closed"  # "nearly shut, just 10 degrees open": a position, measured from closed

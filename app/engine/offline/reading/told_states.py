@@ -174,7 +174,8 @@ def _asked_where(tokens: list[Token], k: int, out: list[Token]) -> int:
     if tokens[k].text not in ("where", "what") or (out and not out[-1].is_sentence_end):
         return 0
     end = next((j for j in range(k, len(tokens)) if tokens[j].is_sentence_end), len(tokens))
-    return end + 1 - k if end < len(tokens) - 1 and tokens[end].text == "?" else 0
+    return end + 1 - k if end < len(tokens) - 1 and (tokens[end].text == "?" or ((tokens[end].text in ("...", "…") or tokens[end + 1].text == ".") and tokens[k + 1].text in (
+        "did", "do", "is", "are", "was", "were"))) else 0  # "Where did I leave my keys... probably in the drawer"
 
 
 _HOW_IT_HANGS = frozenset({"gaping", "hanging", "standing", "sitting", "left", "wide", "sticking", "poking", "straight"})
