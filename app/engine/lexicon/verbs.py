@@ -109,7 +109,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("throw", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE), motion="hinge"),
     VerbInfo("prop", S.OPEN, _p(open=S.OPEN, up=S.RAISE)),
     VerbInfo("flop", S.LOWER, _p(down=S.LOWER, open=S.OPEN, back=S.OPEN, over=S.LOWER), motion="hinge"),
-    VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE, on=S.CLOSE, into=S.PUSH_IN, **{"in": S.PUSH_IN})),
+    VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE, on=S.CLOSE, into=S.PUSH_IN, shut=S.CLOSE, closed=S.CLOSE,
+                               **{"in": S.PUSH_IN})),
     # press / release
     VerbInfo("press", S.PRESS, _p(down=S.PRESS, **{"in": S.PRESS}, open=S.OPEN), displaces=False),
     VerbInfo("depress", S.PRESS),
@@ -121,7 +122,6 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("tap", S.PRESS),
     VerbInfo("jab", S.PRESS),  # "jab the release with my knuckle"
     VerbInfo("prod", S.PRESS),
-    VerbInfo("poke", S.PRESS),
     VerbInfo("hit", S.PRESS, displaces=True, object_sense=S.MOVE),
     VerbInfo("punch", S.PRESS, _p(**{"in": S.PRESS}), displaces=True, object_sense=S.MOVE),
     VerbInfo("click", S.PRESS),

@@ -67,7 +67,8 @@ class Tracker:
         effects = tuple(self.goal_of(m, m.role) for m in step.effects)
         for goal in (*controls, *effects):
             if goal.value is not None:
-                self.before[goal.joint] = self.value(goal.joint)
+                if abs(goal.value - self.value(goal.joint)) > 1e-9 or goal.joint not in self.before:
+                    self.before[goal.joint] = self.value(goal.joint)  # a step that leaves it where it is keeps "where it was"
                 self.now[goal.joint] = goal.value
             elif goal.omega is not None:
                 self.before[goal.joint] = self.value(goal.joint)

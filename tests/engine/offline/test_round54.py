@@ -202,6 +202,9 @@ def test_hover_there_is_a_hold() -> None:
 @pytest.mark.parametrize(("name", "prompt", "joints"), [  # round 56
     ("oven_7138", "Sunday lunch is nearly ready and I need to baste the roast, so get the oven open for me.", {"joint_0"}),  # "so get ... open"
     ("box_102456", "Target state for the box: lid at 30 degrees from shut. Generate the motion.", {"joint_0"}),  # "generate the motion": no step
+    ("extra/box_100214", "Pop the lid of the storage box shut.", {"joint_0"}),
+    ("extra/coffee_machine_102145", "coffee machine: raise the lid down at the bottom, the one under the spout", {"joint_2"}),
+    ("extra/bucket_100432", "For a cutscene, the bucket should rise straight up off the floor by half a metre.", set()),  # the whole bucket, up
 ])
 def test_round56_part_meant(name: str, prompt: str, joints: set[str]) -> None:
     assert set(_moved(name, prompt)) == joints
@@ -217,3 +220,15 @@ def test_open_by_an_angle_is_how_far_it_stands_open() -> None:
     spec = asset("window_103135").joints["joint_0"]
     moved = _moved("window_103135", "Please the window tilt open by 20 degree.")
     assert min(abs(moved["joint_0"] - spec.lower), abs(moved["joint_0"] - spec.upper)) == pytest.approx(math.radians(20), abs=0.05)  # type: ignore[operator]
+
+
+def test_a_step_that_moves_nothing_keeps_where_it_was() -> None:
+    """"lift the lid, have a peek at the stew, then put it back down": the peek re-opens an open lid; "back" is still shut."""
+    trajectory = animate("extra/kitchen_pot_100015", "lift the lid, have a peek at the stew, then put it back down").trajectory
+    k = trajectory.joint_names.index("joint_0")
+    assert trajectory.q[-1, k] == pytest.approx(trajectory.q[0, k], abs=1e-3)
+
+
+def test_should_rise_is_told_to_the_object() -> None:
+    base = animate("extra/bucket_100432", "For a cutscene, the bucket should rise straight up off the floor by half a metre.").trajectory.base_translation
+    assert float(base[-1][2] - base[0][2]) == pytest.approx(0.5, abs=0.02)

@@ -9,7 +9,7 @@ lives in the door" (a sentence of its own: where it is kept)."""
 from __future__ import annotations
 
 from app.engine.lexicon.relations import VIEWER_WORDS
-from app.engine.lexicon.verbs import VERBS
+from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import (
     GENERIC_PART_NOUNS,
     NUMBER_WORDS,
@@ -150,6 +150,17 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token(sense, sense, t.start, tokens[way + 1].end))
             skip = way + 1
             continue
+        if t.text in ("should", "must") and out and kind_of_word(before) is None and before not in ("i", "you", "we", "it", "they") and (
+                after in VERBS and VERBS[after].sense in (VerbSense.RAISE, VerbSense.LOWER, VerbSense.MOVE) and before.isalpha()):
+            from lemminflect import getInflection
+
+            said = getInflection(after, "VBZ")  # "the bucket should rise straight up": the bucket rises
+            out.append(Token(said[0] if said else after, after, tokens[i + 1].start, tokens[i + 1].end))
+            skip = i + 1
+            continue
+        if t.text in ("down", "up") and after == "at" and i + 3 < len(tokens) and tokens[i + 2].text == "the" and tokens[i + 3].text in (
+                "bottom", "top", "base", "foot") and out and kind_of_word(out[-1].text) is not None:
+            continue  # "the lid down at the bottom": at the bottom (a place, not the way the verb goes)
         if t.text == "whoever" and (not out or out[-1].is_sentence_end) and (left := next((k for k in range(i + 2, min(len(tokens), i + 9))
                                                                                          if tokens[k].text == "left"), None)) is not None:
             out.append(Token("somebody", "somebody", t.start, tokens[left - 1].end, corrected_from=" ".join(w.text for w in tokens[i:left])))

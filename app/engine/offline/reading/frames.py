@@ -148,8 +148,8 @@ def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[
         word = tokens[i].text
         if i in inside or (i >= verb + 9 and not any(m.end == i for m in mentions)):
             continue  # past the usual reach only right after a long part name ("snap the clasp on the front of the chest shut")
-        if (word in ("down", "up") and any((m.ordinal is not None or (m.anaphor and tokens[i + 1:i + 2] and tokens[i + 1].text in ("by", "near", "at")))
-                                           and m.end == i for m in mentions)) or shape_adjective(tokens, i):
+        if (word in ("down", "up") and any((m.ordinal is not None or (tokens[i + 1:i + 2] and tokens[i + 1].text in ("by", "near", "at") and (
+                m.anaphor or (tokens[i + 2:i + 3] and tokens[i + 2].text == "the")))) and m.end == i for m in mentions)) or shape_adjective(tokens, i):
             continue  # "the third drawer down": how it is counted, not where it goes; "the one down by the base": where it is
         own = VERBS.get(tokens[verb].lemma)
         if word == "back" and [t.text for t in tokens[i + 1:i + 3]] == ["down", "on"] and own is not None and "down" in own.particles:
