@@ -110,6 +110,8 @@ def state_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> G
     said = frame.text.split()
     if _back_to_now(said):
         return "rest"  # "close the lid, then flip it back up to exactly where it is now": where it was when the prompt began
+    if absolute and sense in (VerbSense.MOVE, VerbSense.OPERATE) and geometry.open_value is not None and not frame.returning:
+        return "open"  # "position the drawer so its front is 30 cm out from the fully closed position": that far open
     if frame.returning and any(w.replace("_", " ") in frame.text for w in CENTRE_WORDS) and geometry.lower is not None and geometry.upper is not None and (
             geometry.lower < geometry.rest < geometry.upper):
         return "rest"  # "then back to the middle": a lever resting midway goes back to rest

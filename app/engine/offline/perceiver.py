@@ -135,6 +135,11 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     m.kind is None and not m.pronoun for m in act.goal.themes) and not all(m.is_object for m in act.goal.themes):
                 builder.notes.append(f"ignored '{act.goal.text}': it tells what the user did, not a step")  # "I put my bowl in off-centre"
                 continue
+            if index < len(acts) - 1 and act.goal.subject_theme and {"has", "have"} & set(act.goal.text.split()[1:5]) and act.goal.verb is not None and (
+                    not act.goal.text.startswith(("i ", "you ", "we "))):  # "the handle has flopped over the side - stand it straight up"
+                builder.notes.append(f"read '{act.goal.text}' as how it is now, not a step")
+                set_topic(builder, replace(act.goal, stative=True, verb=None))
+                continue
             if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and not act.goal.themes and not act.goal.instruments:
                 continue  # "Nothing else moves.": what stays still, which it does unless asked
             if len(acts) > 1 and mishap(act):
@@ -158,7 +163,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"did not animate '{act.goal.text}': tilting the whole {asset.name} is not animated, only moving and turning it")
                 builder.refs.last_object = True
                 continue  # "tilt the bin back and wheel it backwards": the wheeling is animated, and "it" is the bin
-            if act is not acts[-1] and (record_release(builder, act) or stated_latched(builder, act) or stated_no_handle(builder, act)):
+            if index < len(acts) - 1 and (record_release(builder, act) or stated_latched(builder, act) or stated_no_handle(builder, act)):
                 continue  # "Turning the handle pulls back the bolts": how it works, not a step
             try:
                 builder.add(act)

@@ -59,8 +59,9 @@ def moves_object(frame: Frame, *, pronoun: bool, after_part: bool) -> bool:
             return False
     if frame.sense is VerbSense.PRESS and not info.displaces and not (directional or (quantities.amount is not None and quantities.amount.unit == "m")):
         return False
-    if frame.particle in ("in", "out", "open", "shut", "closed"):
-        return False
+    if frame.particle in ("in", "out", "open", "shut", "closed") and not (quantities.amount is not None and quantities.amount.unit == "m" and (
+            {"entire", "whole"} & set(frame.text.split()))):
+        return False  # not "drag the entire dishwasher 40 cm out from under the counter": the whole object goes
     return info.object_sense is not None or frame.sense in _TRANSLATING or frame.sense is VerbSense.YAW
 
 

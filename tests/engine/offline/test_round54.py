@@ -232,3 +232,37 @@ def test_a_step_that_moves_nothing_keeps_where_it_was() -> None:
 def test_should_rise_is_told_to_the_object() -> None:
     base = animate("extra/bucket_100432", "For a cutscene, the bucket should rise straight up off the floor by half a metre.").trajectory.base_translation
     assert float(base[-1][2] - base[0][2]) == pytest.approx(0.5, abs=0.02)
+
+
+@pytest.mark.parametrize(("name", "prompt", "joints"), [  # round 57
+    ("bucket_102352", "the handle's flopped over the side of the bucket - stand it straight up so I can grab it", {"joint_0"}),  # how it is now
+    ("refrigerator_11178", "We're moving house tomorrow and the movers want the fridge turned right round so its doors face the wall. Do that.",
+     set()),  # their wish: the whole fridge yaws
+    ("trash_can_102181", "Press the foot pedal so that it makes the lid lift open.", {"joint_0", "joint_1"}),
+    ("extra/storage_25308", "pullout the righthand drawr pls", {"joint_0"}),
+    ("extra/storage_26525", "For the catalogue render I want the bedside table shown with its drawer pulled open.", {"joint_0"}),
+])
+def test_round57_part_meant(name: str, prompt: str, joints: set[str]) -> None:
+    assert set(_moved(name, prompt)) == joints
+
+
+@pytest.mark.parametrize(("prompt", "value"), [
+    ("Position the desk drawer so that its front is 30 cm out from the fully closed position.", 0.112),  # closed at -0.188
+])
+def test_round57_amount_from_shut(prompt: str, value: float) -> None:
+    assert _moved("extra/storage_20279", prompt)["joint_0"] == pytest.approx(value, abs=0.01)
+
+
+def test_a_manner_said_as_how_someone_did_it_is_no_step() -> None:
+    """", the way he used to leave it" had become a hold that shut the lid."""
+    moved = _moved("extra/box_100214", "My grandad's tool case is gaping wide open. Bring the lid down until it's only open about 45 degrees, "
+                   "the way he used to leave it.")
+    spec = asset("extra/box_100214").joints["joint_0"]
+    assert spec.lower is not None and moved["joint_0"] == pytest.approx(spec.lower + math.radians(45), abs=0.05)
+
+
+def test_the_whole_object_dragged_out_from_under() -> None:
+    outcome = animate("dishwasher_11700", "Drag the entire dishwasher 40 cm out from under the counter, toward me - I'm standing at its door.")
+    base = outcome.trajectory.base_translation
+    assert float(np.linalg.norm(np.asarray(base[-1]) - np.asarray(base[0]))) == pytest.approx(0.4, abs=0.02)
+    assert not _moved("dishwasher_11700", "Drag the entire dishwasher 40 cm out from under the counter, toward me - I'm standing at its door.")

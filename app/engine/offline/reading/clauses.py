@@ -108,6 +108,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         return True  # "so I can put my plate in", "so they can air-dry"
     if j + 1 < len(tokens) and tokens[j].text == "they" and tokens[j + 1].lemma in VERBS and tokens[j + 1].text == tokens[j + 1].lemma:
         return True  # "so they snap shut": a plural subject and its verb
+    if j + 1 < len(tokens) and tokens[j].text in ("it", "this", "that") and tokens[j + 1].text in ("makes", "lets", "causes", "gets", "pops", "sends"):
+        return True  # "press the pedal so that it makes the lid lift open"
     # "..., and the lid lifts", "so the door pops open": a subject noun phrase and a finite verb
     k = j
     while k < len(tokens) and k < j + 6 and not tokens[k].is_punct:

@@ -126,6 +126,10 @@ def _as_far_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
     return (words[2], last) if last > i + 3 else None
 
 
+_MOVERS = frozenset({"mover", "removal", "client", "director", "animator", "designer", "customer", "kid", "guest", "tester"})
+_PARTICIPLES = frozenset({"fallen", "stuck", "broken", "bent", "swung", "sprung", "slid", "gone", "come", "dropped", "flopped", "popped"})
+
+
 def _first_person(out: list[Token]) -> bool:
     """The sentence written so far begins with the user ("I'm wrapping a present and ...")."""
     start = max((k + 1 for k, w in enumerate(out) if w.is_sentence_end), default=0)
@@ -161,6 +165,15 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         if t.text in ("down", "up") and after == "at" and i + 3 < len(tokens) and tokens[i + 2].text == "the" and tokens[i + 3].text in (
                 "bottom", "top", "base", "foot") and out and kind_of_word(out[-1].text) is not None:
             continue  # "the lid down at the bottom": at the bottom (a place, not the way the verb goes)
+        if t.text == "'s" and out and kind_of_word(out[-1].text) is not None and (after.endswith("ed") or after in _PARTICIPLES):
+            out.append(Token("has", "has", t.start, t.end))  # "the handle's flopped over the side": has flopped
+            continue
+        if t.text in ("want", "wants", "need", "needs") and len(out) > 1 and out[-2].text in ("the", "my", "our") and (
+                out[-1].text in PERSON_NOUNS or (out[-1].text.endswith("s") and out[-1].text[:-1] in PERSON_NOUNS | _MOVERS)):
+            out[-2:] = [Token("i", "i", out[-2].start, out[-1].end, corrected_from=f"{out[-2].text} {out[-1].text}")]
+            t = Token("want", "want", t.start, t.end)  # "the movers want the fridge turned right round": a wish, said for them
+        if t.text in ("shown", "displayed", "pictured", "rendered", "depicted") and after == "with" and out and out[-1].text not in ("is", "be", "was"):
+            continue  # "I want the bedside table shown with its drawer pulled open": with its drawer open
         if t.text == "whoever" and (not out or out[-1].is_sentence_end) and (left := next((k for k in range(i + 2, min(len(tokens), i + 9))
                                                                                          if tokens[k].text == "left"), None)) is not None:
             out.append(Token("somebody", "somebody", t.start, tokens[left - 1].end, corrected_from=" ".join(w.text for w in tokens[i:left])))

@@ -26,7 +26,7 @@ _VIEWERS = frozenset({"i", "you", "we", "one", "someone", "they", "you're", "i'm
 _VIEW_VERBS = frozenset({"face", "faces", "facing", "look", "looks", "looking", "see", "seen", "seeing", "stand", "stands", "standing",
                          "view", "viewed", "viewing", "watch", "watching", "sit", "sitting"})
 _SIMILE_PEOPLE = frozenset({"you", "you're", "you'd", "you'll", "i'm", "i'd", "we're", "we'd", "someone", "somebody", "a", "one", "they're",
-                            "they'd", "people", "anyone"})
+                            "they'd", "people", "anyone", "he", "she", "he'd", "she'd", "i", "we", "they"})
 _SIMILE_ENDS = frozenset({".", ";", "!", "?", "then", "and_then"})
 _BOUNDS = frozenset({"all_the_way", "fully", "completely", "entirely", "too", "the_whole_way", "to_the_end", "to_the_limit", "wide_open",
                      "all", "far", "much", "the", "way", "out", "open", "in", "quite", "whole"})

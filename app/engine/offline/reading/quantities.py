@@ -1,10 +1,9 @@
-"""Quantities of one clause, read from its tokens: how far (and from where), how fast, how long,
-which way, and end orientations.
+"""Quantities of one clause, read from its tokens: how far (and from where), how fast, how long, which way, and end
+orientations.
 
-An amount carries what it is measured from: ``closed`` for an end position ("to 30 degrees",
-"30 degrees from closed"), ``current`` for an increment ("another 10 degrees", "10 cm more",
-"by 5 cm"), ``None`` where the verb decides (the resolver's conventions).
-"""
+An amount carries what it is measured from: ``closed`` for an end position ("to 30 degrees", "30 degrees from closed",
+"open by 20 degrees"), ``current`` for an increment ("another 10 degrees", "10 cm more", "by 5 cm"), ``None`` where the
+verb decides (the resolver's conventions)."""
 
 from __future__ import annotations
 
@@ -153,7 +152,8 @@ def _reference(tokens: list[Token], start: int, end: int) -> Reference | None:
         return "closed"  # "at an angle of 120 degrees", "makes a 45 degree angle with the keyboard": the part's angle, from shut
     if (before and before[-1] in _TO) or before[-2:] == ["up", "to"] or (before and before[-1] == "at" and unit_is_angle(tokens, end)):
         return "closed"
-    if len(after) >= 2 and after[0] in ("from", "off", "past") and (after[1] in _CLOSED_WORDS or (after[1] in ("the", "fully", "completely") and len(after) > 2 and after[2] in _CLOSED_WORDS)):
+    zero = next((later[k + 1:k + 6] for k in range(min(2, len(later))) if later[k] in ("from", "off", "past")), [])  # "... out from the fully shut"
+    if len(after) >= 2 and any(w in _CLOSED_WORDS for w in [w for w in zero if w not in ("the", "fully", "completely", "its")][:1]):
         return "closed"
     if len(after) >= 2 and after[0] in ("above", "over", "clear_of") and after[1] in ("the", "its") and "current" not in after:
         return "closed"  # "so it hovers 10 cm above the pot": a height over what it closes on

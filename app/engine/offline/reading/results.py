@@ -75,7 +75,7 @@ def merged_result(act: Act, frame: Frame) -> Act | None:
         share_sense = VerbSense.OPEN if goal.sense in (VerbSense.RETURN, VerbSense.MOVE, VerbSense.CLOSE, None) else goal.sense
         return replace(act, goal=replace(goal, returning=False, sense=share_sense, quantities=replace(q, amount=replace(r.amount, reference="closed"))))
     said = frame.text.split()
-    ends = {STATES[w] for k, w in enumerate(said) if STATES.get(w) in ("open", "closed") and (k == 0 or said[k - 1] not in ("from", "since"))}
+    ends = {STATES[w] for k, w in enumerate(said) if STATES.get(w) in ("open", "closed") and not {"from", "since"} & set(said[max(0, k - 3):k])}
     said_end = q.amount is None and not _NEGATIONS & set(frame.text.split()) and goal.sense in (VerbSense.OPEN, VerbSense.RAISE, VerbSense.LOWER)
     if len(ends) == 1 and (goal.sense in (VerbSense.RETURN, VerbSense.MOVE) or said_end):
         # "swing it back so it sits flush": back to where it shuts; "flip the latch up so it's closed": the end it names

@@ -323,11 +323,13 @@ def _compounds(tokens: list[Token], known: frozenset[str]) -> list[Token]:
     from app.engine.offline.reading.spelling import _is_english, domain_words
 
     out: list[Token] = []
-    for t in tokens:
+    for n, t in enumerate(tokens):
         word = t.text
+        commanded = n + 1 < len(tokens) and tokens[n + 1].text in ("the", "it", "my", "that", "this", "both", "all")  # "pullout the drawer": a verb
         split = next((k for k in range(3, len(word) - 1) if ((word[:k] in domain_words() or word[:k] in known) and kind_of_word(word[k:]) is not None) or (
             word[:k] in VERBS and word[k:] in PARTICLES)), None) if (  # "toiletlid", "pushdown"
-            len(word) >= 7 and word.isalpha() and word not in known and word not in domain_words() and not _is_english(word) and not word.startswith("keyfram")) else None
+            len(word) >= 7 and word.isalpha() and word not in known and word not in domain_words() and (not _is_english(word) or commanded)
+            and not word.startswith("keyfram")) else None
         out += [Token(word[:split], word[:split], t.start, t.end, corrected_from=word), Token(word[split:], word[split:], t.start, t.end, corrected_from=word)] if split else [t]
     return out
 

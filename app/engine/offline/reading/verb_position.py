@@ -34,6 +34,9 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     previous = tokens[i - 1].text if i > 0 else ""
     if previous in NOT_BEFORE_VERB and not after_side_noun(tokens, i):
         return False  # "the left switch"
+    if token.text != token.lemma and token.text.endswith("ed") and i > 1 and tokens[i - 2].text in ("the", "its", "a", "an") and (
+            tokens[i - 1].text.endswith("ly") or tokens[i - 1].text == "half"):
+        return False  # "from the fully closed position": a participle said of a noun
     if token.text in STATIVE_VERBS and (token.text.endswith("ing") or token.text != token.lemma):
         return False  # "standing at the sink, ...": where the user is, not an action
     if token.text in SPATIAL and token.text != token.lemma:
