@@ -46,7 +46,6 @@ class VerbSense(StrEnum):
 
 Motion = Literal["any", "hinge", "slide"]
 _NONE: Mapping[str, VerbSense] = MappingProxyType({})
-_NONE_KINDS: Mapping[PartKind, VerbSense] = MappingProxyType({})
 
 
 @dataclass(frozen=True)
@@ -65,8 +64,6 @@ class VerbInfo:
     """Kinds a bare use works ("flush the toilet" -> its lever or button)."""
     stative: bool = False
     """Describes a state to keep ("hold", "keep", "leave"), not a motion."""
-    kind_senses: Mapping[PartKind, VerbSense] = field(default_factory=lambda: _NONE_KINDS)
-    """Sense on parts of a kind that the verb means otherwise ("undo" a latch unfastens it; "undo" elsewhere reverts)."""
     rocker_sense: VerbSense | None = None
     """Sense on a rocker or button (a part pressed into its face) when no particle says the way: the verb names a hinge
     motion but no way of its own ("tilt the wall switch" rocks it over, it does not raise it)."""
@@ -271,7 +268,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("wait", S.WAIT, stative=True),
     VerbInfo("pause", S.WAIT, stative=True),
     VerbInfo("return", S.RETURN),
-    VerbInfo("undo", S.RETURN, kind_senses=MappingProxyType({PartKind.LATCH: S.UNLATCH})),
+    VerbInfo("undo", S.RETURN),
     VerbInfo("revert", S.RETURN),
     VerbInfo("centre", S.RETURN),
     VerbInfo("center", S.RETURN),

@@ -82,12 +82,17 @@ def _place(sides: tuple[str, ...], rows: list[list[Part]], columns: list[list[Pa
     return _at(rows, columns, row, column)
 
 
-def code_keys(codes: tuple[tuple[str, ...], ...], refs: Referents) -> list[Part]:
-    """The keypad's keys for ``codes``, in order; GroundingError when a key cannot be placed."""
+def code_keys(codes: tuple[tuple[str, ...], ...], refs: Referents, notes: list[str] | None = None) -> list[Part]:
+    """The keypad's keys for ``codes``, in order; GroundingError when a key cannot be placed. A keypad read as a phone
+    layout only once keys outside its grid were left out is a guess: said in ``notes``."""
     keys = refs.of_kind(PartKind.BUTTON)
     if len(keys) < 2:
         raise refs.refuse(f"{refs.asset.name} has no keypad to enter a code on")
     rows, columns = _grid(keys, refs)
+    left_out = sorted(k.link for k in keys if not any(k in row for row in rows))
+    if left_out and notes is not None and any(code[0] == "digit" for code in codes):
+        notes.append(f"read the keypad as a phone layout (1 2 3 / 4 5 6 / 7 8 9 / * 0 #) without {', '.join(left_out)}, which sit outside its grid: "
+                     "check the keys, or name them by place")
     out: list[Part] = []
     for code in codes:
         if code[0] == "digit":

@@ -19,10 +19,11 @@ def _before(refs: Referents, mention: Mention) -> list[Mention]:
     return [m for m in refs.said[:at] if m.kind is not None and not (m.pronoun or m.anaphor or m.other or m.is_object or m.plural)]
 
 
-def other_than_said(refs: Referents, mention: Mention, kind: PartKind | None) -> tuple[PartKind | None, set[str]]:
-    """(the kind "the other one" stands for, the joints of the single parts named before it)."""
-    if not mention.other:
-        return kind, set()
+def other_than_said(refs: Referents, mention: Mention, kind: PartKind | None) -> tuple[PartKind | None, set[str], list[str]]:
+    """(the kind "the other one" stands for, the joints of the single parts named before it, a note saying so). Only when no step has worked
+    a part of that kind yet: "open the top drawer, then the other one" is the one the step did not work."""
+    if not mention.other or (kind is not None and any(p.joint in refs.referenced for p in refs.of_kind(kind))):
+        return kind, set(), []
     named = _before(refs, mention)
     if kind is None and mention.anaphor:
         kind = named[-1].kind if named else None
@@ -36,4 +37,5 @@ def other_than_said(refs: Referents, mention: Mention, kind: PartKind | None) ->
             continue
         if len(parts) == 1:
             joints.add(parts[0].joint)
-    return kind, joints
+    links = sorted(p.link for p in refs.parts if p.joint in joints)
+    return kind, joints, [f"read '{mention.words}' as other than {', '.join(links)}, named before"] if links else []

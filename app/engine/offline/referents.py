@@ -85,8 +85,7 @@ class Referents:
 
     def ground(self, mention: Mention, *, prefer: list[Part] | None = None) -> Grounding:
         """The parts ``mention`` names (pronouns and objects are the caller's: see :meth:`pronoun`)."""
-        kind, said_before = other_than_said(self, mention, mention.kind if not mention.anaphor else (mention.kind or self.last_kind))
-        notes: list[str] = []
+        kind, said_before, notes = other_than_said(self, mention, mention.kind if not mention.anaphor else (mention.kind or self.last_kind))
         if kind is None and (kind := carrier_of(mention.head, self.obj.category, lambda k: bool(self.of_kind(k)))) is not None:
             notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
         if kind is None and mention.anaphor and "one" in mention.words.split() and not mention.other and (

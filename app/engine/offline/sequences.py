@@ -103,7 +103,7 @@ def is_code(builder: Builder, frame: Frame) -> bool:
 
 def enter_code(builder: Builder, act: Act) -> None:
     """"type 1-2-3-4 on the keypad": one press per key, in order."""
-    keys = code_keys(act.goal.codes, builder.refs)
+    keys = code_keys(act.goal.codes, builder.refs, builder.notes)
     for index, key in enumerate(keys):
         move = Move(key, "control", goal_for(act.goal, VerbSense.PRESS, key, builder.tracker).goal, words=f"key {index + 1}")
         here = act if index == 0 else replace(act, wait_before_s=0.0, parallel=False)

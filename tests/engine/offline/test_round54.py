@@ -113,11 +113,6 @@ def test_spun_by_hand_reaches_in() -> None:
     assert set(moved) == {"joint_0", "joint_4"}
 
 
-def test_undo_a_latch_unfastens_it() -> None:
-    reading = read_prompt("undo the left latch", asset("extra/box_100214"))
-    assert reading.extension.steps[-1].op == "unlatch"
-
-
 def test_a_key_outside_the_grid_is_left_out() -> None:
     """A keypad with an extra button of its own (an "open" key below the grid) still reads as a phone layout."""
     builder = Builder(asset("safe_101564"))

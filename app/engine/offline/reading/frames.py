@@ -198,8 +198,6 @@ def _sense(verb: str | None, particle: str | None, themes: list[Mention] | None 
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
     if particle is not None and particle in info.particles:  # not "turn the turntable round half a turn": a part turns, the object yaws
         return info.sense if info.particles[particle] is VerbSense.YAW and themes and all(m.kind is not None for m in themes) else info.particles[particle]
-    if themes and all(m.kind in info.kind_senses for m in themes):
-        return info.kind_senses[themes[0].kind]  # type: ignore[index]  # "undo the latch": unfasten it
     if particle in STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
                                                           VerbSense.CLOSE, VerbSense.RECLINE):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
