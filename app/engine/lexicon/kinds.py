@@ -6,8 +6,10 @@ Code never compares category names; it asks the entry (``info(kind).control``,
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 from enum import StrEnum
+from types import MappingProxyType
 from typing import Literal
 
 
@@ -139,7 +141,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
         KindInfo(PartKind.LATCH, ("latch", "lock", "catch", "bolt", "clasp", "latch knob", "latch handle"), labels=("lock", "latch"),
                  related=(PartKind.HANDLE, PartKind.KNOB, PartKind.LEVER), control=True, returns="self_return", latches_host=True,
                  press="turn", actuation_s=0.4, affordances=("unlatch",)),
-        KindInfo(PartKind.BUTTON, ("button", "key", "keypad", "key pad", "number pad", "push button", "pushbutton", "release button", "keypad key", "door release", "lid release",
+        KindInfo(PartKind.BUTTON, ("button", "key", "keypad", "key pad", "number pad", "push button", "pushbutton", "release button", "keypad key",
                                    "flush button"),
                  labels=("button",), related=(PartKind.SWITCH, PartKind.LEVER), control=True, returns="self_return",
                  operates=(PartKind.DOOR, PartKind.LID, PartKind.SCREEN, PartKind.WINDOW, PartKind.FLAP), operates_needs_name=True,
@@ -178,3 +180,5 @@ OPENABLE_ORDER: tuple[PartKind, ...] = (
     PartKind.DRAWER, PartKind.TRAY, PartKind.SHELF, PartKind.CONTAINER, PartKind.CAP,
 )
 """Which openable kinds "open the <object>" means first: doors and lids, then drawers."""
+NAMED_BY_USE: Mapping[str, PartKind] = MappingProxyType({"release": PartKind.BUTTON})
+"""Nouns that name a part by what it does ("the door release"): the kind it is when no link of the asset is named so."""

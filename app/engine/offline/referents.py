@@ -10,7 +10,7 @@ import numpy as np
 
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
-from app.engine.lexicon.kinds import PartKind, info
+from app.engine.lexicon.kinds import NAMED_BY_USE, PartKind, info
 from app.engine.lexicon.objects import carrier_of
 from app.engine.lexicon.words import GENERIC_PART_NOUNS, Side
 from app.engine.offline.describe import name_each
@@ -99,7 +99,8 @@ class Referents:
         if exact:
             return Grounding(parts=tuple(exact[:1]), how="name")  # "joint_1", "link_0": the URDF's own name
         if kind is None:
-            candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset)
+            candidates = by_name(self.parts, (mention.head, *mention.modifiers[-1:]), self.asset) or (  # "the door release": a release button
+                by_kind(self.parts, NAMED_BY_USE[mention.head], self.obj.up, singular=True)[0] if mention.head in NAMED_BY_USE else [])
             how: How = "name" if candidates else "none"
             generic = mention.head in GENERIC_PART_NOUNS or (mention.anaphor and "one" in mention.words.split() and (any(
                 m.head in GENERIC_PART_NOUNS and m.plural for m in self.said) or not self.last))  # "the upper one"; "open the top one"

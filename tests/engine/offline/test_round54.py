@@ -113,6 +113,12 @@ def test_spun_by_hand_reaches_in() -> None:
     assert set(moved) == {"joint_0", "joint_4"}
 
 
+def test_a_part_named_by_what_it_does() -> None:
+    """"jab the release", "press the door release": the release button (no link is named "release")."""
+    for prompt in ("My hands are covered in flour, so I'm going to jab the release with my knuckle.", "Press the door release."):
+        assert "joint_1" in _moved("extra/microwave_7128", prompt)
+
+
 def test_a_key_outside_the_grid_is_left_out() -> None:
     """A keypad with an extra button of its own (an "open" key below the grid) still reads as a phone layout."""
     builder = Builder(asset("safe_101564"))

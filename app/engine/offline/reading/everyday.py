@@ -174,6 +174,8 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             t = Token("want", "want", t.start, t.end)  # "the movers want the fridge turned right round": a wish, said for them
         if t.text in ("shown", "displayed", "pictured", "rendered", "depicted") and after == "with" and out and out[-1].text not in ("is", "be", "was"):
             continue  # "I want the bedside table shown with its drawer pulled open": with its drawer open
+        if t.text == "release" and out and out[-1].text in ("door", "lid") and before == out[-1].text and kind_of_word(after) is None:
+            out.pop()  # "press the door release": the release (a part named by what it does: its own name, else a button)
         if t.text == "whoever" and (not out or out[-1].is_sentence_end) and (left := next((k for k in range(i + 2, min(len(tokens), i + 9))
                                                                                          if tokens[k].text == "left"), None)) is not None:
             out.append(Token("somebody", "somebody", t.start, tokens[left - 1].end, corrected_from=" ".join(w.text for w in tokens[i:left])))
@@ -286,9 +288,6 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             del out[-2:]  # "let it fall down on the side that's facing me": toward me
             out.extend((Token("toward", "toward", t.start, t.end), Token("me", "me", t.start, tokens[viewer - 1].end)))
             skip = viewer - 1
-            continue
-        elif t.text == "release" and before in ("the", "its", "that", "door") and kind_of_word(after) is None:
-            out.extend((t, Token("button", "button", t.start, t.end)))  # "jab the release with my knuckle": the release button
             continue
         elif t.text == "left" and (before in _LEAVERS or (out and out[-1].text in _LEAVERS) or after in ("me", "us", "him", "her", "them") or (before in ("'s", "has", "have", "'ve", "had", "'d") and i > 1 and tokens[i - 2].text in _LEAVERS)):
             t = Token("had", "have", t.start, t.end)  # "somebody left this door open": a verb, no side
