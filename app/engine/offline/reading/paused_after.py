@@ -4,6 +4,7 @@ pause" was read as a part (refused) and "after 2 seconds" as how long the step t
 
 from __future__ import annotations
 
+from app.engine.offline.reading.framing import scan
 from app.engine.offline.reading.token import Token
 
 _ARTICLES = frozenset({"a", "an", "one"})
@@ -27,19 +28,17 @@ def _pause_at(tokens: list[Token], i: int) -> tuple[int, list[str]] | None:
     return None
 
 
+def _paused_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
+    found = _pause_at(tokens, i)
+    if found is None:
+        return None
+    end, words = found
+    start = max((k + 1 for k, t in enumerate(out) if t.text in _BOUNDS), default=0)
+    at = tokens[i]
+    wait = [Token(w, w, at.start, tokens[end - 1].end, number=float(w) if w.replace(".", "").isdigit() else None) for w in words]
+    out[start:start] = [*wait, Token(",", ",", at.start, at.start), Token("then", "then", at.start, at.start)]
+    return end
+
+
 def paused_after(tokens: list[Token]) -> list[Token]:
-    out: list[Token] = []
-    i = 0
-    while i < len(tokens):
-        found = _pause_at(tokens, i)
-        if found is None:
-            out.append(tokens[i])
-            i += 1
-            continue
-        end, words = found
-        start = max((k + 1 for k, t in enumerate(out) if t.text in _BOUNDS), default=0)
-        at = tokens[i]
-        wait = [Token(w, w, at.start, tokens[end - 1].end, number=float(w) if w.replace(".", "").isdigit() else None) for w in words]
-        out[start:start] = [*wait, Token(",", ",", at.start, at.start), Token("then", "then", at.start, at.start)]
-        i = end
-    return out
+    return scan(tokens, _paused_step)
