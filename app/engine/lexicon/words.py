@@ -138,7 +138,8 @@ GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel"
 PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator", "thief",
                           "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse", "waiter", "janitor", "guy",
                           "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "grandpa", "mum", "granny", "grandad", "grandfather", "grandmother", "wife",
-                          "husband", "son", "daughter", "sister", "brother", "flatmate", "roommate", "friend", "partner", "boss", "effector", "end-effector",
+                          "husband", "son", "daughter", "sister", "brother", "flatmate", "roommate", "friend", "partner", "boss", "detective", "spy", "robber",
+                          "intruder", "officer", "scientist", "effector", "end-effector",
                           "manipulator", "gripper"})
 """People (and robot hands) in a scene: never a part ("the thief yanks the lower drawer open": the drawer)."""
 AGENT_NOUNS = PERSON_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",

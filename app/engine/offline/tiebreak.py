@@ -26,6 +26,8 @@ def tie_break(mention: Mention, kind: PartKind | None, kept: list[Part], obj: Ob
     called = by_name(kept, (mention.head,), asset)
     if len(called) == 1:
         return called[0], f"the one its asset calls '{mention.head}'"
+    if not similar(kept) and {"combination", "dial"} & set(mention.words.split()) and kind is PartKind.KNOB:
+        return min(kept, key=lambda p: p.geometry.size), "the smallest knob (a combination dial beside a handle wheel)"
     if not similar(kept):
         return max(kept, key=lambda p: p.geometry.size), f"the largest {kind.value if kind is not None else mention.head}"
     return None

@@ -267,3 +267,26 @@ def test_the_whole_object_dragged_out_from_under() -> None:
     base = outcome.trajectory.base_translation
     assert float(np.linalg.norm(np.asarray(base[-1]) - np.asarray(base[0]))) == pytest.approx(0.4, abs=0.02)
     assert not _moved("dishwasher_11700", "Drag the entire dishwasher 40 cm out from under the counter, toward me - I'm standing at its door.")
+
+
+@pytest.mark.parametrize(("name", "prompt", "joints"), [  # round 58
+    ("trash_can_102181", "In the story, Mia stamps on the pedal of the kitchen bin and the lid flies up. Animate that moment.", {"joint_0", "joint_1"}),
+    ("safe_101593", "The heist scene: the thief spins the round combination dial until the safe unlocks, then hauls the door open.",
+     {"joint_2", "joint_0"}),  # the combination dial is the smaller knob, not the handle wheel
+    ("extra/safe_101623", "Scene: the detective spins the small dial near the top of the safe door, listens, then pushes the heavy door shut.",
+     {"joint_2", "joint_1"}),
+])
+def test_round58_part_meant(name: str, prompt: str, joints: set[str]) -> None:
+    assert set(_moved(name, prompt)) == joints
+
+
+def test_an_amount_said_after_a_purpose_is_the_step_before() -> None:
+    """"Spin the toaster round to face the other way — a half turn": one half turn (it had been two, back to where it was)."""
+    steps = read_prompt("Spin the toaster round to face the other way — a half turn.", asset("extra/toaster_103473")).extension.steps
+    assert len(steps) == 1 and steps[0].base is not None and abs(steps[0].base.yaw_rad) == pytest.approx(math.pi)
+
+
+def test_maintain_is_a_hold() -> None:
+    steps = read_prompt("Rotate the faucet's single lever to its full left position, maintain that position for three seconds, and then return it "
+                        "to centre.", asset("extra/faucet_1343")).extension.steps
+    assert steps[0].hold_s == pytest.approx(3.0)

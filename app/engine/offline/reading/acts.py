@@ -212,9 +212,10 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue
         if acts and not acts[-1].condition and _rolls_along(frame, acts[-1].goal):
             continue  # "roll the bin 1 m forward - the wheels should turn as it goes": they roll with it already
-        if acts and _appositive_amount(acts[-1], frame):
-            goal = acts[-1].goal  # "roll the wheel around once, a full revolution": how far the step before goes
-            acts[-1] = replace(acts[-1], goal=replace(goal, quantities=replace(goal.quantities, amount=frame.quantities.amount)))
+        said_for = -2 if len(acts) > 1 and acts[-1].goal.link is Link.PURPOSE else -1  # "spin it round to face the other way, a half turn"
+        if acts and _appositive_amount(acts[said_for], frame):
+            goal = acts[said_for].goal  # "roll the wheel around once, a full revolution": how far the step before goes
+            acts[said_for] = replace(acts[said_for], goal=replace(goal, quantities=replace(goal.quantities, amount=frame.quantities.amount)))
             continue
         if frame.verb is None and frame.simultaneous and all(m.collective or m.pronoun for m in frame.themes) and len(acts) > 1:
             acts[-1] = replace(acts[-1], parallel=True)  # "..., both at the same time"

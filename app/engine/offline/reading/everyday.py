@@ -130,6 +130,17 @@ _MOVERS = frozenset({"mover", "removal", "client", "director", "animator", "desi
 _PARTICIPLES = frozenset({"fallen", "stuck", "broken", "bent", "swung", "sprung", "slid", "gone", "come", "dropped", "flopped", "popped"})
 
 
+_NOT_NAMES = frozenset({"it", "this", "that", "he", "she", "they", "who", "which", "what", "everything", "nothing", "something", "one", "each",
+                        "then", "and", "now", "just", "also", "still", "there", "here", "gravity", "time"})
+
+
+def _a_name(word: str) -> bool:
+    """A word no dictionary of ours knows, said before a verb (a person's name in a story: "Mia", "Grandad Joe")."""
+    from app.engine.offline.reading.spelling import domain_words
+
+    return word not in domain_words() and kind_of_word(word) is None and word not in OBJECT_NOUNS and word not in _NOT_NAMES
+
+
 def _first_person(out: list[Token]) -> bool:
     """The sentence written so far begins with the user ("I'm wrapping a present and ...")."""
     start = max((k + 1 for k, w in enumerate(out) if w.is_sentence_end), default=0)
@@ -176,6 +187,9 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue  # "I want the bedside table shown with its drawer pulled open": with its drawer open
         if t.text == "release" and out and out[-1].text in ("door", "lid") and before == out[-1].text and kind_of_word(after) is None:
             out.pop()  # "press the door release": the release (a part named by what it does: its own name, else a button)
+        if before in ("", ",", ".", "and", "then", "when", "as") and t.text.isalpha() and len(t.text) > 2 and after.endswith("s") and after[:-1] in VERBS and (
+                _a_name(t.text)):
+            t = Token("someone", "someone", t.start, t.end)  # "Mia stamps on the pedal of the kitchen bin": a person in the story
         if t.text == "whoever" and (not out or out[-1].is_sentence_end) and (left := next((k for k in range(i + 2, min(len(tokens), i + 9))
                                                                                          if tokens[k].text == "left"), None)) is not None:
             out.append(Token("somebody", "somebody", t.start, tokens[left - 1].end, corrected_from=" ".join(w.text for w in tokens[i:left])))

@@ -277,7 +277,8 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out.append(Token(f"{side}_of", f"{side}_of", t.start, tokens[i + 4].end))  # "the knob on the left side of the handle": left of it
         return i + 5
     if t.text in ("fly", "flies", "flew") and after[:1] and after[0] in ("open", "shut", "closed", "up", "out", "back", "wide_open"):
-        out.append(replace(t, text="swing", lemma="swing"))  # "both doors fly open": swing open ("fly the bin to the moon" is no motion)
+        said = {"flies": "swings", "flew": "swung"}.get(t.text, "swing")  # "the lid flies up": it swings up (its tense kept)
+        out.append(replace(t, text=said, lemma="swing"))  # "both doors fly open": swing open ("fly the bin to the moon" is no motion)
         return i + 1
     if t.text == "complete" and after[:1] and after[0].rstrip("s") in ("revolution", "turn", "rotation", "spin"):
         out.append(replace(t, text="full", lemma="full"))  # "one complete revolution": a full one
