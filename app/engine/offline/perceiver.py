@@ -136,6 +136,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it tells what the user did, not a step")  # "I put my bowl in off-centre"
                 continue
             if index < len(acts) - 1 and act.goal.subject_theme and {"has", "have"} & set(act.goal.text.split()[1:5]) and act.goal.verb is not None and (
+                    not act.condition and act.goal.link is not Link.CONDITION) and (
                     not act.goal.text.startswith(("i ", "you ", "we "))):  # "the handle has flopped over the side - stand it straight up"
                 builder.notes.append(f"read '{act.goal.text}' as how it is now, not a step")
                 set_topic(builder, replace(act.goal, stative=True, verb=None))
