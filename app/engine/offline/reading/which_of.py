@@ -5,6 +5,7 @@ it was lost."""
 
 from __future__ import annotations
 
+from app.engine.offline.reading.framing import scan
 from app.engine.offline.reading.token import Token
 
 _IS = frozenset({"is", "'s", "sits", "looks"})
@@ -21,26 +22,24 @@ def _adjective_end(tokens: list[Token], j: int) -> int | None:
     return end if end == len(tokens) or tokens[end].is_punct or tokens[end].text in ("and", "then", "please") else None  # not "nearer the floor"
 
 
+def _chosen(tokens: list[Token], i: int, out: list[Token]) -> int | None:
+    """At "whichever": write the choice it says into ``out``; the index after what it read, or None."""
+    t = tokens[i]
+    if t.text != "whichever":
+        return None
+    liked = next((j for j in range(i + 1, min(len(tokens) - 1, i + 5)) if tokens[j].text in ("you", "u") and tokens[j + 1].text in _LIKED), None)
+    if liked is not None:  # "open whichever drawer you like": any drawer
+        out += [Token("any", "any", t.start, t.end), *tokens[i + 1:liked]]
+        return liked + 2
+    k = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text == "one")
+    is_at = next((j for j in range(k, min(len(tokens), k + 7)) if tokens[j].text in _IS), None)
+    end = _adjective_end(tokens, is_at + 1) if is_at is not None and is_at > k else None
+    if end is None or is_at is None:
+        return None
+    adjective = next(tokens[j] for j in range(is_at + 1, end) if tokens[j].text not in ("the", "one"))
+    out += [Token("the", "the", t.start, t.end), adjective, *tokens[k:is_at]]  # "of the 2 oven doors" or "drawer"
+    return end
+
+
 def which_of(tokens: list[Token]) -> list[Token]:
-    out: list[Token] = []
-    i = 0
-    while i < len(tokens):
-        t = tokens[i]
-        if t.text == "whichever":
-            k = i + 1 + (i + 1 < len(tokens) and tokens[i + 1].text == "one")
-            liked = next((j for j in range(i + 1, min(len(tokens) - 1, i + 5)) if tokens[j].text in ("you", "u") and tokens[j + 1].text in _LIKED), None)
-            if liked is not None:  # "open whichever drawer you like": any drawer
-                out += [Token("any", "any", t.start, t.end), *tokens[i + 1:liked]]
-                i = liked + 2
-                continue
-            is_at = next((j for j in range(k, min(len(tokens), k + 7)) if tokens[j].text in _IS), None)
-            end = _adjective_end(tokens, is_at + 1) if is_at is not None and is_at > k else None
-            if end is not None and is_at is not None:
-                adjective = next(tokens[j] for j in range(is_at + 1, end) if tokens[j].text not in ("the", "one"))
-                named = tokens[k:is_at]  # "of the 2 oven doors" or "drawer"
-                out += [Token("the", "the", t.start, t.end), adjective, *named]
-                i = end
-                continue
-        out.append(t)
-        i += 1
-    return out
+    return scan(tokens, _chosen)
