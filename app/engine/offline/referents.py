@@ -140,8 +140,9 @@ class Referents:
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
         if (mention.possessive or not (_qualified(mention) or mention.plural)) and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
             candidates = self._behind(hosts[0], candidates) or candidates  # "open the top door; its rack ...": the rack behind it
-        if mention.owner is not None and mention.owner.pronoun and len(owners) == 1 and owners[0].kind is not None and info(owners[0].kind).hinged:
-            candidates, owners = (self._behind(owners[0], candidates), []) if self._behind(owners[0], candidates) else (candidates, owners)  # "shelves inside it"
+        if mention.owner is not None and mention.owner.pronoun and len(owners) == 1 and owners[0].kind is not None and info(owners[0].kind).hinged and (
+                inside := self._behind(owners[0], candidates)):
+            candidates, owners = inside, []  # "both shelves inside it": behind the door "it" is
         kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced | said_before)
         if mention.relation is not None and kept:
             kept = self._placed(mention.relation, kept)
