@@ -21,6 +21,11 @@ SAME_MEANING: Mapping[str, str] = MappingProxyType({
     "shall": "must", "shan't": "mustn't", "apart_from": "except", "except_for": "except", "aside_from": "except", "other_than": "except", "last_of_all": "finally", "a_tiny_bit": "a_little_bit", "a_wee_bit": "a_little_bit",
     "a_teeny_bit": "a_little_bit",
     "'s_got": "has", "'s_been": "has", "has_got": "has", "have_got": "have", "'ve_got": "have", "i_only_want": "i_want", "i_just_want": "i_want",
-    "i_really_want": "i_want", "i_only_need": "i_need", "i_just_need": "i_need", "i_really_need": "i_need"})
+    "i_really_want": "i_want", "i_only_need": "i_need", "i_just_need": "i_need", "i_really_need": "i_need",
+    "which_means_that": ";", "which_means": ";", "that_means_that": ";", "that_means": ";", "this_means_that": ";", "this_means": ";",
+    "gust_of_wind": "gust", "puff_of_wind": "gust", "blast_of_wind": "gust", "gust_of_air": "gust", "rush_of_air": "gust"})
 """Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):
 replaced without a note, as no guess is made."""
+WHILE_PHRASES = frozenset({"the_whole_time", "the_entire_time", "all_the_while", "all_the_time", "for_as_long_as", "the_whole_while"})
+"""Phrases that say "while" when a clause follows ("keep the door open the whole time the plate is going round"); at the end
+of a clause ("hold it open the whole time") they say only how long."""

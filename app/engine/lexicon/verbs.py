@@ -44,7 +44,7 @@ class VerbSense(StrEnum):
     """Take hold of a part: no motion of its own (what follows moves it)."""
 
 
-Motion = Literal["any", "hinge", "slide"]
+Motion = Literal["any", "hinge", "slide", "twist"]
 _NONE: Mapping[str, VerbSense] = MappingProxyType({})
 
 
@@ -59,7 +59,8 @@ class VerbInfo:
     displaces: bool = False
     """A press-type verb that also carries a free object away ("push the box", "kick the bin")."""
     motion: Motion = "any"
-    """The kind of motion the verb names: a hinge ("fold", "swing") or a straight slide ("slide")."""
+    """The kind of motion the verb names: a hinge ("fold", "swing"), a straight slide ("slide") or a twist about the part's
+    own axis ("twist", "rotate", "screw"), which a part that only slides cannot make."""
     implies: tuple[PartKind, ...] = ()
     """Kinds a bare use works ("flush the toilet" -> its lever or button)."""
     stative: bool = False
@@ -121,7 +122,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("prod", S.PRESS),
     VerbInfo("hit", S.PRESS, displaces=True, object_sense=S.MOVE),
     VerbInfo("punch", S.PRESS, _p(**{"in": S.PRESS}), displaces=True, object_sense=S.MOVE),
-    VerbInfo("click", S.PRESS),
+    VerbInfo("click", S.PRESS, _p(shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN, down=S.PRESS, back=S.RETURN, into_place=S.CLOSE)),  # "the latch clicks closed"
     VerbInfo("squeeze", S.PRESS),
     VerbInfo("pump", S.PRESS),
     VerbInfo("type", S.PRESS, _p(**{"in": S.PRESS})),
@@ -155,19 +156,19 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("tug", S.PULL_OUT, _PULLING, object_sense=S.MOVE),
     # turn / spin
     VerbInfo("turn", S.TURN, _TURNING, object_sense=S.YAW),
-    VerbInfo("rotate", S.TURN, _TURNING, object_sense=S.YAW),
-    VerbInfo("twist", S.TURN, _TURNING),
+    VerbInfo("rotate", S.TURN, _TURNING, object_sense=S.YAW, motion="twist"),
+    VerbInfo("twist", S.TURN, _TURNING, motion="twist"),
     VerbInfo("crank", S.TURN),
     VerbInfo("wind", S.TURN, _p(up=S.TURN)),
     VerbInfo("set", S.TURN, _p(down=S.LOWER, back=S.RETURN)),
-    VerbInfo("swivel", S.TURN, _TURNING, object_sense=S.YAW),
+    VerbInfo("swivel", S.TURN, _TURNING, object_sense=S.YAW, motion="twist"),
     VerbInfo("pivot", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("yaw", S.YAW, object_sense=S.YAW),  # about the vertical axis: the whole object
     VerbInfo("angle", S.TURN, _TURNING, object_sense=S.YAW),
     VerbInfo("spin", S.SPIN, _p(around=S.SPIN, round=S.SPIN), object_sense=S.YAW),
     VerbInfo("revolve", S.SPIN),
-    VerbInfo("screw", S.TURN, _p(on=S.CLOSE, off=S.OPEN, down=S.CLOSE, shut=S.CLOSE)),
-    VerbInfo("unscrew", S.OPEN),
+    VerbInfo("screw", S.TURN, _p(on=S.CLOSE, off=S.OPEN, down=S.CLOSE, shut=S.CLOSE), motion="twist"),
+    VerbInfo("unscrew", S.OPEN, motion="twist"),
     VerbInfo("loosen", S.OPEN),
     VerbInfo("tighten", S.CLOSE),
     VerbInfo("run", S.SPIN),
@@ -212,6 +213,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("follow", S.MOVE, _p(down=S.LOWER, up=S.RAISE, out=S.PULL_OUT, open=S.OPEN, back=S.RETURN)),
     VerbInfo("drag", S.MOVE, object_sense=S.MOVE),
     VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),
+    VerbInfo("blow", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, back=S.RETURN)),  # "a gust blows the door shut"
     VerbInfo("nudge", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("kick", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("carry", S.MOVE, object_sense=S.MOVE),
@@ -264,6 +266,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("hold", S.HOLD, _p(down=S.PRESS, open=S.HOLD, up=S.HOLD), stative=True),
     VerbInfo("keep", S.HOLD, stative=True),
     VerbInfo("rest", S.HOLD, stative=True),
+    VerbInfo("lie", S.HOLD, stative=True),  # "let it lie against the rim": it stays where it was put
     VerbInfo("maintain", S.HOLD, stative=True),  # "maintain that position for three seconds"
     VerbInfo("leave", S.HOLD, stative=True),
     VerbInfo("wait", S.WAIT, stative=True),

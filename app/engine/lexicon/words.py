@@ -51,8 +51,12 @@ SIZES: Mapping[str, str] = MappingProxyType({
 SHAPE_WORDS = frozenset({"round", "flat", "square", "curved", "wire", "glass", "metal", "plastic", "wooden", "rubber", "clear", "flap-like",
                          "hinged", "sliding", "folding", "swinging", "rotating", "spinning", "pull-out", "pop-up", "push", "spring-loaded"})
 """What a part looks like or how it moves, not what it is: with an unknown name ("the hinged glass") enough to choose by."""
+UNJOINTED_NOUNS = frozenset({"pocket", "pouch", "strap", "cord", "cable", "plug", "zipper", "tag", "label", "sticker", "logo", "wheels"})
+"""Things objects carry that are never a joint's part ("unzip the front pocket" of a suitcase whose only zip is its lid's):
+named and missing, they are refused, never read as the one part the verb fits."""
 HINGE_WORDS = frozenset({"hinged", "folding", "swinging", "flap-like"})
-SLIDE_WORDS = frozenset({"sliding", "pull-out", "pop-up"})
+SLIDE_WORDS = frozenset({"sliding", "pull-out", "pop-up", "telescopic", "telescoping", "extendable", "retractable", "trolley"})
+"""Words before a part noun that say it slides ("the telescopic trolley handle"): a part that only swings is not it."""
 COLLECTIVE = frozenset({"both", "all", "every", "each"})
 DETERMINERS = frozenset({"the", "a", "an", "some", "its", "their", "this", "that", "these", "those", "my", "your", "his", "her", "our", "one's", "it's"})
 PRONOUNS = frozenset({"it", "them", "they", "itself"})
@@ -142,7 +146,12 @@ PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "c
                           "intruder", "officer", "scientist", "effector", "end-effector",
                           "manipulator", "gripper"})
 """People (and robot hands) in a scene: never a part ("the thief yanks the lower drawer open": the drawer)."""
-AGENT_NOUNS = PERSON_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",
+CAUSER_NOUNS = frozenset({"draft", "draught", "wind", "breeze", "gust", "steam", "pressure", "cat", "dog", "puppy", "kitten", "gravity",
+                          "vibration", "earthquake", "tremor"})
+"""Things and animals that move a part in a scene ("a draft catches the door and pushes it partway open", "the steam keeps
+bumping the lid up"): like a person, the subject of what happens, never a part."""
+ACTOR_NOUNS = PERSON_NOUNS | CAUSER_NOUNS
+AGENT_NOUNS = PERSON_NOUNS | CAUSER_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",
                                         "audience"})
 """Who (or what) acts on the object in a scene: a clause whose subject this is and that names no part ("then the arm lets
 go") says nothing to animate."""
@@ -177,7 +186,8 @@ HOLD_WORDS = frozenset({"keep", "hold", "leave", "stay", "remain"})
 MULTIWORD: tuple[str, ...] = (
     # joined into one token ("at_the_same_time"), longest first
     "at the same time as", "at the same time", "in order to", "after it", "after this", "once it is done", "once that is done",
-    "when that is done", "so as to", "so that", "after that", "and then", "and after that",
+    "when that is done", "so as to", "so that", "which means that", "which means", "that means that", "that means", "this means that",
+    "this means", "gust of wind", "puff of wind", "blast of wind", "gust of air", "rush of air", "the whole time", "the entire time", "all the while", "all the time", "for as long as", "the whole while", "after that", "and then", "and after that",
     "and finally", "once done", "when done", "after which", "followed by", "all the way", "as far as it will go", "as far as it goes",
     "as far as possible", "most of the way", "a little bit", "a little", "a bit", "a tad", "just a crack", "a crack", "half way",
     "part way", "three quarters", "a quarter of the way", "a third of the way", "a quarter", "a third", "one third", "two thirds",

@@ -21,9 +21,11 @@ from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
 from app.engine.offline import mechanisms as mech
 from app.engine.offline import sequences as seq
 from app.engine.offline.conditions import condition, exclude
+from app.engine.offline.detached import check_detached
 from app.engine.offline.explain import Explanation
-from app.engine.offline.goals import beyond_limit, goal_for, impossible, shown, travel_left
+from app.engine.offline.goals import goal_for
 from app.engine.offline.grounding import Part, movable_parts, openable
+from app.engine.offline.motion_fit import check_motion, check_press
 from app.engine.offline.moves import Move
 from app.engine.offline.object_parts import object_parts, starts
 from app.engine.offline.only_part import only_part, sole_fit
@@ -38,6 +40,7 @@ from app.engine.offline.revisions import coast, elaborates, hold, means_on_goal,
 from app.engine.offline.side_apart import side_apart
 from app.engine.offline.strays import stray
 from app.engine.offline.tracker import Tracker
+from app.engine.offline.travel import beyond_limit, impossible, shown, travel_left
 from app.engine.offline.whole_object import moves_object
 
 REACHED = 1e-6
@@ -228,8 +231,9 @@ class Builder:
         if sense is VerbSense.RELEASE and effects_parts and all(mech.is_control(p) for p in effects_parts) and not any(
                 self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
-        self._check_motion(goal, effects_parts)
-        self._check_press(goal, sense, effects_parts)
+        check_motion(self.refs, goal, effects_parts)
+        check_detached(self.refs, goal, effects_parts)
+        check_press(self.refs, self.tracker, goal, sense, effects_parts, self.notes)
         if elaborates(self, act, sense, effects_parts):
             return
         self.mentioned.update(p.joint for p in (*effects_parts, *(m.part for m in controls)))
@@ -285,30 +289,6 @@ class Builder:
 
     def pressed(self, part: Part) -> bool:
         return abs(self.tracker.value(part.joint) - part.geometry.rest) > REACHED
-
-    def _check_press(self, frame: Frame, sense: VerbSense, parts: list[Part]) -> None:
-        """A button that cannot go deeper into its face cannot be pressed: refuse rather than pull it out."""
-        if sense not in (VerbSense.PRESS, VerbSense.PUSH_IN, VerbSense.OPERATE):
-            return
-        for part in (p for p in parts if p.kind is not None and info(p.kind).press == "into_face" and p.geometry.type == "prismatic"):
-            geometry = part.geometry
-            if geometry.press_value is None or abs(geometry.press_value - self.tracker.value(part.joint)) < REACHED:
-                raise self.refs.refuse(f"'{frame.text}': the {_label(part)} ({part.link}) cannot be pressed in any further")
-            if geometry.press_outward:
-                self.notes.append(f"{part.link} ({part.joint}) rests at the deep end of its travel: pressed along the travel it has (outward)")
-
-    def _check_motion(self, frame: Frame, parts: list[Part]) -> None:
-        """A verb naming a motion the part cannot make is refused, not guessed: "fold down the tray"
-        on a part that only slides, "slide the sash 20 cm" on one that only swings."""
-        motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
-        named = [p for p in parts if not mech.is_control(p)]
-        if not named or motion == "any":
-            return
-        if motion == "hinge" and all(p.geometry.type == "prismatic" for p in named):
-            raise self.refs.refuse(f"'{frame.verb}' swings a part about a hinge, but the {_label(named[0])} only slides")
-        sideways = frame.quantities.direction == "sideways" or (frame.quantities.amount is not None and frame.quantities.amount.unit == "m")
-        if motion == "slide" and sideways and all(p.geometry.type != "prismatic" for p in named):
-            raise self.refs.refuse(f"'{frame.text}' slides a part in a straight line, but the {_label(named[0])} only rotates")
 
     def _nothing_known(self, frame: Frame) -> bool:
         """"It's getting drafty", "check on the roast": no verb we know, and no part or object named."""

@@ -44,7 +44,7 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
         controls, effects = _unlatch(builder, act, controls, effects)
         if not controls and not effects and not act.results:
             return
-    effects = _results(builder, act, controls, effects, [m.part for m in unlatched])
+    effects, freed = _results(builder, act, controls, effects, [m.part for m in unlatched])
     direct_controls = [m for m in effects if m.role == "control"]
     if not controls and direct_controls:
         controls = direct_controls
@@ -116,7 +116,7 @@ def complete(builder: Builder, act: Act, sense: VerbSense, controls: list[Move],
     if VerbSense.LOCK in (sense, verb.sense if verb is not None else None) and not controls:
         _fasten(builder, act, kept)  # "latch the toolbox shut": its verb locks, its result closes
     _brief_fall(builder, act, controls, kept)
-    builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or [m.part for m in controls], [m.part for m in controls])
+    builder.refs.remember([m.part for m in kept] or [m.part for m in unlatched] or freed or [m.part for m in controls], [m.part for m in controls])
 
 
 _OPEN_SENSES = frozenset({VerbSense.OPEN, VerbSense.PULL_OUT, VerbSense.RAISE, VerbSense.OPERATE, VerbSense.MOVE})
@@ -152,15 +152,18 @@ def _merge_into_last(builder: Builder, effects: list[Move]) -> None:
     builder.explanation.add_to_last(moves, starts, [m.words for m in effects])  # the understanding shows the door it freed
 
 
-def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Move], implicit: list[Part]) -> list[Move]:
+def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Move], implicit: list[Part]) -> tuple[list[Move], list[Part]]:
     """Stated results refine the amount of an effect already there, or add the effect (``implicit``: what
-    a subjectless result is about, e.g. the door an unlatching freed)."""
+    a subjectless result is about, e.g. the door an unlatching freed); and the parts a result said were freed ("turn the
+    wheel; with the door freed, swing it open": "it" is the door)."""
     out = list(effects)
     freed: list[Part] = []
     for frame in act.results:
         if frame.quantities.direction is None and act.goal.quantities.direction is not None and all(m.pronoun for m in frame.themes):
             # "fold the handle forward until it lies flat": flat, reached moving forward
             frame = replace(frame, quantities=replace(frame.quantities, direction=act.goal.quantities.direction))
+        if {"can", "could", "may"} & set(frame.text.split()) and (frame.verb is None or frame.verb not in frame.text):
+            continue  # "drop its door so the rack can come out": what it makes possible, no motion of the rack
         sense = frame.sense or act.goal.sense or VerbSense.OPEN
         if sense is VerbSense.UNLATCH:
             named = tuple(m for m in frame.themes if not m.pronoun)  # "...; that unlatches the door and it falls open": it is the door
@@ -170,6 +173,9 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
                 freed = []
             continue  # "... so the door unlocks": no motion of its own
         themes = tuple(m for m in frame.themes if not m.pronoun)
+        if themes and all(m.kind is not None and builder.refs.stands_in(m) for m in themes):
+            builder.notes.append(f"read '{frame.text}' as what the step does: {builder.asset.name} has no {themes[0].kind}")
+            continue  # "turn the handle so that the bolts retract": no bolts to move, not another control standing in for them
         current = freed or [m.part for m in out] or implicit or [m.part for m in controls]
         try:
             parts, words = builder.ground(frame, sense, themes, prefer=current) if themes else (current or builder.refs.pronoun(), [])
@@ -192,7 +198,7 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
                 said = words[index] if index < len(words) else part.link
                 out.append(Move(part, "effect" if controls else "direct", goal, words=said, loose=loose))
                 builder.mentioned.add(part.joint)
-    return out
+    return out, freed
 
 
 def _unlatch(builder: Builder, act: Act, controls: list[Move], effects: list[Move]) -> tuple[list[Move], list[Move]]:

@@ -45,6 +45,9 @@ def condition(builder: Builder, act: Act) -> None:
             return
         if any(not m.is_object for m in frame.themes):
             frame = replace(frame, themes=tuple(m for m in frame.themes if not m.is_object))
+        there = next((k for k, w in enumerate(frame.text.split()) if w in ("there's", "there")), None)
+        if there is not None and any(m.start > there and m.kind is not None for m in frame.themes):  # "on the end opposite the dial
+            frame = replace(frame, themes=tuple(m for m in frame.themes if m.start > there))  # there's a small slider": the slider
         if any(m.kind is not None for m in frame.themes):  # "The sodas are behind the left-hand fridge door - ...": the door
             frame = replace(frame, themes=tuple(m for m in frame.themes if m.kind is not None or m.pronoun))
         try:

@@ -9,6 +9,7 @@ amount gets what it is measured from: the closed end for openings ("to 90 degree
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, replace
 
 import numpy as np
@@ -202,8 +203,10 @@ def _spin(quantities: Quantities, geometry: JointGeometry, tracker: Tracker) -> 
     return Goal(state="velocity", omega_radps=round(omega, 9), duration_s=round(duration, 9))
 
 
-_END_STATES = frozenset({"just a crack", "a crack", "ajar", "barely"})
-"""Loose amounts that name where a part ends ("leave the door open just a crack"), measured from closed wherever it rests."""
+_OTHER_END = re.compile(r"\bto (the|its) (other|opposite) (end|side|stop|limit)\b")
+_END_STATES = frozenset({"just a crack", "a crack", "ajar", "barely", "partway", "part way", "partly", "partially"})
+"""Loose amounts that name where a part ends ("leave the door open just a crack", "pushes it partway open"), measured from
+closed wherever it rests."""
 
 
 def _rate_times_duration(frame: Frame, geometry: JointGeometry) -> Frame:
@@ -231,6 +234,10 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
     if quantities.target is not None and any(m.head in (part.joint, part.link) and "_" in m.head for m in frame.themes):
         # "set joint_1 to -1.0 rad": a raw joint value, for users who name joints as the URDF does
         return GoalChoice(Goal(state="value", value=round(quantities.target, 9), measured_from="current"))
+    if _OTHER_END.search(frame.text) and geometry.lower is not None and geometry.upper is not None and geometry.type != "continuous":
+        now = tracker.value(part.joint)  # "slide it all the way to the other end": the end furthest from where it is
+        far: GoalState = "upper" if geometry.upper - now >= now - geometry.lower else "lower"
+        return GoalChoice(Goal(state=far), (f"read 'the other end' as the {far} limit of {part.joint}, the end furthest from where it is",))
     state = state_for(frame, sense, part, tracker)
     if state == "velocity" and not counted:  # "work the tray": a spinner set going, at the default speed unless told
         return GoalChoice(_spin(quantities, geometry, tracker))
@@ -249,8 +256,8 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         value, unit = DEFAULT_UNSCREW_RAD, "rad"
     if value is None and quantities.times > 1 and sense in (VerbSense.TURN, VerbSense.SPIN, VerbSense.YAW) and geometry.type in ("revolute", "continuous"):
         value, unit = quantities.times * 2 * math.pi, "rad"  # "rotate it twice"
-    if state in ("cw", "ccw") and quantities.sense is None and (value is None or (unit == "fraction" and value >= 1.0)) and (
-            geometry.type != "continuous" and sense in _FLIPPABLE):  # "turn the handle (as far as it goes)": the way it can turn
+    if state in ("cw", "ccw") and quantities.sense is None and (value is None or (unit == "fraction" and value >= 1.0) or unit == "rad") and (
+            geometry.type != "continuous" and sense in _FLIPPABLE):  # "turn the handle (a half turn)": the way it can turn
         ahead = resolve(Goal(state=state), geometry, tracker.obj, tracker.asset, tracker.value(part.joint)).value
         if ahead is not None and abs(ahead - tracker.value(part.joint)) < LIMIT_EPS:
             state = "ccw" if state == "cw" else "cw"  # it only turns the other way
@@ -356,44 +363,3 @@ def _opening_amount(goal: Goal, part: Part, tracker: Tracker) -> tuple[Goal, lis
         return goal, [f"{part.link} rests open further than that: set it to that opening, measured from closed (it closes a little); "
                       "say 'that much more' to open it further"]
     return goal, []
-
-
-def beyond_limit(goal: Goal, part: Part, tracker: Tracker) -> float | None:
-    """The limit an angle or distance amount runs into (``None`` when the joint can go that far)."""
-    geometry = part.geometry
-    if goal.amount is None or goal.unit not in ("rad", "m") or geometry.lower is None or geometry.upper is None:
-        return None
-    now = tracker.value(part.joint)
-    value = resolve(goal, geometry, tracker.obj, tracker.asset, now).value
-    start = closed_of(geometry) if goal.measured_from == "closed" else geometry.rest if goal.measured_from == "rest" else now
-    if value is None:
-        return None
-    wanted = abs(goal.amount)
-    if abs(abs(value - start) - wanted) > 1e-6 and value in (geometry.lower, geometry.upper):
-        return value
-    return None
-
-
-IMPOSSIBLE_FACTOR = 1.25
-"""An explicit amount more than this many times the travel left that way is refused, not clamped (clamping it would
-be a guess at what the user wants); a nearer miss is clamped with a warning."""
-
-
-def travel_left(goal: Goal, part: Part, tracker: Tracker, limit: float) -> float:
-    """How far the part can go from where ``goal`` is measured to ``limit``."""
-    geometry = part.geometry
-    start = closed_of(geometry) if goal.measured_from == "closed" else geometry.rest if goal.measured_from == "rest" else tracker.value(part.joint)
-    return abs(limit - start)
-
-
-def impossible(goal: Goal, part: Part, tracker: Tracker, limit: float) -> bool:
-    """An explicit amount far beyond the travel left that way ("rotate the switch 360 degrees" on an 18 degree
-    rocker, "20 degrees more" at the stop): a refusal, not a clamp."""
-    if goal.amount is None or goal.unit not in ("rad", "m"):
-        return False
-    left = travel_left(goal, part, tracker, limit)
-    return left < LIMIT_EPS or goal.amount > IMPOSSIBLE_FACTOR * left
-
-
-def shown(amount: float, unit: str | None) -> str:
-    return f"{amount:.3g} m" if unit == "m" else f"{math.degrees(amount):.0f} degrees"

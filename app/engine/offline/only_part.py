@@ -10,7 +10,15 @@ from typing import TYPE_CHECKING
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, HINGE_WORDS, NEGATIONS, SHAPE_WORDS, SLIDE_WORDS, WHOLE_WORDS
+from app.engine.lexicon.words import (
+    GENERIC_PART_NOUNS,
+    HINGE_WORDS,
+    NEGATIONS,
+    SHAPE_WORDS,
+    SLIDE_WORDS,
+    UNJOINTED_NOUNS,
+    WHOLE_WORDS,
+)
 from app.engine.offline.grounding import Part, narrow
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
@@ -88,7 +96,7 @@ def _asked(frame: Frame) -> bool:
 
 def _unknown(mention: Mention) -> bool:
     """A head noun that says no part kind ("the portal", "the panel"), not the whole object or a pronoun."""
-    return mention.kind is None and mention.head not in WHOLE_WORDS and not (
+    return mention.kind is None and mention.head not in WHOLE_WORDS and mention.head not in UNJOINTED_NOUNS and not (
         mention.pronoun or mention.anaphor or mention.is_object or mention.plural or mention.collective or mention.other)
 
 

@@ -27,6 +27,7 @@ from app.engine.offline.complaints import answer_complaint, answer_finished, ans
 from app.engine.offline.conditions import set_topic
 from app.engine.offline.geometry import object_category
 from app.engine.offline.intent import Intent
+from app.engine.offline.it_named_before import named_before_it
 from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import Act, build_acts
 from app.engine.offline.reading.between import paused_between
@@ -39,6 +40,7 @@ from app.engine.offline.stated import record_release, stated_latched, stated_no_
 from app.engine.offline.told import answer_stored, fetched_through, told_codes, told_how, wanted_things
 from app.engine.offline.tracker import resolve_steps
 from app.engine.offline.unit_scene import prompt_unit, unit_clause
+from app.engine.offline.use_summary import said_by_use
 from app.engine.offline.uses import answer_use
 from app.engine.offline.whole_object import whole_named
 
@@ -115,6 +117,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     frames, fetched = wanted_things(builder, told_how(told_codes(frames)))  # "I need the napkins from the drawer": open it
     builder.notes.extend(fetched)
     acts, gaps = paused_between(repeated(build_acts(frames)))  # "…, pausing a moment between each digit"
+    acts = named_before_it(said_by_use(acts, builder.parts))  # "Set the timer — twist the bottom knob ...": what the knob is for
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
     builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
     if not builder.parts and not any(a.goal.verb for a in acts):
@@ -190,8 +193,9 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
-                if not exc.candidates and not builder.steps and (answer_room(builder, acts, frames) or answer_finished(builder, frames)
-                                                                  or answer_use(builder, frames)):
+                story = any(a.goal.verb is not None for a in acts[index + 1:]) and _said_of_someone(act.goal)  # "a draft catches the door and ..."
+                if not exc.candidates and not builder.steps and not story and (answer_room(builder, acts, frames) or answer_finished(builder, frames)
+                                                                               or answer_use(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)
                 if len(acts) < 2 or not _incidental(act.goal) or (exc.candidates and not {"already"} & set(act.goal.text.split()) and not (
                         act.goal.verb is not None and _said_of_someone(act.goal))):  # not "Grandpa left me the combination on a note": a story

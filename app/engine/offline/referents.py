@@ -3,16 +3,13 @@ registry, and a clear refusal when the asset lacks the part or several similar p
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass, field, replace
-
-import numpy as np
 
 from app.engine.asset.model import ArticulatedAsset
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import NAMED_BY_USE, PartKind, info
 from app.engine.lexicon.objects import carrier_of
-from app.engine.lexicon.words import GENERIC_PART_NOUNS, Side
+from app.engine.lexicon.words import FUNCTION_NAME_WORDS, GENERIC_PART_NOUNS, Side
 from app.engine.offline.describe import name_each
 from app.engine.offline.geometry import ObjectGeometry
 from app.engine.offline.grounding import (
@@ -27,7 +24,9 @@ from app.engine.offline.grounding import (
 )
 from app.engine.offline.lone_side import lone_compared, lone_side_refusal
 from app.engine.offline.naming import did_you_mean
+from app.engine.offline.one_kind import kind_of_one
 from app.engine.offline.others import other_than_said
+from app.engine.offline.placed import placed
 from app.engine.offline.reading.mentions import Mention
 from app.engine.offline.tiebreak import carried_alike, tie_break, wheel_shaped
 from app.engine.offline.units import in_unit
@@ -61,6 +60,8 @@ class Referents:
     scene: tuple[tuple[Side, bool], ...] = ()
     """Sides of the object a heading named ("SHOT 4, top oven: door drops ..."): where a bare mention's parts are."""
     assigned: dict[str, Part] = field(default_factory=dict)
+    eliminated: dict[str, str] = field(default_factory=dict)
+    """Nouns that took the one part the prompt left them, with the note that says so ("the timer": the knob not named)."""
     said: list[Mention] = field(default_factory=list)
     """Every mention of the prompt in order: "pull that rack out" after "the middle rack" means the middle one."""
     """head noun -> part, when one prompt names several parts of one pool with different nouns ("the dial ... the handle")."""
@@ -88,13 +89,11 @@ class Referents:
         kind, said_before, notes = other_than_said(self, mention, mention.kind if not mention.anaphor else (mention.kind or self.last_kind))
         if kind is None and (kind := carrier_of(mention.head, self.obj.category, lambda k: bool(self.of_kind(k)))) is not None:
             notes.append(f"read '{mention.words or mention.head}' as the {kind.value} that carries it")
-        if kind is None and mention.anaphor and "one" in mention.words.split() and not mention.other and (
-                mention.sides or mention.ordinal is not None) and len(only := {p.kind for p in self.parts}) == 1 and (
-                one := next(iter(only))) is not None:
-            kind = one  # "On the chest of drawers, the upper one ...": its parts are all drawers
-            notes.append(f"read '{mention.words or mention.head}' as a {one.value}: every movable part of {self.asset.name} is one")
+        if kind is None and (one := kind_of_one(mention, self.parts, self.asset.name)) is not None:
+            kind, _ = one  # "On the chest of drawers, the upper one ...": its parts are all drawers
+            notes.append(one[1])
         if not _qualified(mention) and not mention.plural and mention.head in self.assigned:
-            return Grounding(parts=(self.assigned[mention.head],), how="kind")
+            return Grounding(parts=(self.assigned[mention.head],), how="kind", notes=tuple(filter(None, [self.eliminated.get(mention.head)])))
         exact = [p for p in self.parts if mention.head in (p.joint, p.link)]
         if exact:
             return Grounding(parts=tuple(exact[:1]), how="name")  # "joint_1", "link_0": the URDF's own name
@@ -129,6 +128,10 @@ class Referents:
         if (wheel := wheel_shaped(mention, candidates)) is not None:
             mention = replace(mention, size="large")  # "turn the wheel handle" among a wheel and a small dial: the wheel
             notes.append(wheel)
+        said_first = mention.words.split()[:2]  # "there's a rack in the small top oven. Open that oven's door": the top oven's
+        if not mention.region and len(said_first) == 2 and said_first[0] in ("that", "this") and (region := next((
+                m.region for m in self.said if m.region and m.whose == said_first[1]), ())):
+            mention = replace(mention, region=region)
         unit_named = mention.anaphor and mention.kind is None and bool(mention.sides)  # "then the right one": another unit, not the scene's
         if not mention.region and self.scene and len(candidates) > 1 and not unit_named and (unit := in_unit(self.scene, candidates, self.parts, self.asset, self.obj)):
             candidates = unit  # "Left-hand fridge: open the right door": the right door of that fridge
@@ -140,12 +143,15 @@ class Referents:
         hosts = [p for p in (prefer or self.last) if p.kind is not None and info(p.kind).hinged and p not in candidates]
         if (mention.possessive or not (_qualified(mention) or mention.plural)) and mention.owner is None and len(candidates) > 1 and len(hosts) == 1:
             candidates = self._behind(hosts[0], candidates) or candidates  # "open the top door; its rack ...": the rack behind it
+        inner = [p for p in (prefer or self.last) if not (p.kind is not None and info(p.kind).hinged) and p not in candidates]
+        if mention.possessive and not hosts and len(inner) == 1 and len(candidates) > 1:  # "the rack of the bottom oven — drop its door"
+            candidates = [p for p in candidates if p.kind is not None and info(p.kind).hinged and self._behind(p, inner)] or candidates
         if mention.owner is not None and mention.owner.pronoun and len(owners) == 1 and owners[0].kind is not None and info(owners[0].kind).hinged and (
                 inside := self._behind(owners[0], candidates)):
             candidates, owners = inside, []  # "both shelves inside it": behind the door "it" is
         kept, overflow = narrow(mention, candidates, self.asset, self.obj, owners, self.referenced | said_before)
         if mention.relation is not None and kept:
-            kept = self._placed(mention.relation, kept)
+            kept = placed(self, mention.relation, kept)
         if overflow is not None:
             return Grounding(how=how, ordinal_overflow=overflow, ambiguous=tuple(candidates))
         if not kept:
@@ -179,6 +185,15 @@ class Referents:
             return Grounding(parts=(broken[0],), how=how, notes=tuple(notes))
         return Grounding(how=how, ambiguous=tuple(kept), notes=tuple(notes))
 
+    def stands_in(self, mention: Mention) -> bool:
+        """A part the asset lacks, read as a control of another kind ("the bolts" as the knob; not "the rack" as the tray)."""
+        try:
+            found = self.ground(mention)
+        except GroundingError:
+            return False
+        return found.how == "related" and mention.kind is not None and bool(found.parts) and all(
+            p.kind is not None and p.kind is not mention.kind and info(p.kind).control for p in found.parts)
+
     def plan(self, mentions: list[Mention]) -> None:
         """Different nouns in one prompt name different parts: "spin the dial, then turn the spoked handle" on
         a safe whose two knobs are the dial and the (large, spoked) handle. Qualified mentions take their part
@@ -208,7 +223,10 @@ class Referents:
             remaining = [p for p in candidates_of[key] if p not in taken.values()]
             unassigned = heads - set(taken)
             if len(unassigned) == 1 and len(remaining) == 1:
-                taken[unassigned.pop()] = remaining[0]
+                head = unassigned.pop()
+                taken[head] = remaining[0]
+                if head in FUNCTION_NAME_WORDS:  # a name for what it does, not its shape: a guess worth saying
+                    self.eliminated[head] = f"read 'the {head}' as {remaining[0].link}, the {remaining[0].kind} the prompt does not name otherwise"
             self.assigned.update({head: part for head, part in taken.items() if head not in self.assigned})
 
     def resolve(self, mention: Mention, *, prefer: list[Part] | None = None) -> tuple[list[Part], list[str]]:
@@ -287,62 +305,6 @@ class Referents:
 
         state = {door.joint: closed_of(door.geometry)}
         return [p for p in candidates if (target := open_of(p.geometry)) is not None and door.joint in blocking_joints(self.asset, p.joint, target, state)]
-
-    def _placed(self, relation: tuple[str, Mention], candidates: list[Part]) -> list[Part]:
-        """The candidate nearest to the reference part in the named direction ("the key right below it")."""
-        side, reference_mention = relation
-        if side in ("near", "far"):
-            nearest = self._nearest(reference_mention, candidates)
-            if side == "near" or len(nearest) != 1:
-                return nearest
-            return self._farthest(reference_mention, candidates)
-        from app.engine.offline.keypad import code_keys
-
-        reference = self.pronoun() if reference_mention.pronoun else list(self.ground(reference_mention).parts) if (
-            reference_mention.kind is not PartKind.CODE) else code_keys((("digit", reference_mention.head),), self)
-        if len(reference) != 1:
-            return candidates
-        if side == "behind":  # "the rack (right) behind the upper door": the one that door closes in
-            return self._behind(reference[0], candidates) if reference[0].kind is not None and info(reference[0].kind).hinged else candidates
-        if side == "in_front":  # "the door in front of the middle rack": the one that closes it in
-            return [p for p in candidates if p.kind is not None and info(p.kind).hinged and self._behind(p, reference)] or candidates
-        anchor = position(reference[0], self.obj)
-        axis, sign = {"below": (2, -1.0), "above": (2, 1.0), "left": (1, -1.0), "right": (1, 1.0)}.get(side, (None, 0.0))
-        scored = []
-        for part in candidates:
-            if part.joint == reference[0].joint:
-                continue
-            offset = position(part, self.obj) - anchor
-            if axis is not None and offset[axis] * sign <= 1e-6:
-                continue
-            across = float(np.linalg.norm(np.delete(offset, axis))) if axis is not None else abs(float(offset[2])) if side == "beside" else 0.0
-            scored.append((round(across, 4), round(float(np.linalg.norm(offset)), 4), part.joint, part))
-        scored.sort(key=lambda entry: entry[:3])
-        if len(scored) > 1 and scored[0][:2] == scored[1][:2]:
-            return [entry[3] for entry in scored if entry[:2] == scored[0][:2]]  # "next to the 5": the 4 and the 6 are as near
-        return [scored[0][3]] if scored else []
-
-    def _farthest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
-        """"the knob furthest from the big one", "the knob farther from the hinge", "the lever furthest from me" (the back)."""
-        if reference_mention.head == "viewer":
-            return [min(candidates, key=lambda p: (round(float(position(p, self.obj)[0]), 4), p.joint))]
-        return self._by_distance(reference_mention, candidates, max)
-
-    def _nearest(self, reference_mention: Mention, candidates: list[Part]) -> list[Part]:
-        """"the knob nearest the lid's hinge", "the lever closest to me" (the user stands at the front)."""
-        if reference_mention.head == "viewer":
-            return [max(candidates, key=lambda p: (round(float(position(p, self.obj)[0]), 4), p.joint))]
-        return self._by_distance(reference_mention, candidates, min)
-
-    def _by_distance(self, reference_mention: Mention, candidates: list[Part], pick: Callable[..., Part]) -> list[Part]:
-        hinge = "hinge" in reference_mention.modifiers
-        mention = replace(reference_mention, modifiers=tuple(m for m in reference_mention.modifiers if m != "hinge"))
-        reference = self.pronoun() if mention.pronoun else list(self.ground(mention).parts)
-        if len(reference) != 1:
-            return candidates
-        anchor = self.obj.local(reference[0].geometry.pivot_world) if hinge else position(reference[0], self.obj)
-        others = [p for p in candidates if p.joint != reference[0].joint]
-        return [pick(others, key=lambda p: (round(float(np.linalg.norm(position(p, self.obj) - anchor)), 4), p.joint))] if others else []
 
     def _most_extreme(self, mention: Mention, kept: list[Part]) -> Part | None:
         """Among parts all near the named side, the one strictly furthest that way ("the bottom rack")."""

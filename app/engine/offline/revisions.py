@@ -38,6 +38,10 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     """"Spin the dial a full turn to unlock it": a purpose whose parts are all parts its means already moves says
     why the means is done, not a second motion of them; it moves nothing more."""
     parts = grounded[0]
+    named = [m for m in act.goal.themes if not m.pronoun]
+    if controls and parts and act.means is not None and named and all(m.kind is not None and builder.refs.stands_in(m) for m in named):
+        builder.notes.append(f"read '{act.goal.text}' as what working the {controls[0].part.kind} does: {builder.asset.name} has no {named[0].kind}")
+        return [], []  # "turn the cross-shaped handle so that the bolts retract": no bolts, not a second knob standing in
     if controls and parts and act.means is not None and _other_controls(act.means, parts, controls):
         moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
         others = ", ".join(p.link for p in parts)
@@ -141,6 +145,11 @@ def hold(builder: Builder, act: Act) -> bool:
             set(frame.text.split()) & {"open", "opened"}):
         builder.add(replace(act, goal=replace(frame, verb="open", sense=VerbSense.OPEN)))  # "keep the bin open for a few seconds"
         return True
+    if act.results and (during := _during(builder, act)):  # "keep the door open while the plate goes round": open, then it goes round
+        builder.add(replace(act, results=tuple(r for r in act.results if r not in during)))
+        for result in during:
+            builder.add(Act(goal=replace(result, link=frame.link, subject_theme=False)))
+        return True
     amount = frame.quantities.amount
     base = builder.steps[-1].base if builder.steps else None
     if pronoun and base is not None and builder.last_base_default and amount is not None and amount.unit == "m":
@@ -156,6 +165,28 @@ def hold(builder: Builder, act: Act) -> bool:
             refine_last(builder, act)
         return True
     return False
+
+
+def _during(builder: Builder, act: Act) -> list[Frame]:
+    """Results of a hold that move other parts than the one held, each with its own verb ("... while the plate spins"):
+    they happen once the held part is there, not at the same moment."""
+    held = {p.joint for p in builder.refs.pronoun()} if all(m.pronoun for m in act.goal.themes) else set()
+    if not held and act.goal.themes:
+        try:
+            held = {p.joint for p in builder.ground(act.goal, VerbSense.OPEN, act.goal.themes)[0]}
+        except GroundingError:
+            return []
+    out = []
+    for frame in act.results:
+        if frame.verb is None or not frame.themes or any(m.pronoun for m in frame.themes):
+            continue
+        try:
+            parts = builder.ground(frame, frame.sense or VerbSense.OPEN, frame.themes)[0]
+        except GroundingError:
+            continue
+        if parts and held and not {p.joint for p in parts} & held:
+            out.append(frame)
+    return out
 
 
 def refine_last(builder: Builder, act: Act) -> None:

@@ -48,7 +48,8 @@ def carried_alike(mention: Mention, kept: list[Part], candidates: list[Part], as
 def wheel_shaped(mention: Mention, candidates: list[Part]) -> str | None:
     """"the wheel handle", "the spoked handle" among several turning controls: the note for taking the clearly largest
     (1.3 times the next), else None."""
-    if len(candidates) < 2 or mention.size is not None or not WHEEL_SHAPED & set(mention.words.split() + mention.head.split()):
+    said = [*mention.modifiers, *mention.head.split()] if mention.relation is not None else mention.words.split() + mention.head.split()
+    if len(candidates) < 2 or mention.size is not None or not WHEEL_SHAPED & set(said):  # not "the knob right of the spoked wheel"
         return None
     sizes = sorted((p.geometry.size for p in candidates), reverse=True)
     return f"read '{mention.words or mention.head}' as the largest of {len(candidates)} similar parts" if sizes[0] >= 1.3 * sizes[1] else None

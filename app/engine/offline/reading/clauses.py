@@ -123,6 +123,8 @@ def _starts_clause(tokens: list[Token], i: int) -> bool:
         if k > j + 1 and tokens[j].text in DETERMINERS and (finite_unknown_verb(tokens[k].text) or (
                 k == j + 2 and tokens[k].text.endswith("s") and tokens[k].text != tokens[k].lemma and inflected_verb(tokens[k].text))):
             return True  # "so the steam clears / escapes": a verb the lexicon does not know
+        if k == j + 2 and tokens[j].text in DETERMINERS and tokens[j + 1].plural and tokens[k].lemma in VERBS and tokens[k].text == tokens[k].lemma:
+            return True  # "so that the bolts retract": a plural subject and its verb
         k += 1
     return False
 

@@ -107,6 +107,9 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
     if frame.stative and not amount_only and not frame.wish and not ends and frame.link is not Link.CONDITION and frame.quantities.amount is None and not (
             set(frame.text.split()) & set(VERBLESS_SENSES)):
         return frame  # "the clasps on this box are spring-loaded": what a part is, no step of the verb before
+    if frame.marker in (".", "!") and frame.themes and not amount_only and all(m.kind is None and not (
+            m.is_object or m.pronoun or m.anaphor) for m in frame.themes):
+        return frame  # "Push the mixer handle right. Cold only!": a word on its own after a full stop, no step of the verb before
     if frame.themes or amount_only:
         own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
         return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),

@@ -22,6 +22,7 @@ from app.engine.lexicon.words import (
     BRIEF_VERBS,
     BRIEF_WORDS,
     CAUSATIVES,
+    CAUSER_NOUNS,
     CENTRE_WORDS,
     DETERMINERS,
     FUNCTION_VERBS,
@@ -48,8 +49,9 @@ from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part, unknown_verb
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
 from app.engine.offline.reading.wishes import wished_state
-from app.engine.offline.reading.word_class import finite_unknown_verb
+from app.engine.offline.reading.word_class import actor_verb, finite_unknown_verb
 
+_END_PARTICLES = frozenset({"shut", "closed", "open", "into_place"})  # "the latch clicks closed": there to stay, not a tap
 _BODY_PARTS = frozenset({"foot", "feet", "finger", "fingers", "hand", "hands", "thumb", "toe", "weight"})
 _LETTING_GO = frozenset({"take", "lift", "remove", "move", "pull", "raise", "get", "let"})
 _RETURN_WORDS = frozenset({"original", "starting", "initial", "previous", "former", "rest", "resting", "neutral", "home", "where_it_started",
@@ -278,14 +280,14 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "seat it back down": a noun used as a verb
     if verb_index is None and len(tokens) > 1 and unknown_verb(tokens[0], tokens[1].text) and not named_side and tokens[0].text not in SPATIAL:
         verb_index, verb, guessed = 0, GENERIC.lemma, tokens[0].text  # "jiggle the lid open": a verb we do not know
-    finite = next((k for k in range(1, len(tokens)) if finite_unknown_verb(tokens[k].text) and tokens[k - 1].text not in DETERMINERS),
+    finite = next((k for k in range(1, len(tokens)) if (finite_unknown_verb(tokens[k].text) or actor_verb(tokens, k)) and tokens[k - 1].text not in DETERMINERS),
                   None) if verb_index is None else None
     described = finite is not None and (tokens[finite - 1].text in ("is", "are", "was", "were") or (  # "the door is hinged on the left"
         tokens[finite].text.endswith("ed") and any(t.text in _HAVING for t in tokens[:finite])))  # "it has two knobs stacked ..."
     if finite is not None and not described:
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
     progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
-        tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION))
+        tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION, Link.PARALLEL))  # "while it is spinning"
     progressive = progressive or (verb_index is not None and not wish and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION) and any(
         tokens[k].text in ("is", "are") and tokens[k + 1].text in POSTURES for k in range(verb_index - 1)))  # "the door is sitting ... open"
     if progressive:
@@ -295,7 +297,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     if verb_index is None:
         subject, objects = [], parse_mentions(tokens, 0, quantities.used)
     else:
-        subject = parse_mentions(tokens[:verb_index], 0, quantities.used)
+        subject = [m for m in parse_mentions(tokens[:verb_index], 0, quantities.used) if m.head not in CAUSER_NOUNS]  # not "the steam"
         objects = parse_mentions(tokens, verb_index + 1, quantities.used)
     particle, particle_at = _particle(tokens, verb_index, objects) if verb_index is not None else (None, None)
     if particle_at is not None:
@@ -379,7 +381,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         codes=codes, first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=min((_IN_TURN[w] for w in words if w in _IN_TURN), key=lambda o: (o == "reading", o), default=None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
-        brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays
+        brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body and particle not in _END_PARTICLES) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays
     )
 
 

@@ -3,9 +3,8 @@
 A noun phrase is a run of determiners, qualifiers and nouns whose last noun is the head: "the upper-left door", "the door
 release button" (head: button), "the safe door" (head: door, the object word only says whose). Heads are part-kind words
 (the registry), object nouns, pronouns, anaphoric "one" / "the other", or an unknown noun (grounded by the asset's own part
-names, else refused). Trailing phrases qualify or own it: "the knob on the left",
-"the knob on the door", "the second drawer from the top", "the middle key in the bottom row".
-"""
+names, else refused). Trailing phrases qualify or own it: "the knob on the left", "the knob on the door", "the second
+drawer from the top", "the middle key in the bottom row", "the middle one of the top row"."""
 
 from __future__ import annotations
 
@@ -13,7 +12,7 @@ from dataclasses import replace
 from itertools import takewhile
 
 from app.engine.lexicon.kinds import PartKind
-from app.engine.lexicon.relations import PLACE_PREPS, RELATION_ADVERBS, RELATIONS, RELATIVE, RESTING, VIEWERS
+from app.engine.lexicon.relations import RELATION_ADVERBS, RELATIONS, RELATIVE, RESTING, VIEWERS
 from app.engine.lexicon.verbs import PARTICLES, VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
@@ -26,7 +25,6 @@ from app.engine.lexicon.words import (
     HEDGE_ADVERBS,
     MODALS,
     NOT_PART_NOUNS,
-    OBJECT_NOUNS,
     OBJECT_SUFFIXES,
     OPPOSITE_SIDES,
     ORDINALS,
@@ -42,9 +40,29 @@ from app.engine.lexicon.words import (
     Side,
 )
 from app.engine.offline.reading.mention import ALTERNATE, Mention, apposed
-from app.engine.offline.reading.part_words import control_name, kind_at, line_index, shape_adjective, side_run
+from app.engine.offline.reading.part_words import (
+    OBJECT_WORDS,
+    control_name,
+    kind_at,
+    line_index,
+    lined,
+    noun_continues,
+    object_after,
+    shape_adjective,
+    side_run,
+)
+from app.engine.offline.reading.part_words import (
+    phrase_words as _words,
+)
 from app.engine.offline.reading.token import Token
-from app.engine.offline.reading.word_class import can_be_verb, finite_unknown_verb, nounless, verb_ing, verb_only
+from app.engine.offline.reading.word_class import (
+    actor_verb,
+    can_be_verb,
+    finite_unknown_verb,
+    nounless,
+    verb_ing,
+    verb_only,
+)
 
 __all__ = ["Mention", "kind_at", "parse_mentions"]
 
@@ -55,7 +73,6 @@ _LINE_WORDS = frozenset({"row", "column"})
 _ING_NOUNS = frozenset({"opening", "housing", "casing", "ceiling", "railing", "fitting", "setting", "bearing", "mounting", "coupling"})
 _STOP = PHRASE_BREAKS
 _NOT_HEADS = NOT_PART_NOUNS
-_OBJECT_WORDS = frozenset(OBJECT_NOUNS)
 _SITS = frozenset({"is", "'s", "stands", "sits", "sitting", "standing", "placed", "located", "set"})
 _KEY_OWNERS = frozenset({"my", "your", "our", "his", "her", "their", "car", "house", "spare", "front-door", "door", "office"})
 
@@ -64,7 +81,7 @@ def _nominal(token: Token) -> bool:
     word = token.text
     if token.ident:
         return True  # "joint_1", "link_0": a part by its URDF name
-    if word in _OBJECT_WORDS or word in ALTERNATE:
+    if word in OBJECT_WORDS or word in ALTERNATE:
         return True  # "chest_of_drawers", "every_other"
     return (token.number is None and not token.is_punct and word not in _STOP and word not in AMOUNTS and "_" not in word
             and word not in STATIVE_VERBS and word not in PERSONS and word not in HEDGE_ADVERBS and word not in PERSON_NOUNS)
@@ -75,7 +92,7 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
     mentions: list[Mention] = []
     i = start
     while i < len(tokens):
-        if i in used or not _nominal(tokens[i]):
+        if i in used or not _nominal(tokens[i]) or actor_verb(tokens, i):  # not "jumps" in "the cat jumps onto the screen"
             i += 1
             continue
         mention, i = _phrase(tokens, i, used)
@@ -129,7 +146,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                 word in RELATION_ADVERBS and i + 1 < len(tokens) and tokens[i + 1].text in RELATIONS)):
             break  # "open the right door | first": a qualifier after the head is not part of it; "the key | directly under .."
         if (token.lemma in _NOT_HEADS and token.lemma not in SPATIAL and word not in ORDINALS and word not in SIZES and kind_at(tokens, i) is None
-                and not nouns and not _object_after(tokens, i, begin) and not (i > begin and control_name(tokens, i))):
+                and not nouns and not object_after(tokens, i, begin) and not (i > begin and control_name(tokens, i))):
             return None, i + 1  # "the forward-rolling direction", "its travel": a place or a measure, not a part
         if token.ident:
             unknown.append(i)
@@ -171,6 +188,9 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             size = SIZES[word]
         elif word in ("one", "any", "either") and not nouns and not unknown and i + 1 < len(tokens) and tokens[i + 1].text == "of":
             inner, _ = _phrase(tokens, i + 2, used)  # "one of the (two) knobs on the left": the user leaves the choice
+            if inner is not None and inner.head in _LINE_WORDS and (inner.ordinal is not None or inner.sides):  # "the middle one of the top row"
+                return lined(Mention(head="one", anaphor=True, sides=tuple(sides), start=begin), inner.head, inner.ordinal if inner.ordinal is not None else (
+                    line_index(inner.sides[0][0].value)), inner.end, tokens), inner.end
             if inner is not None:
                 inner = _trailing(tokens, inner, used, [])
                 return replace(inner, one_of=not sides, sides=(*inner.sides, *sides), plural=False, collective=False, start=begin,  # "the
@@ -186,11 +206,11 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             return pronoun, i + 1
         elif word in MODALS and i + 1 < len(tokens) and can_be_verb(tokens[i + 1].text) and tokens[i + 1].text != "'s" and not (i and tokens[i - 1].text in DETERMINERS):
             break  # "the entire 6 cm it can travel": a modal, not the noun "can"
-        elif token.lemma in _OBJECT_WORDS or word in _OBJECT_WORDS:
+        elif token.lemma in OBJECT_WORDS or word in OBJECT_WORDS:
             nouns.append((i, 1, None, token.lemma not in GENERIC_PART_NOUNS or not (size or any(shape_adjective(tokens, j) for j in range(begin, i)))))
         elif i > begin and control_name(tokens, i):
             unknown.append(i)  # "the start button": a word of the control's name
-        elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not _continues(tokens, i + 1))):
+        elif token.lemma in VERBS and (i == begin or ((nouns or unknown) and not noun_continues(tokens, i + 1))):
             break  # a verb ends the phrase ("the lid | drops"); "the door release button" goes on
         elif "-" in word and all(part in SPATIAL or part in ("side", "hand") for part in word.split("-")) and word.split("-")[0] in SPATIAL:
             sides.extend(SPATIAL[part] for part in word.split("-") if part in SPATIAL)  # "upper-left", "bottom-right", "left-side"
@@ -224,7 +244,7 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         head_index, length, kind, is_object = last_noun
         head_tokens = tokens[head_index:head_index + length]
         modifiers = tuple(tokens[j].text for j in range(begin, head_index) if j not in used and tokens[j].text not in DETERMINERS
-                          and not (tokens[j].lemma in _OBJECT_WORDS and j + 1 < len(tokens) and tokens[j + 1].text == "'s")
+                          and not (tokens[j].lemma in OBJECT_WORDS and j + 1 < len(tokens) and tokens[j + 1].text == "'s")
                           and tokens[j].text not in COLLECTIVE and tokens[j].text not in SPATIAL and tokens[j].text not in ORDINALS
                           and tokens[j].text not in SIZES and tokens[j].text not in OTHER_WORDS)
         plural = head_tokens[-1].plural or collective or any((tokens[j].number or 0) > 1 and not (j and tokens[j - 1].text in DEFINITES)
@@ -243,14 +263,6 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
                    region=region, words=_words(tokens, begin, end)), end
 
 
-def _object_after(tokens: list[Token], i: int, begin: int) -> bool:
-    """"turn the (side) table around": the object itself, unless a preposition makes it a place ("push it along the table")."""
-    if begin > 0 and tokens[begin - 1].text in PLACE_PREPS:
-        return False
-    j = i + 1 if tokens[i].lemma not in _OBJECT_WORDS else i
-    return j < len(tokens) and tokens[j].lemma in _OBJECT_WORDS
-
-
 def _inner(tokens: list[Token], i: int, begin: int) -> bool:
     """A count or state adjective inside a phrase ("all four wheels", "the closed lid"): a noun follows."""
     token = tokens[i]
@@ -262,22 +274,6 @@ def _inner(tokens: list[Token], i: int, begin: int) -> bool:
     return inside and i + 1 < len(tokens) and _nominal(tokens[i + 1])
 
 
-def _continues(tokens: list[Token], i: int) -> bool:
-    """A noun of the same phrase follows at ``i`` ("release | button")."""
-    return i < len(tokens) and (kind_at(tokens, i) is not None or tokens[i].lemma in _OBJECT_WORDS)
-
-
-def _words(tokens: list[Token], start: int, end: int) -> str:
-    return " ".join(t.text.replace("_", " ") for t in tokens[start:end])
-
-
-def _lined(mention: Mention, line: str, index: int | None, end: int, tokens: list[Token]) -> Mention:
-    """``mention`` in a row or column (1-based from the top / left; -1 last; 0 middle)."""
-    if line == "row":
-        return replace(mention, row=index, end=end, words=_words(tokens, mention.start, end))
-    return replace(mention, column=index, end=end, words=_words(tokens, mention.start, end))
-
-
 def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Mention | None:
     """"the key (right) below it", "the knob to the left of the dial": a part placed relative to another."""
     i = mention.end
@@ -286,6 +282,8 @@ def _related(tokens: list[Token], mention: Mention, used: frozenset[int]) -> Men
     start = i
     while i < len(tokens) and tokens[i].text in RELATION_ADVERBS | RELATIVE:
         i += 1  # "the rack (that's) nearest the floor"
+    if i + 2 < len(tokens) and tokens[i].text in ("up", "down", "above", "below") and tokens[i + 1].text == "and" and tokens[i + 2].text in RELATIONS:
+        i += 2  # "the knob up and to the right of the wheel": to its right (the way across says which)
     resting = mention.kind is not None and any(tokens[k].text in RESTING for k in range(start, i)) and i < len(tokens) and (
         tokens[i].text in ("on", "atop", "on_top_of"))  # not "the roast sitting on the middle shelf": no part, the shelf is where it is
     beside = i + 1 < len(tokens) and tokens[i].text in ("left", "right") and tokens[i + 1].text == "of"  # "(just) left of the 9"
@@ -366,12 +364,13 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
     if prep in ("across", "along") and not ((word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS):
         return mention  # "across the top row" places keys; "across the room" says nothing of which part
     if (word in SPATIAL or word in ORDINALS) and nxt in _LINE_WORDS:  # "in the bottom row", "in the second column"
-        return _lined(mention, nxt, line_index(word), j + 2, tokens)
+        return lined(mention, nxt, line_index(word), j + 2, tokens)
     if word in SPATIAL and not (j + 1 < len(tokens) and _nominal(tokens[j + 1]) and nxt not in ("side", "hand", "end", "one") and (
             nxt not in DETERMINERS)):  # "the wheel on the right a full turn": "a" opens the amount, it is no noun of the side
         end = j + 1 + (1 if nxt in ("side", "hand", "end") else 0)
-        if prep == "from" and mention.ordinal is not None:
-            return replace(mention, ordinal_from=SPATIAL[word][0], end=end, words=_words(tokens, mention.start, end))
+        if prep == "from" and mention.ordinal is not None:  # "the second key from the left (in the top row)"
+            counted = replace(mention, ordinal_from=SPATIAL[word][0], end=end, words=_words(tokens, mention.start, end))
+            return _trailing(tokens, counted, used, earlier) if end < len(tokens) and tokens[end].text in ("in", "on", "of") else counted
         if prep in ("on", "at", "in", "to") or (prep == "of" and nxt in ("side", "hand", "end")):  # "the door of right side"
             placed = replace(mention, sides=(*mention.sides, SPATIAL[word]), end=end, words=_words(tokens, mention.start, end))
             return _trailing(tokens, placed, used, earlier) if end < len(tokens) and tokens[end].text == "of" else placed
@@ -382,7 +381,7 @@ def _trailing(tokens: list[Token], mention: Mention, used: frozenset[int], earli
             return mention  # "pull the tray out of the oven": where it goes, not which one
         if owner is not None and owner.head in _LINE_WORDS and (owner.ordinal is not None or owner.sides):
             index = owner.ordinal if owner.ordinal is not None else line_index(owner.sides[0][0].value)
-            return _lined(mention, owner.head, index, end, tokens)  # "the keypad's second row"
+            return lined(mention, owner.head, index, end, tokens)  # "the keypad's second row"
         if owner is not None and (owner.kind is not None or owner.is_object or owner.pronoun):
             owner = _trailing(tokens, owner, used, earlier)
             end = max(end, owner.end)

@@ -3,10 +3,22 @@ from the part-kind registry (:mod:`app.engine.lexicon.kinds`)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from functools import lru_cache
 
 from app.engine.lexicon.kinds import REGISTRY, PartKind, info
-from app.engine.lexicon.words import DETERMINERS, ORDINALS, PHRASE_BREAKS, SHAPE_WORDS, SIZES, SPATIAL, Side
+from app.engine.lexicon.relations import PLACE_PREPS
+from app.engine.lexicon.words import (
+    DETERMINERS,
+    OBJECT_NOUNS,
+    ORDINALS,
+    PHRASE_BREAKS,
+    SHAPE_WORDS,
+    SIZES,
+    SPATIAL,
+    Side,
+)
+from app.engine.offline.reading.mention import Mention
 from app.engine.offline.reading.token import Token
 
 
@@ -82,3 +94,29 @@ def line_index(word: str) -> int | None:
     side = SPATIAL.get(word)
     return ORDINALS[word] if word in ORDINALS else None if side is None else {Side.TOP: 1, Side.LEFT: 1, Side.BOTTOM: -1, Side.RIGHT: -1,
                                                                               Side.MIDDLE: 0}.get(side[0])
+
+
+OBJECT_WORDS = frozenset(OBJECT_NOUNS)
+
+
+def object_after(tokens: list[Token], i: int, begin: int) -> bool:
+    """"turn the (side) table around": the object itself, unless a preposition makes it a place ("push it along the table")."""
+    if begin > 0 and tokens[begin - 1].text in PLACE_PREPS:
+        return False
+    j = i + 1 if tokens[i].lemma not in OBJECT_WORDS else i
+    return j < len(tokens) and tokens[j].lemma in OBJECT_WORDS
+
+
+def noun_continues(tokens: list[Token], i: int) -> bool:
+    """A noun of the same phrase follows at ``i`` ("release | button")."""
+    return i < len(tokens) and (kind_at(tokens, i) is not None or tokens[i].lemma in OBJECT_WORDS)
+
+
+def phrase_words(tokens: list[Token], start: int, end: int) -> str:
+    return " ".join(t.text.replace("_", " ") for t in tokens[start:end])
+
+
+def lined(mention: Mention, line: str, index: int | None, end: int, tokens: list[Token]) -> Mention:
+    """``mention`` in a row or column (1-based from the top / left; -1 last; 0 middle)."""
+    row, column = (index, mention.column) if line == "row" else (mention.row, index)
+    return replace(mention, row=row, column=column, end=end, words=phrase_words(tokens, mention.start, end))

@@ -167,10 +167,11 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         if token.text in ("leave", "leaving") and _as_they_are(tokens, i):
             out.append(replace(token, text="without", lemma="without"))  # "leave the latch and the lid as they are"
             continue
-        if token.text in ("leave", "leaving") and any(t.text == "alone" for t in tokens[i + 1:i + 7]):
+        if token.text in ("leave", "leaving") and any(t.text == "alone" or (t.text == "hanging" and (k + 1 == len(tokens) or tokens[k + 1].is_punct))
+                                                      for k, t in enumerate(tokens[i + 1:i + 7], start=i + 1)):  # "... hanging": as it is
             out.append(replace(token, text="without", lemma="without"))  # "leave the button alone": do not touch it
             continue
-        if token.text == "alone" and out and any(t.text == "without" for t in out[-6:]):
+        if token.text in ("alone", "hanging") and out and any(t.text == "without" for t in out[-6:]):
             continue
         if tuple(t.text for t in tokens[i:i + 3]) in _AS_IS and any(t.text == "without" for t in out[-10:]):
             skip = 2  # the rest of "leave X as they are"

@@ -14,7 +14,7 @@ import itertools
 import re
 from dataclasses import replace
 
-from app.engine.lexicon.said_otherwise import SAME_MEANING
+from app.engine.lexicon.said_otherwise import SAME_MEANING, WHILE_PHRASES
 from app.engine.lexicon.verbs import VERBS
 from app.engine.lexicon.words import (
     AMOUNTS,
@@ -273,6 +273,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
 _SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode", "keys", "buttons", "digits", "numbers"})
 """Before a first dash: what the steps after it spell out ("enter the code - 7, then 3 - and open the door")."""
 _PHRASES = sorted((tuple(p.split()) for p in MULTIWORD), key=len, reverse=True)
+_CLAUSE_OPENERS = frozenset({"the", "a", "its", "it", "it's", "i", "i'm", "you", "you're", "we", "they", "my", "your", "our", "their", "he", "she", "someone"})
 
 
 def _join_phrases(tokens: list[Token]) -> list[Token]:
@@ -292,7 +293,8 @@ def _join_phrases(tokens: list[Token]) -> list[Token]:
         else:
             out.append(tokens[i])
             i += 1
-    return out
+    return [replace(t, text="while", lemma="while") if t.text in WHILE_PHRASES and k + 1 < len(out) and out[k + 1].text in _CLAUSE_OPENERS else t
+            for k, t in enumerate(out)]  # "... open the whole time the plate is going round": while it goes round
 
 
 
@@ -340,13 +342,16 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.count_lines import count_lines
     from app.engine.offline.reading.do_that_after import do_that_after
     from app.engine.offline.reading.flanked import flanked, of_that_group
+    from app.engine.offline.reading.from_state import from_state
     from app.engine.offline.reading.fronted import fronted
     from app.engine.offline.reading.hand_side import hand_side
     from app.engine.offline.reading.learner import learner
     from app.engine.offline.reading.left_out import left_out
+    from app.engine.offline.reading.object_wants import object_wants
     from app.engine.offline.reading.paused_after import paused_after
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.start_place import start_place
+    from app.engine.offline.reading.start_with import start_with
     from app.engine.offline.reading.step_labels import step_labels
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
@@ -358,7 +363,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, count_lines, do_that_after, paused_after, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []
