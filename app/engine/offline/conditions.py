@@ -20,6 +20,7 @@ if TYPE_CHECKING:
     from app.engine.offline.builder import Builder
     from app.engine.offline.grounding import Part
     from app.engine.offline.reading.frames import Frame
+    from app.engine.offline.reading.mentions import Mention
 
 
 _HAVING = frozenset({"has", "have"})
@@ -55,6 +56,9 @@ def condition(builder: Builder, act: Act) -> None:
         except GroundingError:
             if (each := _each_alone(builder, frame)) is not None:
                 builder.refs.remember(each, [], topic=True)  # "There's a big wheel on the door and a smaller dial higher up."
+                return
+            if len(found := [p for m in frame.themes for p in _grounded_alone(builder, frame, m)]) == 1:
+                builder.refs.remember(found, [], topic=True)  # "the round thing the food sits on: give it a quarter turn": the turntable
                 return
             if any(m.kind is not None and m.head not in _GROUPS and not (m.plural or m.collective) for m in frame.themes):
                 raise  # "The oven door: open it" on a two-door oven (which one?), "the left drawer: ..." where there is none
@@ -115,6 +119,14 @@ def _already(builder: Builder, part: Part, wanted: VerbSense) -> bool:
         return False
     away = abs(builder.tracker.value(part.joint) - geometry.closed_value) > _AJAR_SHARE * geometry.span
     return away if wanted is VerbSense.OPEN else not away
+
+
+def _grounded_alone(builder: Builder, frame: Frame, mention: Mention) -> list[Part]:
+    """The parts one mention of a heading names on its own ("the food": the turntable that carries it), [] if none."""
+    try:
+        return builder.ground(frame, VerbSense.OPEN, (mention,))[0]
+    except GroundingError:
+        return []
 
 
 def _each_alone(builder: Builder, frame: Frame) -> list[Part] | None:

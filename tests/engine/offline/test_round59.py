@@ -191,3 +191,14 @@ def test_round60_classes(name: str, prompt: str, joints: dict[str, float | None]
 ])
 def test_round60_fixes_keep(name: str, prompt: str, joints: dict[str, float | None]) -> None:
     test_round59_classes(name, prompt, joints)
+
+
+@pytest.mark.parametrize(("name", "prompt", "joints"), [
+    # a plural subject acting ("the android's fingers turn the dial") and "only after that does it lift ...": both had no verb
+    ("coffee_machine_103030", "The android's fingers turn the dial on the blender's base; only after that does it lift the little lid off the jug.",
+     {"joint_0": None, "joint_2": 0.5}),
+    # a heading whose one grounded mention is what carries "the food": "it" is the turntable (refused before)
+    ("microwave_7119", "Inside the microwave, the round thing the food sits on: give it a quarter turn.", {"joint_1": -1.571}),
+])
+def test_round60_stories_and_headings(name: str, prompt: str, joints: dict[str, float | None]) -> None:
+    test_round59_classes(name, prompt, joints)
