@@ -218,6 +218,9 @@ def _unlatch(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
         builder.notes.append(f"read '{act.goal.text}' as the effect of the control worked before")
         builder.refs.remember([m.part for m in hinged], [])
         return [], []
+    if not found and any({"open", "opens", "opened"} & set(r.text.split()) for r in act.results):
+        builder.notes.append(f"nothing on the {_kind(hinged[0].part)} holds it shut: read '{act.goal.text}' as letting it go, and it opens as said")
+        return [], []  # "unlatch it and it just drops open under its own weight": the opening is what is asked
     if not found:
         raise builder.refs.refuse(f"'{act.goal.text}': nothing on the {_kind(hinged[0].part)} holds it shut")
     builder.refs.remember([m.part for m in hinged], [m.part for m in found])

@@ -80,6 +80,11 @@ def condition(builder: Builder, act: Act) -> None:
         if (each := _each_alone(builder, frame)) is None and "already" in frame.text.split():
             builder.notes.append(f"ignored '{frame.text}': how things already are, no step")  # "The combination is already dialled in."
             return
+        owners = [p for m in frame.themes if m.kind is None and m.owner is not None for p in _grounded_alone(builder, frame, m.owner)]
+        if each is None and len(owners) == 1 and frame.verb is None:
+            builder.notes.append(f"read '{frame.text}' as about the {owners[0].kind} it is in, no step")
+            builder.refs.remember(owners, [], topic=True)  # "The spring in the oven door's shot. Unlatch it ...": it is the door
+            return
         if each is None:
             raise
         parts, words = each, []  # "There's a big wheel on the door and a smaller dial higher up": both, each named alone

@@ -127,7 +127,7 @@ def _as_far_side(tokens: list[Token], i: int) -> tuple[str, int] | None:
 
 
 _MOVERS = frozenset({"mover", "removal", "client", "director", "animator", "designer", "customer", "kid", "guest", "tester"})
-_PARTICIPLES = frozenset({"fallen", "stuck", "broken", "bent", "swung", "sprung", "slid", "gone", "come", "dropped", "flopped", "popped"})
+_PARTICIPLES = frozenset({"fallen", "stuck", "broken", "bent", "swung", "sprung", "slid", "gone", "come", "dropped", "flopped", "popped", "shot", "worn", "snapped", "bust", "busted", "seized", "jammed"})
 
 
 _NOT_NAMES = frozenset({"it", "this", "that", "he", "she", "they", "who", "which", "what", "everything", "nothing", "something", "one", "each",
