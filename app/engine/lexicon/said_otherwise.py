@@ -22,6 +22,7 @@ SAME_MEANING: Mapping[str, str] = MappingProxyType({
     "a_teeny_bit": "a_little_bit",
     "'s_got": "has", "'s_been": "has", "has_got": "has", "have_got": "have", "'ve_got": "have", "i_only_want": "i_want", "i_just_want": "i_want",
     "i_really_want": "i_want", "i_only_need": "i_need", "i_just_need": "i_need", "i_really_need": "i_need",
+    "let_it_lie": "rest", "let_them_lie": "rest", "let_it_sit": "rest",  # "just let it lie against the rim": it stays there
     "which_means_that": ";", "which_means": ";", "that_means_that": ";", "that_means": ";", "this_means_that": ";", "this_means": ";",
     "gust_of_wind": "gust", "puff_of_wind": "gust", "blast_of_wind": "gust", "gust_of_air": "gust", "rush_of_air": "gust"})
 """Words that say exactly what a word the lexicon knows says (the modal of specifications: "the lid shall be opened"):

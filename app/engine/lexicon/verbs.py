@@ -266,7 +266,6 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("hold", S.HOLD, _p(down=S.PRESS, open=S.HOLD, up=S.HOLD), stative=True),
     VerbInfo("keep", S.HOLD, stative=True),
     VerbInfo("rest", S.HOLD, stative=True),
-    VerbInfo("lie", S.HOLD, stative=True),  # "let it lie against the rim": it stays where it was put
     VerbInfo("maintain", S.HOLD, stative=True),  # "maintain that position for three seconds"
     VerbInfo("leave", S.HOLD, stative=True),
     VerbInfo("wait", S.WAIT, stative=True),

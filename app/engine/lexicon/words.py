@@ -186,7 +186,7 @@ HOLD_WORDS = frozenset({"keep", "hold", "leave", "stay", "remain"})
 MULTIWORD: tuple[str, ...] = (
     # joined into one token ("at_the_same_time"), longest first
     "at the same time as", "at the same time", "in order to", "after it", "after this", "once it is done", "once that is done",
-    "when that is done", "so as to", "so that", "which means that", "which means", "that means that", "that means", "this means that",
+    "when that is done", "so as to", "so that", "let it lie", "let them lie", "let it sit", "which means that", "which means", "that means that", "that means", "this means that",
     "this means", "gust of wind", "puff of wind", "blast of wind", "gust of air", "rush of air", "the whole time", "the entire time", "all the while", "all the time", "for as long as", "the whole while", "after that", "and then", "and after that",
     "and finally", "once done", "when done", "after which", "followed by", "all the way", "as far as it will go", "as far as it goes",
     "as far as possible", "most of the way", "a little bit", "a little", "a bit", "a tad", "just a crack", "a crack", "half way",

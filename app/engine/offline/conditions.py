@@ -14,6 +14,7 @@ from app.engine.offline import mechanisms as mech
 from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.holders import side_of_object
+from app.engine.offline.things_you_can import things_you_can
 from app.engine.offline.told import held_in
 
 if TYPE_CHECKING:
@@ -33,6 +34,9 @@ _GROUPS = frozenset({"keypad", "key pad", "number pad", "panel", "control panel"
 def condition(builder: Builder, act: Act) -> None:
     """A state to reach first ("while the door is open"), or a description that only sets "it"."""
     frame = act.goal
+    if len(told := things_you_can(builder, frame)) > 1:
+        builder.refs.remember(told, [])  # "There are two things you can turn on that door. Turn the lower one."
+        return
     if frame.heading:
         builder.notes.append(f"read '{frame.text}' as a summary of the steps after it")
         summary = VERBS.get(frame.text.split()[0]) if frame.text else None

@@ -20,7 +20,7 @@ from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS, VerbSense
-from app.engine.lexicon.words import AGENT_NOUNS, OBJECT_TILTS, PERSON_NOUNS, PERSONS, Side
+from app.engine.lexicon.words import AGENT_NOUNS, CAUSER_NOUNS, OBJECT_TILTS, PERSON_NOUNS, PERSONS, Side
 from app.engine.offline.audit import audit
 from app.engine.offline.builder import Builder
 from app.engine.offline.complaints import answer_complaint, answer_finished, answer_room, left_open, mishap
@@ -193,7 +193,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                         m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
-                story = any(a.goal.verb is not None for a in acts[index + 1:]) and _said_of_someone(act.goal)  # "a draft catches the door and ..."
+                story = any(a.goal.verb is not None for a in acts[index + 1:]) and bool(CAUSER_NOUNS & set(act.goal.text.split()[:3]))  # "a draft catches the door and ..."
                 if not exc.candidates and not builder.steps and not story and (answer_room(builder, acts, frames) or answer_finished(builder, frames)
                                                                                or answer_use(builder, frames)):
                     break  # "there's a cold draft coming through the doorway", "I'm finished with the laptop": shut it (with a note)

@@ -205,3 +205,12 @@ def test_round60_fixes_keep(name: str, prompt: str, joints: dict[str, float | No
 ])
 def test_round60_stories_and_headings(name: str, prompt: str, joints: dict[str, float | None]) -> None:
     test_round59_classes(name, prompt, joints)
+
+
+@pytest.mark.parametrize(("name", "prompt", "joints"), [
+    # round 61: parts told by what can be done with them (things_you_can.py); "the bigger one" given a spin keeps its "one"
+    ("extra/safe_101623", "There are two things you can turn on that door. Turn the lower one.", {"joint_0": None}),
+    ("safe_101593", "There are two things you can turn on the front of this safe. Give the bigger one a spin.", {"joint_1": None}),
+])
+def test_round61_classes(name: str, prompt: str, joints: dict[str, float | None]) -> None:
+    test_round59_classes(name, prompt, joints)

@@ -167,6 +167,9 @@ def _framing_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text in _POSTURES and (not out or out[-1].is_sentence_end) and after[:1] and after[0] in ("in_front_of", "facing", "before", "at", "by") and (
             (end := until_break(tokens, i, frozenset({",", ".", ";", "!", "?", "and", "then", "and_then"}))) < len(tokens) and tokens[end].text in ("and", "and_then")):
         return end + 1  # "stand in front of the box and fasten ...": where the user is ("Standing in front of the fridge, slide it ..." names "it")
+    here = next((k for k in (1, 2) if after[k - 1:k] == ["here"] and after[k:k + 1] and after[k] in (",", ":", "-", "—")), None)
+    if not out and here is not None and all(kind_of_word(w.text) is None and w.text.isalpha() for w in tokens[i:i + here]):
+        return i + here + 2  # "locksmith here - just the right-hand catch ...": who is asking, no part
     if t.text == "for" and (not out or out[-1].is_sentence_end) and after[:1] and after[0] in ("a", "an", "the", "my", "our", "this") and (
             wish := next((k for k in range(i + 2, min(len(tokens), i + 7)) if tokens[k].text in WISHES), None)) is not None and not any(
             tokens[k].is_punct or kind_of_word(tokens[k].text) is not None for k in range(i + 1, wish)):

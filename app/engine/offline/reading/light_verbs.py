@@ -31,7 +31,8 @@ def light_verb(tokens: list[Token]) -> list[Token]:
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS and i + 1 < len(tokens) and tokens[i + 1].text == "to":
             return [tokens[i], *tokens[i + 2:]]  # "give a quick tap to the top key": tap the top key
         if tokens[i].lemma in VERBS and tokens[i - 1].text in _LIGHT_OBJECT_WORDS:
-            bare = tokens[i - 1].text in ("a", "an") and tokens[i - 2].text not in _LIGHT_OBJECT_WORDS  # "a flush" is no part
+            anaphor = tokens[i - 2].text == "one" and i >= 4 and tokens[i - 3].text not in _LIGHT_OBJECT_WORDS  # "give the bigger one a spin"
+            bare = tokens[i - 1].text in ("a", "an") and (tokens[i - 2].text not in _LIGHT_OBJECT_WORDS or anaphor)  # "a flush" is no part
             if tokens[i - 1].text in _MANNER_ADJECTIVES and tokens[i - 2].text in ("a", "an"):
                 manner = _AS_ADVERB.get(tokens[i - 1].text, tokens[i - 1].text)
                 said = [Token(manner, manner, tokens[i - 1].start, tokens[i - 1].end)] if manner else []  # "a good shove": no manner

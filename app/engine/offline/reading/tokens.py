@@ -273,7 +273,7 @@ def _join_numbers(tokens: list[Token]) -> list[Token]:
 _SPELLED_OUT = frozenset({"code", "combination", "sequence", "pin", "passcode", "keys", "buttons", "digits", "numbers"})
 """Before a first dash: what the steps after it spell out ("enter the code - 7, then 3 - and open the door")."""
 _PHRASES = sorted((tuple(p.split()) for p in MULTIWORD), key=len, reverse=True)
-_CLAUSE_OPENERS = frozenset({"the", "a", "its", "it", "it's", "i", "i'm", "you", "you're", "we", "they", "my", "your", "our", "their", "he", "she", "someone"})
+_CLAUSE_OPENERS = frozenset({"the", "a", "its", "it", "it's", "they", "their"})  # a part's motion; not "the whole time I'm waggling ..."
 
 
 def _join_phrases(tokens: list[Token]) -> list[Token]:

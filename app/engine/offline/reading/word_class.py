@@ -6,7 +6,7 @@ from __future__ import annotations
 from functools import lru_cache
 
 from app.engine.lexicon.verbs import VERBS
-from app.engine.lexicon.words import ACTOR_NOUNS, CAUSER_NOUNS
+from app.engine.lexicon.words import CAUSER_NOUNS
 from app.engine.offline.reading.token import Token
 
 
@@ -102,12 +102,16 @@ def inflected_form(word: str, tag: str) -> str | None:
     return forms[0] if forms else None
 
 
+_COPULAS = frozenset({"is", "was", "has", "does", "seems", "looks", "needs", "wants", "gets", "keeps", "stays", "remains"})
+
+
 def actor_verb(tokens: list[Token], k: int) -> bool:
-    """A verb the lexicon does not know, right after a person or thing acting in a scene ("the cat jumps onto the
+    """A verb the lexicon does not know, right after a thing or animal acting in a scene ("the cat jumps onto the
     screen"): its verb, though it could be a noun ("jumps"); or a thing acting, right before its verb ("the steam keeps ...")."""
     from app.engine.offline.reading.part_words import kind_of_word
 
     word = tokens[k].text
     if word in CAUSER_NOUNS and k + 1 < len(tokens) and tokens[k + 1].text.endswith("s") and inflected_verb(tokens[k + 1].text):
         return True  # "the steam keeps bumping the lid": the one acting, never a part (but "let the steam out": a stray word)
-    return 0 < k and tokens[k - 1].text in ACTOR_NOUNS and word.endswith("s") and kind_of_word(word) is None and inflected_verb(word)
+    return 0 < k and tokens[k - 1].text in CAUSER_NOUNS and word.endswith("s") and kind_of_word(word) is None and inflected_verb(word) and (
+        word not in _COPULAS)  # not "the user is done"
