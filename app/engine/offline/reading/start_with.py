@@ -4,6 +4,7 @@ this stage "start" was read as setting the object going, and the keys were refus
 
 from __future__ import annotations
 
+from app.engine.offline.reading.framing import scan
 from app.engine.offline.reading.token import Token
 
 _OPENERS = frozenset({"start", "begin"})
@@ -23,22 +24,21 @@ def _state_after(tokens: list[Token], k: int) -> bool:
     return False
 
 
+def _marked(tokens: list[Token], k: int, out: list[Token]) -> int | None:
+    """At ``k``: "start with" / "finish on" before a part written as "first" / "finally"; the index after it, or None."""
+    t = tokens[k]
+    before = tokens[k - 1].text if k else ""
+    after = tokens[k + 1].text if k + 1 < len(tokens) else ""
+    follows = tokens[k + 2] if k + 2 < len(tokens) else None
+    opens = t.text in _OPENERS and after == "with"
+    closes = t.text in _CLOSERS and after in ("on", "with", "up_with")
+    if not (opens or closes) or before not in _BEFORE or follows is None or not (follows.text in _MENTION_STARTS or follows.number is not None) or (
+            _state_after(tokens, k + 2)):
+        return None
+    word = "first" if opens else "finally"
+    out.append(Token(word, word, t.start, tokens[k + 1].end))
+    return k + 2
+
+
 def start_with(tokens: list[Token]) -> list[Token]:
-    out: list[Token] = []
-    k = 0
-    while k < len(tokens):
-        t = tokens[k]
-        before = tokens[k - 1].text if k else ""
-        after = tokens[k + 1].text if k + 1 < len(tokens) else ""
-        follows = tokens[k + 2] if k + 2 < len(tokens) else None
-        opens = t.text in _OPENERS and after == "with"
-        closes = t.text in _CLOSERS and after in ("on", "with", "up_with")
-        if (opens or closes) and before in _BEFORE and follows is not None and (
-                follows.text in _MENTION_STARTS or follows.number is not None) and not _state_after(tokens, k + 2):
-            word = "first" if opens else "finally"
-            out.append(Token(word, word, t.start, tokens[k + 1].end))
-            k += 2
-            continue
-        out.append(t)
-        k += 1
-    return out
+    return scan(tokens, _marked)
