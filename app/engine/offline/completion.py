@@ -162,7 +162,7 @@ def _results(builder: Builder, act: Act, controls: list[Move], effects: list[Mov
         if frame.quantities.direction is None and act.goal.quantities.direction is not None and all(m.pronoun for m in frame.themes):
             # "fold the handle forward until it lies flat": flat, reached moving forward
             frame = replace(frame, quantities=replace(frame.quantities, direction=act.goal.quantities.direction))
-        if {"can", "could", "may"} & set(frame.text.split()) and (frame.verb is None or frame.verb not in frame.text):
+        if {"can", "could", "may"} & set(told := frame.text.split()) and (frame.verb is None or frame.verb not in told):
             continue  # "drop its door so the rack can come out": what it makes possible, no motion of the rack
         sense = frame.sense or act.goal.sense or VerbSense.OPEN
         if sense is VerbSense.UNLATCH:

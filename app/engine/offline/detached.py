@@ -34,11 +34,10 @@ def _put_elsewhere(words: list[str]) -> str | None:
 
 def check_detached(refs: Referents, frame: Frame, parts: list[Part]) -> None:
     """Refuse a clause that takes a part off its object or puts it somewhere else."""
-    named = parts
-    if not named or frame.verb is None or any(m.is_object for m in frame.themes):
+    if not parts or frame.verb is None or any(m.is_object for m in frame.themes):
         return
     words = frame.text.split()
-    label = named[0].kind.value if named[0].kind is not None else "part"
+    label = parts[0].kind.value if parts[0].kind is not None else "part"
     why = None
     if frame.verb in _DETACHING or frame.guessed_verb in _DETACHING:
         why = f"'{frame.guessed_verb or frame.verb}'"
@@ -47,5 +46,5 @@ def check_detached(refs: Referents, frame: Frame, parts: list[Part]) -> None:
     elif frame.verb in _PUTTING and (place := _put_elsewhere(words)) is not None:
         why = f"'{place}'"
     if why is not None:
-        raise refs.refuse(f"'{frame.text}': the {label} ({named[0].link}) is fixed to {refs.asset.name} by a joint, so {why} cannot be "
+        raise refs.refuse(f"'{frame.text}': the {label} ({parts[0].link}) is fixed to {refs.asset.name} by a joint, so {why} cannot be "
                           "animated; ask for the motion its joint allows (open, lift, swing it down)")

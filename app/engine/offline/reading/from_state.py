@@ -6,7 +6,7 @@ the door swung shut."""
 from __future__ import annotations
 
 from app.engine.lexicon.words import STATES
-from app.engine.offline.reading.spans import replace_spans
+from app.engine.offline.reading.spans import drop_spans
 from app.engine.offline.reading.token import Token
 
 _DETERMINERS = frozenset({"its", "the", "a", "their", "it's"})
@@ -32,8 +32,4 @@ def _span_end(tokens: list[Token], k: int) -> int | None:
 
 def from_state(tokens: list[Token]) -> list[Token]:
     """``tokens`` without "from <state> to" before an end state."""
-    return replace_spans(tokens, _span_end, _nothing)
-
-
-def _nothing(tokens: list[Token], start: int, end: int) -> list[Token]:  # noqa: ARG001 - the span is dropped
-    return []
+    return drop_spans(tokens, _span_end)

@@ -5,7 +5,7 @@ pressed every key of the keypad, silently."""
 from __future__ import annotations
 
 from app.engine.lexicon.words import OBJECT_NOUNS
-from app.engine.offline.reading.spans import replace_spans
+from app.engine.offline.reading.spans import drop_spans
 from app.engine.offline.reading.token import Token
 
 _TAKES = frozenset({"wants", "needs", "takes", "requires", "uses", "expects", "accepts"})
@@ -32,8 +32,4 @@ def _hint_end(tokens: list[Token], k: int) -> int | None:
 
 def object_wants(tokens: list[Token]) -> list[Token]:
     """``tokens`` without such hints."""
-    return replace_spans(tokens, _hint_end, _dropped)
-
-
-def _dropped(tokens: list[Token], start: int, end: int) -> list[Token]:  # noqa: ARG001 - the hint is dropped
-    return []
+    return drop_spans(tokens, _hint_end)

@@ -23,3 +23,8 @@ def replace_spans(tokens: list[Token], end_at: Callable[[list[Token], int], int 
         out.extend(written(tokens, k, end))
         k = end
     return out
+
+
+def drop_spans(tokens: list[Token], end_at: Callable[[list[Token], int], int | None]) -> list[Token]:
+    """``tokens`` without each span ``[k, end_at(tokens, k))``."""
+    return replace_spans(tokens, end_at, lambda _tokens, _start, _end: [])
