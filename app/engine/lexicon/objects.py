@@ -16,7 +16,7 @@ _CONTAINERS = frozenset({"box", "case", "chest", "crate", "container", "tin", "c
                          "strongbox", "toolbox", "lunchbox", "breadbox", "trunk", "footlocker", "cooler", "casket", "storage"})
 _FURNITURE = frozenset({"cabinet", "cupboard", "dresser", "wardrobe", "storage", "nightstand", "bedside", "locker", "bookcase", "desk",
                         "bureau", "sideboard", "credenza", "armoire", "tallboy", "commode", "chest", "chest_of_drawers", "vanity", "hutch",
-                        "cubby", "closet", "pantry", "bank_of_drawers", "set_of_drawers", "table", "furniture", "drawers", "unit", "workbench",
+                        "cubby", "closet", "pantry", "bank_of_drawers", "set_of_drawers", "table", "furniture", "drawers", "workbench",
                         "endtable"})
 _BINS = frozenset({"bin", "trash", "trashcan", "can", "dustbin", "garbage", "wheelie", "dumpster", "hamper", "basket"})
 _COOKERS = frozenset({"oven", "stove", "cooker", "range", "grill"})

@@ -94,6 +94,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("shut", S.CLOSE),
     VerbInfo("seal", S.CLOSE),
     VerbInfo("slam", S.CLOSE, _p(shut=S.CLOSE, down=S.PRESS, closed=S.CLOSE)),
+    VerbInfo("bang", S.CLOSE, _p(shut=S.CLOSE, closed=S.CLOSE, open=S.OPEN, down=S.LOWER)),  # "the lid bangs shut again"
     VerbInfo("fold", S.CLOSE, _FOLDING, motion="hinge"),
     VerbInfo("swing", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.OPEN, up=S.RAISE, down=S.LOWER, back=S.RETURN, over=S.TOGGLE),
              motion="hinge"),

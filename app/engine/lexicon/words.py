@@ -8,6 +8,11 @@ from collections.abc import Mapping
 from enum import StrEnum
 from types import MappingProxyType
 
+from app.engine.lexicon.people import ACTOR_NOUNS as ACTOR_NOUNS
+from app.engine.lexicon.people import AGENT_NOUNS as AGENT_NOUNS
+from app.engine.lexicon.people import CAUSER_NOUNS as CAUSER_NOUNS
+from app.engine.lexicon.people import PERSON_NOUNS as PERSON_NOUNS
+
 
 class Side(StrEnum):
     TOP = "top"
@@ -137,24 +142,8 @@ RATE_UNITS: Mapping[str, tuple[str, float]] = MappingProxyType({
 })
 PAUSE_NOUNS = frozenset({"pause", "wait", "beat", "break", "delay", "rest", "breather"})
 """Nouns of a wait ("2 s pause", "a 4-second beat")."""
-GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half", "thing"})
+GENERIC_PART_NOUNS = frozenset({"piece", "part", "section", "component", "panel", "portion", "segment", "element", "bit", "half", "thing", "slab"})
 """Nouns that name no kind of part: with a place or a size ("the topmost piece", "the left-hand section") any movable part there."""
-PERSON_NOUNS = frozenset({"character", "actor", "person", "user", "operator", "chef", "cook", "kid", "kids", "child", "man", "woman", "narrator", "thief",
-                          "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse", "waiter", "janitor", "guy",
-                          "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "grandpa", "mum", "granny", "grandad", "grandfather", "grandmother", "wife",
-                          "husband", "son", "daughter", "sister", "brother", "flatmate", "roommate", "friend", "partner", "boss", "detective", "spy", "robber",
-                          "intruder", "officer", "scientist", "effector", "end-effector",
-                          "manipulator", "gripper"})
-"""People (and robot hands) in a scene: never a part ("the thief yanks the lower drawer open": the drawer)."""
-CAUSER_NOUNS = frozenset({"draft", "draught", "wind", "breeze", "gust", "steam", "pressure", "cat", "dog", "puppy", "kitten", "gravity",
-                          "vibration", "earthquake", "tremor"})
-"""Things and animals that move a part in a scene ("a draft catches the door and pushes it partway open", "the steam keeps
-bumping the lid up"): like a person, the subject of what happens, never a part."""
-ACTOR_NOUNS = PERSON_NOUNS | CAUSER_NOUNS
-AGENT_NOUNS = PERSON_NOUNS | CAUSER_NOUNS | frozenset({"robot", "arm", "hand", "hands", "thumb", "finger", "fingers", "foot", "feet", "camera", "viewer",
-                                        "audience"})
-"""Who (or what) acts on the object in a scene: a clause whose subject this is and that names no part ("then the arm lets
-go") says nothing to animate."""
 FACE_RELATIONS = frozenset({"perpendicular", "parallel", "square", "level", "flush", "proud", "normal", "relative", "line"})
 """Words that set a part against a face of the object ("proud of the front", "perpendicular to the front", "in line with
 the top"): the side named after them is that face, neither a part nor a way to go."""
@@ -194,7 +183,7 @@ MULTIWORD: tuple[str, ...] = (
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
     "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
-    "on top of", "real quick", "real fast", "real slow", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
+    "on top of", "real quick", "real fast", "real slow", "straight away", "right away", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one after another", "one at a time", "every other", "apart from", "except for", "aside from", "other than",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
@@ -238,7 +227,8 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
                                               ("once", "done"))
 """The user's own progress ("when I'm done"): read as "then"."""
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
-    ("no", "more"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
+    ("no", "more", "than", "that"), ("no", "further", "than", "that"), ("not", "more", "than", "that"), ("no", "more", "than", "this"),
+    ("no", "more"), ("stop", "right", "there"), ("stop", "there"), ("stop", "at", "that", "point"), ("stop", "at", "that"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
     ("task", "list", ":"), ("shot", "list", ":"), ("to", "do", ":"), ("todo", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),

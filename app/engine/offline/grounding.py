@@ -229,7 +229,7 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
         candidates = _pick_line(candidates, obj, mention.row, axis=2)
     if mention.column is not None and len(candidates) > 1:
         candidates = _pick_line(candidates, obj, mention.column, axis=1)
-    if mention.size == "large" and len(candidates) > 1 and not mention.plural:
+    if mention.size == "large" and len(candidates) > 1 and not mention.plural and not mention.sides:  # "the lower big drawer": the lower one
         candidates = [max(candidates, key=lambda p: p.geometry.size)]
     if mention.ordinal is not None and mention.ordinal_from is not None:
         return _ordinal_from(candidates, mention, obj)

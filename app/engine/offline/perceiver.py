@@ -82,7 +82,8 @@ def _incidental(frame: Frame) -> bool:
     return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
             or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press ...": why, told first
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
-            or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split()))))
+            or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split())) or (
+                _said_of_someone(frame) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))))  # "grandpa liked his water hot"
             # "while the narrator talks", "dishes are all loaded"
             or (not frame.themes and not frame.instruments and _said_of_someone(frame))  # "... when the arm lets go": about who acts
             or bool({"must", "should"} & set(frame.text.split()[1:4])))  # "..., lever must end up on the back side": how it ends
@@ -95,7 +96,7 @@ _FACING = frozenset({"facing", "face", "faces", "pointing", "points", "point"})
 def _said_of_someone(frame: Frame) -> bool:
     """A clause whose subject is a person, a robot or the scene ("the arm lets go", "the character looks inside")."""
     words = frame.text.split()
-    if words[:1] in (["the"], ["a"], ["an"], ["their"], ["his"], ["her"]):
+    if words[:1] in (["the"], ["a"], ["an"], ["their"], ["his"], ["her"], ["your"], ["our"]):
         return len(words) > 1 and words[1] in AGENT_NOUNS
     return bool(words) and ((words[0] in PERSONS and words[0] not in ("my", "me")) or words[0] in PERSON_NOUNS or (words[0] == "my" and words[1:2] != [] and words[1] in PERSON_NOUNS))
 

@@ -107,6 +107,7 @@ def _is_event(frame: Frame) -> bool:
 
 
 _AS_IT_IS = re.compile(r" (like|as) (it|they) (is|are|sits|sit|stands) | as_is ")
+_ENDS_AS_BEGAN = re.compile(r"^(it|they) (ends|end|finishes|finish|stops|stop|winds up|comes to rest)( up)?( exactly| right| back)? where (it|they) (began|started|was|were)$")
 _ROLLING = frozenset({VerbSense.TURN, VerbSense.SPIN, VerbSense.MOVE, VerbSense.OPERATE})
 
 
@@ -146,6 +147,7 @@ def _appositive_amount(before: Act, frame: Frame) -> bool:
 
 
 def build_acts(frames: list[Frame]) -> list[Act]:
+    frames = list(frames)  # a negation may take in the subject said before it
     acts: list[Act] = []
     pending_wait = 0.0
     restated = said_aside = False
@@ -306,6 +308,12 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
         if (frame.stative or frame.verb is None) and _AS_IT_IS.search(f" {frame.text} "):
             continue  # "don't touch the drawer, it stays out like it is": nothing to do
+        if (frame.verb is None or frame.stative) and _ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense is VerbSense.RETURN for a in acts):
+            continue  # "..., then raise it back to its starting position. Expected: it ends exactly where it began": said again
+        if verbless and frame.themes and frame.quantities == Quantities() and index + 1 < len(frames) and frames[index + 1].link is Link.NEGATED and (
+                frames[index + 1].subject_theme):  # "The bottom door and the racks must not move": both are kept still
+            frames[index + 1] = replace(frames[index + 1], themes=(*frame.themes, *frames[index + 1].themes))
+            continue
         frame = carry(frame, previous_goal, measured)
         if frame.quantities.amount is not None:
             measured = frame

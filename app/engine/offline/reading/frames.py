@@ -29,7 +29,6 @@ from app.engine.lexicon.words import (
     INSTRUMENT,
     OBJECT_NOUNS,
     PLACES,
-    POSTURES,
     SAME_WAY,
     SIMULTANEOUS,
     SPATIAL,
@@ -40,6 +39,7 @@ from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.first_one import first_of
 from app.engine.offline.reading.held_for import held_for
+from app.engine.offline.reading.how_it_is import does_to_a_thing, how_it_is, told_state_words
 from app.engine.offline.reading.light_verbs import light_verb
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
@@ -144,7 +144,7 @@ def _find_verb(tokens: list[Token]) -> int | None:
 
 
 def _particle(tokens: list[Token], verb: int, mentions: list[Mention]) -> tuple[str | None, int | None]:
-    inside = {i for m in mentions for i in range(m.start, m.end)}
+    inside = {i for m in mentions for i in range(m.start, m.end)} | told_state_words(tokens, {m.end for m in mentions})  # not "that's flopped forward"
     reach = verb + 9 + sum(verb < i < verb + 9 for i in inside)  # a long part name does not use up the words after it
     for i in range(verb + 1, min(len(tokens), reach)):
         word = tokens[i].text
@@ -284,12 +284,10 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
                   None) if verb_index is None else None
     described = finite is not None and (tokens[finite - 1].text in ("is", "are", "was", "were") or (  # "the door is hinged on the left"
         tokens[finite].text.endswith("ed") and any(t.text in _HAVING for t in tokens[:finite])))  # "it has two knobs stacked ..."
+    described = described or (verb_index is None and finite is None and does_to_a_thing(tokens) is not None)  # "the left one hides the dove"
     if finite is not None and not described:
         verb_index, verb, guessed = finite, GENERIC.lemma, tokens[finite].text  # "the lever waggles 30 degrees left"
-    progressive = verb_index is not None and verb_index > 1 and tokens[verb_index].text.endswith("ing") and (
-        tokens[verb_index - 1].text in ("is", "are") and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION, Link.PARALLEL))  # "while it is spinning"
-    progressive = progressive or (verb_index is not None and not wish and clause.link not in (Link.RESULT, Link.PURPOSE, Link.CONDITION) and any(
-        tokens[k].text in ("is", "are") and tokens[k + 1].text in POSTURES for k in range(verb_index - 1)))  # "the door is sitting ... open"
+    progressive = how_it_is(tokens, verb_index, clause, wish)
     if progressive:
         verb_index, verb = None, None  # "the screen is leaning back too far": how things are, not a step
     causative = verb_index is not None and (tokens[verb_index].text in CAUSATIVES or (tokens[verb_index].lemma in TOLD_CAUSATIVES and any(

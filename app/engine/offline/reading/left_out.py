@@ -24,6 +24,7 @@ from app.engine.lexicon.words import (
     MODALS,
     OBJECT_NOUNS,
     OBJECT_SUFFIXES,
+    PERSON_NOUNS,
     PERSONS,
     SIZES,
     SPATIAL,
@@ -111,7 +112,7 @@ def _topic(tokens: list[Token], start: int, i: int) -> bool:
     if not span or len(span) > 8 or not any(_nounish(t) for t in span):
         return False
     for t in span:
-        if t.is_punct or t.text in PERSONS or t.text in _PRONOUNS or t.text in AUX or t.text in MODALS or t.text in _SUBORDINATORS or t.text == "to":
+        if t.is_punct or t.text in PERSONS or t.text in PERSON_NOUNS or t.text in _PRONOUNS or t.text in AUX or t.text in MODALS or t.text in _SUBORDINATORS or t.text == "to":
             return False  # not "key in 0 to | unlock it": a purpose
         if (t.lemma in VERBS or t.lemma in LIGHT_VERBS) and t.text not in SPATIAL and kind_of_word(t.text) is None and not _nounish(t):
             return False
@@ -174,6 +175,11 @@ def left_out(tokens: list[Token]) -> list[Token]:
         if (told := _inverted_told(tokens, i)) is not None:
             out += [Token(",", ",", token.start, token.start), *tokens[i + 1:told], token]  # "only then is the door to be opened": the door is to be
             start, i = i + 1, told
+            continue
+        if token.text in ("do", "does") and i + 2 < len(tokens) and tokens[i + 1].text in ("you", "we", "i") and i > 1 and not tokens[i - 1].is_punct and (
+                _only_before(tokens, i) and _command_at(tokens, i + 2)):
+            out.append(Token(",", ",", token.start, token.start))  # "only once it's off do you lift the jug": ", lift the jug"
+            start, i = i + 2, i + 2
             continue
         if (inverted := _inverted(tokens, i)) is not None and (form := inflected_form(tokens[inverted].text, "VBZ")):
             out += [Token(",", ",", token.start, token.start), *tokens[i + 1:inverted], replace(tokens[inverted], text=form)]

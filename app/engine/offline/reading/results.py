@@ -44,10 +44,22 @@ def _restates(act: Act, frame: Frame) -> bool:
         w in STATES and not (w == "up" and k and words[k - 1] in ("ends", "end", "ended")) for k, w in enumerate(words))
 
 
+_STOPS = frozenset({"stop", "stops", "end", "limit", "end-stop", "endstop", "backstop", "bumper"})
+_MEETS = frozenset({"hit", "reach", "touch", "meet", "bump", "come"})
+
+
+def _at_its_stop(frame: Frame) -> bool:
+    """ "(so) it hits the stop", "it should reach the end": the step runs to its limit, which it says already."""
+    words = frame.text.split()
+    return frame.link is Link.RESULT and frame.verb in _MEETS and bool(words) and words[0] in ("it", "they") and bool(_STOPS & set(words[1:]))
+
+
 def merged_result(act: Act, frame: Frame) -> Act | None:
     """``act`` completed by the result ``frame``; None when the result is an effect of its own."""
     if not act.goal.themes:
         return None
+    if _at_its_stop(frame):
+        return act  # "open the drawer all the way out, it should hit the stop"
     if _restates(act, frame):
         return act  # "drive the handle to its far limit so the handle ends up lying across the back rim": where it goes, said twice
     if not _about_it(frame):

@@ -148,6 +148,8 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
         request = next((p for p in REQUEST_PHRASES if tuple(t.text for t in tokens[i:i + len(p)]) == p), None)
         if request is not None:  # "could you open ...", "would you mind opening ...": the request itself
             skip = len(request) - 1
+            if out and request[0] in ("can", "could", "would", "will") and not out[-1].is_punct and out[-1].text not in ("and", "then", "so", "now", "but", "ok", "okay"):
+                out.append(Token(",", ",", token.start, token.start))  # "... two things you can turn can you spin the upper one": a new clause
             since = next((k for k in range(len(out) - 1, -1, -1) if out[k].is_sentence_end or out[k].text == ":"), -1)
             if request[-1] == ":" and 0 < len(out) - since - 1 <= 2:
                 del out[since + 1:]  # "Robot task: ...": the heading's own words go too

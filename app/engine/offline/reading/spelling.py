@@ -161,8 +161,8 @@ def _rare_beside(word: str, candidate: str) -> bool:
 
     frequency = _english()
     own, other = int(frequency[word]), int(frequency[candidate])  # type: ignore[index]
-    if len(word) > len(candidate) and own >= RARE_LONGER_COUNT:
-        return False  # "baste" is a word of its own, not "base" with a letter too many
+    if (len(word) > len(candidate) or word[0] != candidate[0]) and own >= RARE_LONGER_COUNT:
+        return False  # "baste" is a word of its own, not "base" with a letter too many; "gasket" is no slip of "basket"
     return OSA.distance(word, candidate) == 1 and own < RARE_WORD_COUNT and other >= MUCH_COMMONER * max(own, 1) and candidate in content_words()
 
 

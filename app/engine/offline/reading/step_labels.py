@@ -84,6 +84,8 @@ def step_labels(tokens: list[Token]) -> list[Token]:
             current, end = starts[k]
             if out and out[-1].text not in (".", ";"):
                 out.append(Token(".", ".", tokens[k].start, tokens[k].start))
+            if out and current > 1 and end < len(tokens) and tokens[end].text not in ("then", "and_then", "next", "finally"):
+                out.append(Token("then", "then", tokens[k].start, tokens[k].start))  # "2) turntable 90 deg 3) door closed": a step, not an effect
             k = end
             continue
         token = tokens[k]

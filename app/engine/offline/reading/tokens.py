@@ -103,7 +103,8 @@ def _raw_tokens(prompt: str) -> list[Token]:
         numbered = tokens and tokens[-1].number is not None and float(tokens[-1].number).is_integer() and 0 < tokens[-1].number < 30
         if kind == "paren" and word == ")" and not depth and tokens and (tokens[-1].number is not None or tokens[-1].text in _LETTERS) and (
                 len(tokens) == 1 or tokens[-2].is_sentence_end or tokens[-2].text in (",", ":") or numbered):
-            tokens[-1] = Token(".", ".", tokens[-1].start, end)  # "1) lower the lid 2) ...": a numbered step
+            later = len(tokens) > 1 and tokens[-1].number is not None and tokens[-1].number > 1  # "2) turntable 90 deg 3) door closed": a step of its own
+            tokens[-1:] = [Token(".", ".", tokens[-1].start, end), *([Token("then", "then", end, end)] if later else [])]  # "1) lower the lid 2) ..."
             continue
         if kind == "paren":
             depth = max(0, depth + (1 if word == "(" else -1))
@@ -348,11 +349,13 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.learner import learner
     from app.engine.offline.reading.left_out import left_out
     from app.engine.offline.reading.object_wants import object_wants
+    from app.engine.offline.reading.padded_units import padded_units
     from app.engine.offline.reading.paused_after import paused_after
     from app.engine.offline.reading.plural_subject import plural_subject
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.start_place import start_place
     from app.engine.offline.reading.start_with import start_with
+    from app.engine.offline.reading.starts_as import starts_as
     from app.engine.offline.reading.step_labels import step_labels
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_states import told_states
@@ -364,7 +367,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, padded_units, starts_as, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []

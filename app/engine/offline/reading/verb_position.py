@@ -16,7 +16,8 @@ VERB_CUES = frozenset({"and", ",", "then", "but", "to", "by", "after", "before",
                        "after_that", "subsequently", "in_order_to", "so_as_to", "without", "until", "or", "as", "at_the_same_time",
                        "simultaneously", "which", "that", "then,", "gently", "slowly", "quickly", "carefully", "fully",
                        "don't", "dont", "not", "never", "do", "again", "meanwhile", "i", "you", "we", "let's", "lets", "using",
-                       "immediately", "briefly", "partially", "halfway", "slightly", "completely", "thereafter"})
+                       "immediately", "briefly", "partially", "halfway", "slightly", "completely", "thereafter",
+                       "he", "she", "he'd", "she'd", "i'd", "you'd", "we'd", "would", "he'll", "she'll", "i'll", "you'll", "we'll"})
 AUX = frozenset({"is", "are", "was", "were", "be", "being", "been", "stays", "remains", "stay", "remain", "gets", "get"})
 
 
