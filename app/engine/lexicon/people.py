@@ -6,7 +6,7 @@ _PEOPLE = frozenset({"character", "actor", "person", "user", "operator", "chef",
                      "burglar", "guard", "player", "hero", "villain", "customer", "worker", "technician", "mechanic", "nurse", "waiter", "janitor", "guy",
                      "girl", "boy", "owner", "tenant", "mom", "dad", "grandma", "grandpa", "mum", "granny", "grandad", "grandfather", "grandmother", "wife",
                      "husband", "son", "daughter", "sister", "brother", "flatmate", "roommate", "friend", "partner", "boss", "detective", "spy", "robber",
-                     "intruder", "officer", "scientist", "visitor", "guest", "tourist", "client", "patient", "neighbour", "neighbor", "colleague",
+                     "intruder", "officer", "scientist", "visitor", "guest", "tourist", "client", "patient", "colleague",
                      "teacher", "magician", "assistant", "butler", "maid", "cleaner", "inspector", "landlord", "landlady", "host", "stranger",
                      "mother", "father", "uncle", "aunt", "baby", "toddler", "teenager", "student", "guide", "curator", "tester"})
 PERSON_NOUNS = _PEOPLE | frozenset(f"{w}s" for w in _PEOPLE) | frozenset(

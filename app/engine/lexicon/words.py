@@ -183,7 +183,8 @@ MULTIWORD: tuple[str, ...] = (
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",
     "to the end", "together with", "along with", "in parallel", "in unison", "at once", "both at once", "next to", "in front of", "get at",
-    "on top of", "real quick", "real fast", "real slow", "straight away", "right away", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
+    "on top of", "real quick", "real fast", "real slow", "straight away", "right away", "in and straight back out", "in and back out", "in and out",
+    "down and straight back up", "down and back up", "into place", "in place", "on the spot", "where it stands", "left hand", "right hand", "chest of drawers", "bank of drawers", "set of drawers", "out of",
     "back and forth", "all the way open", "wide open", "half open", "a few", "one by one", "one after the other", "one after another", "one at a time", "every other", "apart from", "except for", "aside from", "other than",
     "in turn", "in sequence", "after another", "by hand", "with one hand", "and all", "as far as",
     "where it started", "where it was", "where it began", "where they started", "where they were", "where you started",
@@ -228,10 +229,11 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
 """The user's own progress ("when I'm done"): read as "then"."""
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("no", "more", "than", "that"), ("no", "further", "than", "that"), ("not", "more", "than", "that"), ("no", "more", "than", "this"),
+    ("if", "you", "can"), ("if", "you", "could"), ("if", "possible"), ("if", "you", "don't", "mind"), ("if", "you", "would"),
     ("no", "more"), ("stop", "right", "there"), ("stop", "there"), ("stop", "at", "that", "point"), ("stop", "at", "that"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
     ("task", "list", ":"), ("shot", "list", ":"), ("to", "do", ":"), ("todo", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
-    ("would", "you", "mind"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
+    ("would", "you", "mind"), ("could", "i", "just"), ("could", "i"), ("can", "i", "just"), ("can", "i"), ("may", "i"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"), ("let", "me"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
 CORRECTIONS: tuple[tuple[str, ...], ...] = (
@@ -328,7 +330,8 @@ CENTRE_WORDS = frozenset({"back_to_the_middle", "back_to_the_centre", "back_to_t
                           "towards_the_middle", "towards_the_centre", "towards_the_center"})
 """A part resting midway ("the tap lever") goes back to rest: "then back to the middle"."""
 BRIEF_VERBS = frozenset({"tap", "click", "pulse", "poke", "jab", "flick", "dab"})
-BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly"})
+BRIEF_WORDS = frozenset({"briefly", "momentarily", "quick", "brief", "instantly", "in_and_straight_back_out", "in_and_back_out", "in_and_out",
+                         "down_and_straight_back_up", "down_and_back_up"})
 """A brief press ("tap the button", "press it briefly"): a control that would hold is let go at once."""
 POSTURES = frozenset({"sitting", "standing", "hanging", "resting", "lying", "sticking", "poking", "propped", "left"})
 """How a part is said to rest ("the door is sitting slightly open"): the clause says how things are, not a step."""
@@ -383,6 +386,7 @@ HEDGE_ADVERBS = frozenset({"roughly", "approximately", "approx", "nearly", "almo
 """", roughly half a revolution": how sure the amount is, never a part."""
 EVERYDAY_WORDS = frozenset({"someone", "somebody", "clothes", "laundry", "dishes", "plates", "load", "loaded", "unload", "washing",
                             "again", "please", "leftovers", "groceries", "food", "stuff", "things", "inside", "something", "anything",
-                            "nothing", "everything", "building", "until", "should", "the", "because"})
+                            "nothing", "everything", "building", "until", "should", "the", "because", "else",
+                            "sorry", "photo", "photos", "picture", "pictures", "video", "request"})
 """Everyday words of requests that are no part and no motion ("someone left ...", "load some clothes in"): typos are
 corrected to them, and never from them to a lexicon word ("clothse" is "clothes", not "close")."""

@@ -232,6 +232,9 @@ class Builder:
                 self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
         check_motion(self.refs, goal, effects_parts)
+        if (kept := [p for p in effects_parts if p.joint in self.excluded]) and len(effects_parts) == 1 and len(goal.themes) == 1 and (
+                goal.themes[0].kind not in (None, kept[0].kind)):  # "raise the toilet seat, leave the lid": the seat would be the lid
+            raise self.refs.refuse(f"'{goal.text}' would move {kept[0].link} ({kept[0].joint}), the part the prompt keeps still")
         check_detached(self.refs, goal, effects_parts)
         check_press(self.refs, self.tracker, goal, sense, effects_parts, self.notes)
         if elaborates(self, act, sense, effects_parts):

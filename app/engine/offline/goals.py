@@ -283,6 +283,11 @@ def goal_for(frame: Frame, sense: VerbSense, part: Part, tracker: Tracker) -> Go
         state = "flat"  # "fold the handle down on the side away from the lid": down flat, on that side
     goal = Goal(state=state, amount=value, unit=unit, measured_from=measured,  # type: ignore[arg-type]
                 direction_world=(quantities.axis or toward) if state == "toward" else _tipping(state, quantities.direction, tracker, toward))
+    if state == "open" and unit in ("rad", "m") and reference is None and sense is VerbSense.MOVE and quantities.direction is None and (
+            geometry.open_value is not None and min(abs(tracker.value(part.joint) - e) for e in (closed_of(geometry), geometry.open_value)) > LIMIT_EPS):
+        raise GroundingError(f"'{frame.text}': {part.link} ({part.joint}) rests part open and can go either way; say 'open it "
+                             f"{quantities.amount.words if quantities.amount else 'that much'} more' or 'close it "
+                             f"{quantities.amount.words if quantities.amount else 'that much'}'")  # "move screen 30 deg" on a laptop open at 90
     if state == "open" and unit in ("rad", "m") and reference is None:
         goal, note = _opening_amount(goal, part, tracker)
         notes.extend(note)

@@ -229,8 +229,9 @@ def narrow(mention: Mention, candidates: list[Part], asset: ArticulatedAsset, ob
         candidates = _pick_line(candidates, obj, mention.row, axis=2)
     if mention.column is not None and len(candidates) > 1:
         candidates = _pick_line(candidates, obj, mention.column, axis=1)
-    if mention.size == "large" and len(candidates) > 1 and not mention.plural and not mention.sides:  # "the lower big drawer": the lower one
-        candidates = [max(candidates, key=lambda p: p.geometry.size)]
+    sizes = sorted((p.geometry.size for p in candidates), reverse=True)
+    if mention.size == "large" and len(candidates) > 1 and not mention.plural and (not mention.sides or mention.kind is None or sizes[0] > (1 + SIZE_TOLERANCE) * sizes[1]):
+        candidates = [max(candidates, key=lambda p: p.geometry.size)]  # not "the lower big drawer" of two alike: the lower one
     if mention.ordinal is not None and mention.ordinal_from is not None:
         return _ordinal_from(candidates, mention, obj)
     counted = next((int(w) for w in mention.modifiers if w.isdigit()), None) if mention.plural else None

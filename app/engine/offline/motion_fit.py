@@ -6,6 +6,9 @@ one that only swings, "press the button" on a button already at the bottom of it
 
 from __future__ import annotations
 
+import math
+import re
+
 from app.engine.lexicon.kinds import info
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import HINGE_WORDS, SLIDE_WORDS
@@ -13,9 +16,12 @@ from app.engine.offline import mechanisms as mech
 from app.engine.offline.grounding import Part
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.referents import Referents
+from app.engine.offline.resolve import closed_of
 from app.engine.offline.tracker import Tracker
 
 REACHED = 1e-6
+_FLAT_EPS = math.radians(5)
+_PAST_FLAT = re.compile(r" (past|beyond|further than|farther than|more than) (flat|180 degrees|180 deg|180°) | like a tablet | (under|beneath|underneath|below) the (keyboard|base) | underside of the (keyboard|base) ")
 _PRESSES = frozenset({VerbSense.PRESS, VerbSense.PUSH_IN, VerbSense.OPERATE})
 
 
@@ -52,6 +58,11 @@ def check_motion(refs: Referents, frame: Frame, parts: list[Part]) -> None:
                           "only slides")
     if not named:
         return
+    flat = next((p for p in named if p.geometry.type == "revolute" and p.geometry.open_value is not None and abs(
+        p.geometry.open_value - closed_of(p.geometry)) < math.pi + _FLAT_EPS), None) if _PAST_FLAT.search(f" {frame.text} ") else None
+    if flat is not None:
+        reach = math.degrees(abs(flat.geometry.open_value - closed_of(flat.geometry)))  # type: ignore[operator]
+        raise refs.refuse(f"'{frame.text}': the {_label(flat)} ({flat.link}) opens at most {reach:.0f} degrees from closed; it cannot fold past flat")
     slides_only = all(p.geometry.type == "prismatic" for p in named)
     if motion == "hinge" and slides_only:
         raise refs.refuse(f"'{frame.verb}' swings a part about a hinge, but the {_label(named[0])} only slides")

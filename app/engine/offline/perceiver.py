@@ -145,7 +145,7 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"read '{act.goal.text}' as how it is now, not a step")
                 set_topic(builder, replace(act.goal, stative=True, verb=None))
                 continue
-            if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and not act.goal.themes and not act.goal.instruments:
+            if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and all(m.is_object for m in act.goal.themes) and not act.goal.instruments:
                 continue  # "Nothing else moves.": what stays still, which it does unless asked
             if len(acts) > 1 and mishap(act):
                 builder.notes.append(f"ignored '{act.goal.text}': it is about what happens to a person, not a step")  # "I keep bumping my knee on it"
@@ -206,7 +206,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                 builder.notes.append(f"ignored '{act.goal.text}': it asks for no motion of a part of {asset.name}")
         finally:
             pending = act.wait_before_s if len(builder.steps) == steps else 0.0
-    for told in [f for f in frames if f.heading and f.verb is not None and f.themes and all(m.is_object for m in f.themes)] if not builder.steps else []:
+    for told in [f for f in frames if f.heading and f.verb is not None and f.themes and all(m.is_object or m.kind is not None for m in f.themes)] if (
+            not builder.steps) else []:  # "Tap the top-left key: in and straight back out": the heading was the step
         builder.add(Act(goal=replace(told, heading=False)))  # "Close this cabinet up properly: the door and the drawer are both sitting open"
     if not builder.steps and (answer_complaint(builder, acts) or answer_room(builder, acts, frames) or answer_finished(builder, frames)
                               or answer_use(builder, frames)):

@@ -112,8 +112,6 @@ class Referents:
             if not candidates:
                 named = [p for p in by_name(self.parts, (mention.head,), self.asset) if p.kind is None or p.kind is kind]
                 candidates, how = (named, "name") if named else ([], "none")
-            elif how == "related" and any(m.kind is candidates[0].kind and m.kind is not kind and not m.pronoun for m in self.said):
-                return Grounding()  # "raise the toilet seat and leave the cover lid": the lid is named for itself, the seat is missing
             elif how == "related":
                 shown = candidates[0].kind.value if candidates[0].kind is not None else "part"
                 notes.append(f"read '{mention.words or mention.head}' as the {shown}: the asset has no {kind.value}")

@@ -160,6 +160,8 @@ def hold(builder: Builder, act: Act) -> bool:
         builder.notes.append(f"read '{frame.text}' as the distance of the previous motion")
     if builder.steps and (pronoun or same_as_last(builder, frame)):
         last = builder.steps[-1]
+        if not duration and any(c.release == "self_return" for c in last.controls):  # "press the key and keep it pressed": it stays in
+            last = last.model_copy(update={"controls": [c.model_copy(update={"release": "stays"}) for c in last.controls]})
         builder.steps[-1] = last.model_copy(update={"hold_s": last.hold_s + duration})
         if act.results:
             refine_last(builder, act)

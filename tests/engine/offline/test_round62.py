@@ -107,3 +107,62 @@ def test_a_missing_part_is_not_stood_in_for_by_one_named_apart() -> None:
     """referents: "the toilet seat" had been read as the lid, though the prompt names "the cover lid" to stay put."""
     with pytest.raises(GroundingError, match="toilet seat"):
         animate("toilet_102622", "Raise the toilet seat on its own and leave the cover lid exactly where it is.")
+
+
+# --- round 63 (three more writers: a haiku-like voice, a film director, a literal translation from German) ---
+
+@pytest.mark.parametrize(("name", "prompt", "joint", "final"), [
+    # lines split by slashes that go on with one step (verse_lines): "half a turn" had been a step of its own (a second turn)
+    ("extra/microwave_7128", "upper dial only / half a turn, clockwise / the lower one rests", "joint_3", -np.pi),
+    # "as you face it:" ends at the colon (framing._viewpoint): the step after it had been dropped with the aside
+    ("refrigerator_11178", "Fridge, the right-hand door as you face it: swing it open ninety degrees. Nothing else moves.", "joint_1", np.pi / 2),
+    # "until the half of its way" (learner): half of its way
+    ("storage_19179", "Pull the lower drawer out until the half of its way.", "joint_0", 0.5),
+    # "click the dial a quarter turn": a turn that stays, not a brief click
+    ("coffee_machine_103030", "Click the speed dial on the front of the base a quarter turn and listen to it whirr!", "joint_0", -np.pi / 2),
+    # "first make the lid closed": the causative after "first"
+    ("washing_machine_103508", "First make the lid closed, then turn the most left knob one quarter.", "joint_0", -0.7917),
+])
+def test_round63_the_part_ends_where_asked(name: str, prompt: str, joint: str, final: float) -> None:
+    q = _q(animate(name, prompt).trajectory, joint)
+    assert q[-1] == pytest.approx(final, abs=0.03)
+
+
+@pytest.mark.parametrize(("name", "prompt", "moved"), [
+    # a key pressed and kept pressed (revisions.hold): it had sprung back
+    ("safe_101564", "On the safe press the key in the middle of the lowest row and let it stay pressed.", {"joint_10"}),
+    ("safe_101564", "press the top-left key and keep it pressed", {"joint_0"}),
+    # "the pedal thing" is the pedal (mentions): it had been refused
+    ("trash_can_102181", "step on the pedal thing so the lid pops open", {"joint_0", "joint_1"}),
+    # "Lid only" says which part moves (acts): the pedal had been worked, against "leave the pedal alone"
+    ("trash_can_102181", "Pedal bin: lid goes all the way open, as far as it will go. Lid only, leave the pedal alone.", {"joint_1"}),
+    # a motion said as a noun applied to the object (light_verbs._applied): it had been refused
+    ("stapler_103099", "Apply a pure yaw of 90° to the stapler about the vertical axis, no tilt, articulation left at rest.", set()),
+    # cues, apologies and "about to" beside the request (said_aside), and "could I", "if you can": each had been refused
+    ("box_102456", "Slide the whole box half a metre to my right. I'm the one standing at the front of it. Go!", set()),
+    ("kitchen_pot_100038", "Raise the lid on that pot ten centimetres and leave it hovering there, it's about to boil over.", {"joint_0"}),
+    ("kitchen_pot_100038", "Could I just peek under the pot lid, and then put it back down where it was? Sorry if that's a silly request.",
+     {"joint_0"}),
+    ("laptop_10248", "um could u cloes the laptp lid? sory", {"joint_1"}),
+    # a heading that is the step, with how it goes after the colon ("in and straight back out": briefly)
+    ("safe_101564", "Tap the top-left key on the safe's keypad: in and straight back out.", {"joint_0"}),
+])
+def test_round63_only_the_asked_parts_move(name: str, prompt: str, moved: set[str]) -> None:
+    assert _moved(animate(name, prompt).trajectory) == moved
+
+
+def test_a_key_kept_pressed_stays_in() -> None:
+    q = _q(animate("safe_101564", "press the top-left key and keep it pressed").trajectory, "joint_0")
+    assert q[-1] > 0.5 * q.max() > 0
+
+
+@pytest.mark.parametrize(("name", "prompt", "said"), [
+    # a fold past flat on a hinge that stops at flat (motion_fit): it had opened to the stop, silently
+    ("laptop_10101", "Bend the screen backwards past flat until it folds all the way round and lies against the underside of the keyboard, "
+                     "like a tablet.", "past flat"),
+    # "move" by an angle on a part resting part open, no way said (goals): it had closed the screen to 30 degrees from shut
+    ("laptop_10697", "laptop_10697: move screen 30 deg.", "either way"),
+])
+def test_round63_refusals(name: str, prompt: str, said: str) -> None:
+    with pytest.raises(GroundingError, match=said):
+        animate(name, prompt)

@@ -310,6 +310,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "don't touch the drawer, it stays out like it is": nothing to do
         if (frame.verb is None or frame.stative) and _ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense is VerbSense.RETURN for a in acts):
             continue  # "..., then raise it back to its starting position. Expected: it ends exactly where it began": said again
+        if verbless and frame.themes and frame.quantities == Quantities() and "only" in frame.text.split()[:1] + frame.text.split()[-1:] and (
+                {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}):
+            continue  # "open the lid. Lid only.": which part moves, said again
         if verbless and frame.themes and frame.quantities == Quantities() and index + 1 < len(frames) and frames[index + 1].link is Link.NEGATED and (
                 frames[index + 1].subject_theme):  # "The bottom door and the racks must not move": both are kept still
             frames[index + 1] = replace(frames[index + 1], themes=(*frame.themes, *frames[index + 1].themes))

@@ -125,7 +125,7 @@ _STATE_WORDS = frozenset({"open", "closed", "shut", "up", "down", "on", "off", "
 
 def _find_verb(tokens: list[Token]) -> int | None:
     for i in range(len(tokens)):
-        if tokens[i].text in CAUSATIVES and i == 0:
+        if tokens[i].text in CAUSATIVES and (i == 0 or (i == 1 and tokens[0].text in ("first", "then", "now", "just", "next", "finally"))):
             return i
         if i > 0 and tokens[i - 1].text in ("is", "are", "was", "were", "be", "stays", "remains", "from", "since") and tokens[i].text in _STATE_WORDS:
             continue  # "the door is open", "100 degrees from closed": a state, not a verb
@@ -379,7 +379,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         codes=codes, first=first,
         same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=min((_IN_TURN[w] for w in words if w in _IN_TURN), key=lambda o: (o == "reading", o), default=None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
-        brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body and particle not in _END_PARTICLES) or bool(words & BRIEF_WORDS),  # "flick it across to the left": stays
+        brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body and particle not in _END_PARTICLES and not (
+            quantities.amount is not None and quantities.amount.unit in ("rad", "turn"))) or bool(words & BRIEF_WORDS),  # not "click the dial a quarter turn"  # "flick it across to the left": stays
     )
 
 

@@ -74,7 +74,7 @@ def _viewpoint(tokens: list[Token], i: int) -> int:
         j += 1
     if j >= len(tokens) or tokens[j].text not in _VIEW_VERBS or (j == i + 1 and tokens[i].text != "as"):
         return 0  # "while facing": no subject, may be the part's ("the lid, while facing up, ...")
-    end = until_break(tokens, j, frozenset({",", ";", ".", "!", "?", "then", "and_then", "and"}))
+    end = until_break(tokens, j, frozenset({",", ";", ".", "!", "?", ":", "then", "and_then", "and"}))  # "as you face it: swing it ..."
     verb = next((k for k in range(j + 1, end) if tokens[k].text.endswith("s") and tokens[k].text not in _VIEW_VERBS
                  and lemma_of(tokens[k].text)[0] in VERBS and lemma_of(tokens[k].text)[0] != tokens[k].text), end)
     return verb - i  # "the drawer on the left as seen from the front | slides out halfway": the aside ends before the main verb

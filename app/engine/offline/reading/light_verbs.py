@@ -18,9 +18,34 @@ _LIGHT_OBJECT_WORDS = frozenset({"a", "an", "half", "quarter", "full", "little",
                                  "clockwise", "anticlockwise", "counterclockwise", "anti-clockwise", "counter-clockwise"})
 
 
+_APPLYING = frozenset({"apply", "perform", "execute", "do"})
+_NOUN_VERBS = {"rotation": "rotate", "translation": "move", "yaw": "yaw", "turn": "turn", "twist": "twist", "push": "push", "pull": "pull",
+               "lift": "lift", "spin": "spin", "press": "press", "tap": "tap", "nudge": "nudge", "tilt": "tilt", "slide": "slide", "shove": "shove"}
+_UNIT_WORDS = frozenset({"degree", "degrees", "deg", "°", "cm", "mm", "m", "metre", "metres", "meter", "meters", "inch", "inches", "quarter", "half",
+                         "turn", "turns"})
+_ENDS = frozenset({",", ".", ";", "about", "around", "round", "along", "with", "while", "and", "then", "so", "without"})
+
+
+def _applied(tokens: list[Token]) -> list[Token] | None:
+    """"apply a pure yaw of 90 degrees to the stapler about the vertical axis" -> "yaw the stapler 90 degrees about ...":
+    a motion said as a noun applied to a part or the object."""
+    if len(tokens) < 5 or tokens[0].lemma not in _APPLYING or tokens[1].text not in ("a", "an"):
+        return None
+    k = next((k for k in range(2, min(6, len(tokens))) if tokens[k].lemma in _NOUN_VERBS), None)
+    to = next((j for j in range(k + 1, len(tokens)) if tokens[j].text in ("to", "on")), None) if k is not None else None
+    if k is None or to is None or to + 1 >= len(tokens):
+        return None
+    end = next((j for j in range(to + 1, len(tokens)) if tokens[j].text in _ENDS or tokens[j].is_punct), len(tokens))
+    amount = [t for t in tokens[2:k] if t.number is not None or t.text in _UNIT_WORDS] + [t for t in tokens[k + 1:to] if t.text != "of"]
+    verb = _NOUN_VERBS[tokens[k].lemma]
+    return [Token(verb, verb, tokens[0].start, tokens[k].end), *tokens[to + 1:end], *amount, *tokens[end:]]
+
+
 def light_verb(tokens: list[Token]) -> list[Token]:
     """"give the car a push" -> "push the car a push": the deverbal noun is the action (its amount stays:
     "give the dial half a turn")."""
+    if (applied := _applied(tokens)) is not None:
+        return applied
     if tokens and tokens[0].lemma in _PAUSE_TAKERS:
         for k in range(1, min(len(tokens), 4)):
             if tokens[k].text in PAUSE_NOUNS and all(t.text in ("a", "an") or t.text in _MANNER_ADJECTIVES for t in tokens[1:k]):

@@ -239,7 +239,8 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
             return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,
                            start=begin, end=end, words=_words(tokens, begin, end)), end
         return None, max(end, begin + 1)
-    last_noun = nouns[-1] if nouns else None
+    last_noun = nouns[-2] if len(nouns) > 1 and nouns[-2][2] is not None and tokens[nouns[-1][0]].lemma in GENERIC_PART_NOUNS and (
+        nouns[-2][0] + nouns[-2][1] == nouns[-1][0]) else (nouns[-1] if nouns else None)  # "the pedal thing": the pedal
     if last_noun is not None and (not unknown or unknown[-1] < last_noun[0]):
         head_index, length, kind, is_object = last_noun
         head_tokens = tokens[head_index:head_index + length]

@@ -155,7 +155,7 @@ def drop_asides(tokens: list[Token]) -> list[Token]:
                 del out[since + 1:]  # "Robot task: ...": the heading's own words go too
             continue
         if token.text == "as" and after in ("i", "you", "we") and i + 2 < len(tokens) and tokens[i + 2].text in _VIEWING:
-            end = next((k for k in range(i + 3, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("and", "then")), len(tokens))
+            end = next((k for k in range(i + 3, len(tokens)) if tokens[k].is_punct or tokens[k].text in ("and", "then", ":")), len(tokens))
             skip = end - i - 1  # "crank it 90 degrees counter-clockwise as I face the door": how the user looks, not a part
             if out and out[-1].text in ("left", "right") and (len(out) == 1 or out[-2].is_sentence_end):
                 out.pop()  # "Left as you face the cabinet.": which way "left" was meant, said again

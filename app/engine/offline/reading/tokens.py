@@ -124,7 +124,7 @@ def _raw_tokens(prompt: str) -> list[Token]:
             spelled = any(t.text in _SPELLED_OUT for t in tokens[-6:]) and not any(t.text in (":", ",", ".") for t in tokens)
             tokens.append(Token(":" if spelled else ",", ":" if spelled else ",", start, end))  # "enter a code on the keypad - 7 first, ...": the keys follow
         elif kind == "slash":  # "drawer out 40cm / hold 3s / back in": one step after another
-            tokens.append(Token(";", ";", start, end))
+            tokens.append(Token(";", "/", start, end))  # its lemma keeps the slash (verse_lines may read it as a comma)
         elif kind == "ident":
             tokens.append(Token(word, word, start, end, ident=True))
         elif kind == "pi":  # "pi/2", "3*pi/4", "-pi/4": radians
@@ -352,12 +352,15 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.padded_units import padded_units
     from app.engine.offline.reading.paused_after import paused_after
     from app.engine.offline.reading.plural_subject import plural_subject
+    from app.engine.offline.reading.said_aside import said_aside
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.start_place import start_place
     from app.engine.offline.reading.start_with import start_with
     from app.engine.offline.reading.starts_as import starts_as
     from app.engine.offline.reading.step_labels import step_labels
     from app.engine.offline.reading.told_order import told_order
+    from app.engine.offline.reading.told_relatives import told_relatives
+    from app.engine.offline.reading.verse_lines import verse_lines
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
     from app.engine.offline.reading.waits_out import waits_out
@@ -367,7 +370,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, padded_units, starts_as, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, said_aside, verse_lines, padded_units, starts_as, told_relatives, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []

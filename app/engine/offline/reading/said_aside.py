@@ -1,0 +1,51 @@
+"""Sentences and clauses said beside the request, dropped: a cue ("Go!", "Rolling!", "Action!"), an apology or thanks
+with nothing to do in it ("Sorry if that's a silly request.", "Thanks so much!"), and what is about to happen ("it's about
+to boil over"). Before this stage "go" was a verb with nothing to move and "a silly request" a part the asset lacked."""
+
+from __future__ import annotations
+
+from app.engine.lexicon.verbs import VERBS
+from app.engine.offline.reading.part_words import kind_of_word
+from app.engine.offline.reading.token import Token
+
+_CUES = frozenset({"go", "rolling", "action", "and_action", "ready", "now", "cut", "okay", "ok", "done", "that's_it", "thanks", "cheers"})
+_COURTESY = frozenset({"sorry", "apologies", "thanks", "thank", "cheers", "hope", "hopefully", "cool"})
+_ABOUT_TO = frozenset({"it's", "they're", "is", "are", "was", "were", "it"})
+_CLAUSE_ENDS = frozenset({",", ".", "!", "?", ";", ":", "and", "so", "then", "but"})
+
+
+def _sentences(tokens: list[Token]) -> list[tuple[int, int]]:
+    spans, start = [], 0
+    for k, t in enumerate(tokens):
+        if t.is_sentence_end:
+            spans.append((start, k + 1))
+            start = k + 1
+    if start < len(tokens):
+        spans.append((start, len(tokens)))
+    return spans
+
+
+def _aside(words: list[Token]) -> bool:
+    said = [t for t in words if not t.is_punct]
+    if said and all(t.text in _CUES for t in said):
+        return True  # "Go!", "Rolling!"
+    return bool(said) and said[0].text in _COURTESY and not any(
+        t.lemma in VERBS or kind_of_word(t.text) is not None for t in said[1:])  # "Sorry if that's a silly request."
+
+
+def said_aside(tokens: list[Token]) -> list[Token]:
+    """``tokens`` without cue, apology and thanks sentences (when something else is asked) and "about to" clauses."""
+    spans = _sentences(tokens)
+    kept = [(a, b) for a, b in spans if not _aside(tokens[a:b])]
+    out = [t for a, b in (kept or spans) for t in tokens[a:b]]
+    k, result = 0, []
+    while k < len(out):
+        if out[k].text == "about" and k + 2 < len(out) and out[k + 1].text == "to" and k and out[k - 1].text in _ABOUT_TO:
+            start = k - 1 if out[k - 1].text in ("it's", "they're") else k - 2 if k > 1 and out[k - 2].text in ("it", "they") else k - 1
+            end = next((j for j in range(k + 2, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))
+            del result[len(result) - (k - start):]
+            k = end
+            continue
+        result.append(out[k])
+        k += 1
+    return result if result else out
