@@ -38,7 +38,7 @@ def said_aside(tokens: list[Token]) -> list[Token]:
     spans = _sentences(tokens)
     kept = [(a, b) for a, b in spans if not _aside(tokens[a:b])]
     out = [t for a, b in (kept or spans) for t in tokens[a:b]]
-    k, result = 0, []
+    k, result = 0, list[Token]()
     while k < len(out):
         if out[k].text == "about" and k + 2 < len(out) and out[k + 1].text == "to" and k and out[k - 1].text in _ABOUT_TO:
             start = k - 1 if out[k - 1].text in ("it's", "they're") else k - 2 if k > 1 and out[k - 2].text in ("it", "they") else k - 1

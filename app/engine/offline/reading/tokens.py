@@ -360,9 +360,9 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.step_labels import step_labels
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_relatives import told_relatives
-    from app.engine.offline.reading.verse_lines import verse_lines
     from app.engine.offline.reading.told_states import told_states
     from app.engine.offline.reading.too_far import too_far
+    from app.engine.offline.reading.verse_lines import verse_lines
     from app.engine.offline.reading.waits_out import waits_out
     from app.engine.offline.reading.which_of import which_of
     from app.engine.offline.reading.whose_side import row_first, whose_side
