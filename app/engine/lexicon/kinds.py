@@ -135,7 +135,7 @@ REGISTRY: dict[PartKind, KindInfo] = {
                                    "hand wheel", "wheel handle", "spoke wheel", "handle wheel"),
                  labels=("handle", "rotation_handle"), related=(PartKind.KNOB, PartKind.LEVER, PartKind.LATCH, PartKind.SWITCH), control=True,
                  returns="self_return", returns_only_on_hinged=True, press="down", actuation_s=0.4, affordances=("turn", "press_down", "lift")),
-        KindInfo(PartKind.LEVER, ("lever", "slider", "carriage", "flush lever", "toggle lever"), labels=("lever", "slider", "rotation_slider"),
+        KindInfo(PartKind.LEVER, ("lever", "slider", "carriage", "flush lever", "toggle lever", "paddle"), labels=("lever", "slider", "rotation_slider"),
                  related=(PartKind.HANDLE, PartKind.SWITCH, PartKind.KNOB), control=True, press="down", actuation_s=0.5,
                  affordances=("press_down", "lift")),
         KindInfo(PartKind.LATCH, ("latch", "lock", "catch", "bolt", "clasp", "latch knob", "latch handle"), labels=("lock", "latch"),

@@ -334,7 +334,7 @@ def _releases(builder: Builder, act: Act, sense: VerbSense, controls: list[Move]
         elif mech.holds(move.part) and any(e.goal.state in _OPENING_STATES for e in effects):
             out.append(replace(move, release="held"))
         elif (move.goal.state == "closed" and (sense in (VerbSense.LOCK, VerbSense.CLOSE) or act.goal.quantities.onto_body)) or (
-                sense in (VerbSense.TOGGLE, VerbSense.LOCK) and move.part.kind is not None and info(move.part.kind).latches_host):
+                sense in (VerbSense.TOGGLE, VerbSense.LOCK, VerbSense.RAISE, VerbSense.LOWER) and move.part.kind is not None and info(move.part.kind).latches_host):
             out.append(replace(move, release="stays"))  # "lock the latch": it stays locked; "flip the catch over": it stays over
         elif mech.springs_back(move.part, builder.tracker, builder.parts) and not held and move.goal.state not in ("vertical", "flat") and not (
                 any(set(r.text.split()) & _KEPT_END for r in act.results)):  # "swing the catch up so it lies flat against the box": it stays

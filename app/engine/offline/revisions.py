@@ -134,9 +134,9 @@ def hold(builder: Builder, act: Act) -> bool:
     frame = act.goal
     duration = frame.quantities.duration_s or 0.0
     pronoun = not frame.themes or all(m.pronoun for m in frame.themes)
-    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1]) and _kept_effect(builder, frame):
+    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1], builder) and _kept_effect(builder, frame):
         return True
-    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1]):
+    if builder.steps and not pronoun and same_as_last(builder, frame) and _undoes(frame, builder.steps[-1], builder):
         # "lift the toilet seat but keep the lid closed" where seat and lid are one part
         said = " / ".join(m.words or m.head for m in frame.themes)
         raise builder.refs.refuse(f"'{said}' is the part the step before moves ('{builder.steps[-1].op}'): it cannot move and stay "
@@ -230,9 +230,13 @@ def _kept_effect(builder: Builder, frame: Frame) -> bool:
     return True
 
 
-def _undoes(frame: Frame, step: ContractStep) -> bool:
-    """The hold keeps a state the step before leaves ("... keep the cover closed" after opening it)."""
+def _undoes(frame: Frame, step: ContractStep, builder: Builder | None = None) -> bool:
+    """The hold keeps a state the step before leaves ("... keep the cover closed" after opening it); "down" is no undoing
+    of an opening that ends down ("open the suitcase fully and keep the lid down flat": a lid that opens flat)."""
     words = set(frame.text.split())
+    opens_down = builder is not None and any(p.geometry.open_value is not None and p.geometry.down_value == p.geometry.open_value
+                                             for p in builder.parts if any(m.joint == p.joint for m in step.effects))
+    words = words - {"down"} if opens_down else words
     opened = any(m.goal.state in _OPENING for m in step.effects)
     closed = any(m.goal.state in ("closed", "down", "lower") for m in step.effects)
     return (opened and bool(words & {"closed", "shut", "down"})) or (closed and bool(words & {"open", "up"}))

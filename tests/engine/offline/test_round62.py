@@ -166,3 +166,48 @@ def test_a_key_kept_pressed_stays_in() -> None:
 def test_round63_refusals(name: str, prompt: str, said: str) -> None:
     with pytest.raises(GroundingError, match=said):
         animate(name, prompt)
+
+
+# --- later round-63 and round-64 classes ---
+
+@pytest.mark.parametrize(("name", "prompt", "moved"), [
+    # "once it's shut you can spin the wheel": a step told to "you" after a condition (clauses, verb_cues): the wheel had not turned
+    ("extra/safe_101623", "Swing the safe door closed first; once it's shut you can spin the spoked wheel on it to lock it.", {"joint_0", "joint_1"}),
+    # "give the kids at the back a look" is for them (holders.looked_inside): the cap had been twisted open
+    ("bottle_cap_3558", "Let's give the kids at the back a look - turn the whole bottle around, half a turn, so the other side faces them.", set()),
+    # "I need to get behind it": where the user goes (said_aside): the dishwasher door had been opened
+    ("dishwasher_12553", "Drag the whole dishwasher half a metre out toward me, I need to get behind it.", set()),
+    # "Expected: ..." tells what should be seen (said_aside): the dial had been turned a second time
+    ("extra/safe_101623", "Repro: turn the round combination dial a quarter turn clockwise, as seen when facing the safe door. "
+                          "Expected: only the dial rotates.", {"joint_2"}),
+    # a paddle is a lever (lexicon.kinds), and "it" after "the trigger is the little paddle on top": it had been refused
+    ("extra/coffee_machine_102145", "The puzzle trigger is the little paddle on top of the coffee machine's head, above the spout. Tip it over "
+                                    "to the left, as far as it will go.", {"joint_0"}),
+])
+def test_round64_only_the_asked_parts_move(name: str, prompt: str, moved: set[str]) -> None:
+    assert _moved(animate(name, prompt).trajectory) == moved
+
+
+@pytest.mark.parametrize(("name", "prompt", "joint"), [
+    # a clause before a colon inside a sentence is no heading: "..., then slams shut again: that's the jump scare"
+    ("extra/microwave_7128", "The microwave door swings wide open, then slams shut again: that's the jump scare.", "joint_0"),
+    # telegraphic steps joined by a comma: "door shut" had been lost
+    ("oven_7138", "Door open, door shut. Go.", "joint_0"),
+    # "keep the lid down flat" after opening a lid that opens flat: a hold, not a contradiction (it had been refused)
+    ("extra/suitcase_100550", "Open the suitcase fully and keep the lid down flat for five seconds while I photograph the hinge, then close "
+                              "it again.", "joint_0"),
+    # "Beat one, ..., Beat two, ...": step labels
+    ("microwave_7119", "Beat one, the microwave door swings open. Beat two, the door swings shut again.", "joint_0"),
+])
+def test_round64_the_part_goes_and_comes_back(name: str, prompt: str, joint: str) -> None:
+    q = _q(animate(name, prompt).trajectory, joint)
+    assert abs(q - q[0]).max() > 0.3
+    assert q[-1] == pytest.approx(q[0], abs=0.02)
+
+
+def test_a_clasp_flipped_up_goes_up_and_stays() -> None:
+    """frames._sense: "flip up" on a latch is where it goes (it had been read as unlatched, already so)."""
+    trajectory = animate("extra/box_100214", "Flip up the clasp on the right-hand side of the box front (right as you face it). "
+                                             "The left clasp must not be touched.").trajectory
+    assert _q(trajectory, "joint_2")[-1] == pytest.approx(0.4363, abs=0.02)
+    assert _moved(trajectory) == {"joint_2"}

@@ -84,6 +84,7 @@ class Clause:
 _PAUSES = frozenset({"pause", "wait", "beat", "hold", "break", "rest", "delay"})
 _STAYS = frozenset({"rests", "stays", "sits", "remains", "waits", "pauses", "hangs"})
 _CAUSING = frozenset({"make", "have", "help", "cause", "allow"})
+_TOLD_ENDS = frozenset({"open", "shut", "closed", "up", "down", "out", "in"})
 
 
 def _starts_clause(tokens: list[Token], i: int) -> bool:
@@ -239,6 +240,9 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in (",", "and") and current and (_elaboration(current) or _elaboration(_segment(tokens, nxt))) and nxt < len(tokens) and (
                 tokens[nxt].text in DETERMINERS or tokens[nxt].text in SPATIAL):  # "bottom drawer out 40 cm and top drawer out 20 cm"
             boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
+        elif word == "," and current and nxt + 1 < len(tokens) and kind_at(tokens, nxt) is not None and tokens[nxt + 1].text in _TOLD_ENDS and (
+                current[-1].text in _TOLD_ENDS):  # "Door open, door shut.": one telegraphic step after another
+            boundary = (Link.SEQUENCE, word, True)
         elif word == "but" and current and _starts_clause(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"
         elif word == "leaving" and not current and clauses and marker == "," and nxt < len(tokens) and tokens[nxt].text in ("it", "them", "the"):
@@ -266,7 +270,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
         elif word in AFTER | BEFORE and (nxt < len(tokens) and (_ing(tokens[nxt]) or _starts_clause(tokens, nxt) or _someone_does(tuple(tokens[nxt:])))):
             boundary = (Link.SEQUENCE, word, False)
         elif marker in ("once", "when", "after") and len(current) >= 2 and current[-1].text in _DONE_STATES and (word == "," or (
-                (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS or word == "do") and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that"))):
+                (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS or word == "do") and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that")) or (
+                word in ("you", "we") and nxt < len(tokens) and tokens[nxt].text in MODALS)):  # "once it's shut you can spin the wheel"
             boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there(,) do the right door"
             nxt = nxt if word == "," else i
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
@@ -305,8 +310,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             continue
         count = len(clauses)
         close()
-        if word == ":" and len(clauses) > count:
-            clauses[-1] = replace(clauses[-1], heading=True)
+        if word == ":" and len(clauses) > count and clauses[-1].marker not in ("then", "and_then", "and", "after_that", "finally"):
+            clauses[-1] = replace(clauses[-1], heading=True)  # not "..., then slams shut again: that's the jump scare"
         current = []
         link, marker, conjoined = boundary
         if word in ("while", "whilst", "as", "once", "when", "after") and _condition(tokens, nxt):

@@ -45,6 +45,7 @@ from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
 from app.engine.offline.reading.part_words import kind_of_word, shape_adjective
 from app.engine.offline.reading.quantities import Quantities, read_quantities
+from app.engine.offline.reading.said_again import ends_the_same
 from app.engine.offline.reading.token import Token
 from app.engine.offline.reading.verb_cues import aside, letting_go, side_of_part, unknown_verb
 from app.engine.offline.reading.verb_cues import intransitive as after_subject
@@ -198,18 +199,14 @@ def _sense(verb: str | None, particle: str | None, themes: list[Mention] | None 
     if verb is None:
         return None
     info = GENERIC if verb == GENERIC.lemma else VERBS[verb]
+    if particle in ("up", "down") and themes and all(m.kind is PartKind.LATCH for m in themes) and info.sense is VerbSense.TOGGLE:
+        return VerbSense.RAISE if particle == "up" else VerbSense.LOWER  # "flip up the clasp": where it goes, not unlatched
     if particle is not None and particle in info.particles:  # not "turn the turntable round half a turn": a part turns, the object yaws
         return info.sense if info.particles[particle] is VerbSense.YAW and themes and all(m.kind is not None for m in themes) else info.particles[particle]
     if particle in STATE_PARTICLES and info.sense not in (VerbSense.HOLD, VerbSense.WAIT, VerbSense.RETURN, VerbSense.GRASP, VerbSense.OPEN,
                                                           VerbSense.CLOSE, VerbSense.RECLINE):
         return GENERIC.particles[particle]  # "shove the drawer shut", "nudge the lid open": the particle names the end state
     return info.sense
-
-
-def _ends_the_same(tokens: list[Token]) -> bool:
-    """"give the other one the same (again)": the clause ends on "the same" (not "the same door")."""
-    said = [t.text for t in tokens if t.text not in (".", "!", "again", "too", "as_well", "please")]
-    return said[-2:] == ["the", "same"]
 
 
 def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Mention]) -> tuple[list[Mention], list[Mention]]:
@@ -377,7 +374,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         simultaneous=bool(words & SIMULTANEOUS), manual=bool(words & _MANUAL), stative=stative, extra_verbs=extra, aside=aside(tokens),
         guessed_verb=guessed, same_direction=bool(words & SAME_WAY),
         codes=codes, first=first,
-        same=bool(words & _SAME) or _ends_the_same(tokens), in_turn=min((_IN_TURN[w] for w in words if w in _IN_TURN), key=lambda o: (o == "reading", o), default=None), wish=wish,
+        same=bool(words & _SAME) or ends_the_same(tokens), in_turn=min((_IN_TURN[w] for w in words if w in _IN_TURN), key=lambda o: (o == "reading", o), default=None), wish=wish,
         explicit_return=bool((words - _RETURN_ADJECTIVES) & _RETURN_WORDS or said_return & _RETURN_ADJECTIVES), correction=correction,
         brief=(verb in BRIEF_VERBS and quantities.direction is None and not quantities.onto_body and particle not in _END_PARTICLES and not (
             quantities.amount is not None and quantities.amount.unit in ("rad", "turn"))) or bool(words & BRIEF_WORDS),  # not "click the dial a quarter turn"  # "flick it across to the left": stays

@@ -4,7 +4,7 @@ request is to open what holds them."""
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import OBJECT_NOUNS, PLACES, SPATIAL, Side
+from app.engine.lexicon.words import OBJECT_NOUNS, PERSON_NOUNS, PLACES, SPATIAL, Side
 from app.engine.offline.reading.part_words import kind_of_word
 from app.engine.offline.reading.token import Token
 
@@ -233,8 +233,8 @@ def looked_inside(tokens: list[Token], i: int) -> int | None:
     if tokens[i].text not in ("give", "take", "have", "grab", "sneak") or (i and tokens[i - 1].text in ("the", "a", "to_be")):
         return None
     k = next((n for n in range(i + 1, min(len(tokens), i + 7)) if tokens[n].text in ("a", "an")), None)
-    if k is None or any(names_kind(t.text) for t in tokens[i + 1:k]) or (k > i + 1 and tokens[i].text != "give"):
-        return None  # "give the knob a turn": a part; "take the tray a ..." no
+    if k is None or any(names_kind(t.text) or t.text in PERSON_NOUNS for t in tokens[i + 1:k]) or (k > i + 1 and tokens[i].text != "give"):
+        return None  # "give the knob a turn": a part; "take the tray a ..." no; "give the kids a look": for them, not inside
     k += 1 + (k + 1 < len(tokens) and tokens[k + 1].text in _QUICK)
     if k >= len(tokens) or tokens[k].text not in _INSIDE_NOUNS:
         return None

@@ -1,4 +1,5 @@
-"""Sentences and clauses said beside the request, dropped: a cue ("Go!", "Rolling!", "Action!"), an apology or thanks
+"""Sentences and clauses said beside the request, dropped: a cue ("Go!", "Rolling!", "Action!"), the object pointed out
+("See this little wooden chest?"), an apology or thanks
 with nothing to do in it ("Sorry if that's a silly request.", "Thanks so much!"), and what is about to happen ("it's about
 to boil over"). Before this stage "go" was a verb with nothing to move and "a silly request" a part the asset lacked."""
 
@@ -10,7 +11,9 @@ from app.engine.offline.reading.token import Token
 
 _CUES = frozenset({"go", "rolling", "action", "and_action", "ready", "now", "cut", "okay", "ok", "done", "that's_it", "thanks", "cheers"})
 _COURTESY = frozenset({"sorry", "apologies", "thanks", "thank", "cheers", "hope", "hopefully", "cool"})
+_POINTING = frozenset({"see", "notice", "spot", "recognise", "recognize"})
 _ABOUT_TO = frozenset({"it's", "they're", "is", "are", "was", "were", "it"})
+_AROUND = frozenset({"behind", "around", "round", "past", "under", "beneath", "underneath", "over", "between"})
 _CLAUSE_ENDS = frozenset({",", ".", "!", "?", ";", ":", "and", "so", "then", "but"})
 
 
@@ -27,6 +30,11 @@ def _sentences(tokens: list[Token]) -> list[tuple[int, int]]:
 
 def _aside(words: list[Token]) -> bool:
     said = [t for t in words if not t.is_punct]
+    if [t.text for t in said[:2]] in (["expected", ":"], ["expected", "result"], ["result", ":"], ["outcome", ":"], ["expectation", ":"]) or (
+            [t.text for t in words[:2]] in (["expected", ":"], ["result", ":"], ["outcome", ":"])):
+        return True  # "Repro: ... Expected: only the dial rotates.": what should be seen, not more steps
+    if said and said[0].text in _POINTING and words[-1].text == "?" and len(said) <= 6:
+        return True  # "See this little wooden chest?": pointing the object out
     if said and all(t.text in _CUES for t in said):
         return True  # "Go!", "Rolling!"
     return bool(said) and said[0].text in _COURTESY and not any(
@@ -40,6 +48,10 @@ def said_aside(tokens: list[Token]) -> list[Token]:
     out = [t for a, b in (kept or spans) for t in tokens[a:b]]
     k, result = 0, list[Token]()
     while k < len(out):
+        if out[k].text in ("i_need", "we_need", "i_want") and [t.text for t in out[k + 1:k + 3]] == ["to", "get"] and k + 3 < len(out) and (
+                out[k + 3].text in _AROUND):  # "I need to get behind it": where the user goes, no part opened
+            k = next((j for j in range(k + 3, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))
+            continue
         if out[k].text == "about" and k + 2 < len(out) and out[k + 1].text == "to" and k and out[k - 1].text in _ABOUT_TO:
             start = k - 1 if out[k - 1].text in ("it's", "they're") else k - 2 if k > 1 and out[k - 2].text in ("it", "they") else k - 1
             end = next((j for j in range(k + 2, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))

@@ -15,7 +15,7 @@ from app.engine.offline.reading.token import Token
 _LABEL_ENDS = frozenset({":", ".", ")", "-", ","})
 """What may follow a step's number in its label ("1.", "2)", "Step 3:", "step one -", "step 2,")."""
 _BREAKS = frozenset({".", ";", ":", "!", "?", ","})
-_STEP = frozenset({"step", "stage"})
+_STEP = frozenset({"step", "stage", "beat", "phase"})
 _BACK = frozenset({"after", "once", "when"})
 """Words before a step said by its number that make it the step waited for ("after step 1 has been completed")."""
 MAX_STEPS = 20
