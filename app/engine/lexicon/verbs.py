@@ -221,6 +221,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("transport", S.MOVE, object_sense=S.MOVE),
     VerbInfo("translate", S.MOVE, object_sense=S.MOVE),
     VerbInfo("shift", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("displace", S.MOVE, object_sense=S.MOVE),
+    VerbInfo("budge", S.MOVE, object_sense=S.MOVE),
     VerbInfo("sweep", S.MOVE),  # "sweep the lever across to the right"
     VerbInfo("roll", S.MOVE, object_sense=S.MOVE),
     VerbInfo("wheel", S.MOVE, object_sense=S.MOVE),

@@ -261,7 +261,8 @@ WISHES = frozenset({"i_need", "i_want", "i'd_like", "we_need", "i_would_like", "
 VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"})
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",
-                         "obviously", "naturally", "clearly", "evidently", "basically", "ok", "okay", "alright"})
+                         "obviously", "naturally", "clearly", "evidently", "basically", "ok", "okay", "alright", "pleas", "love", "mate", "hun", "darling",
+                         "dear", "sweetie", "buddy", "pal"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})

@@ -14,7 +14,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import MAX_STEP_S, BaseMotion, JointMove, Why
 from app.engine.contracts.steps import Step as ContractStep
 from app.engine.errors import GroundingError
-from app.engine.lexicon.kinds import info
+from app.engine.lexicon.kinds import PartKind, info
 from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.verbs import VERBLESS_SENSES, VERBS, VerbSense
 from app.engine.lexicon.words import OPERATED_OBJECTS, WHOLE_WORDS
@@ -65,6 +65,8 @@ class Builder:
     explanation: Explanation = field(init=False)
     mentioned: set[str] = field(default_factory=set)
     excluded: set[str] = field(default_factory=set)
+    excluded_as: dict[str, PartKind | None] = field(default_factory=dict)
+    """By what kind each excluded joint was named ("leave the cover lid where it is": a lid)."""
     turned: set[int] = field(default_factory=set)  # clauses whose told state was put the other way (a complaint)
     manual: bool = False
     last_base_default: bool = False
@@ -232,8 +234,8 @@ class Builder:
                 self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
         check_motion(self.refs, goal, effects_parts)
-        if (kept := [p for p in effects_parts if p.joint in self.excluded]) and len(effects_parts) == 1 and len(goal.themes) == 1 and (
-                goal.themes[0].kind not in (None, kept[0].kind)):  # "raise the toilet seat, leave the lid": the seat would be the lid
+        if (kept := [p for p in effects_parts if p.joint in self.excluded and self.excluded_as.get(p.joint) is p.kind]) and len(effects_parts) == 1 and (
+                len(goal.themes) == 1 and goal.themes[0].kind not in (None, kept[0].kind)):  # "raise the toilet seat, leave the lid": the seat would be the lid
             raise self.refs.refuse(f"'{goal.text}' would move {kept[0].link} ({kept[0].joint}), the part the prompt keeps still")
         check_detached(self.refs, goal, effects_parts)
         check_press(self.refs, self.tracker, goal, sense, effects_parts, self.notes)

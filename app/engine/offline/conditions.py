@@ -213,5 +213,6 @@ def exclude(builder: Builder, frame: Frame) -> None:
         except GroundingError:
             continue
         builder.excluded.update(p.joint for p in parts)
+        builder.excluded_as.update({p.joint: mention.kind for p in parts})  # by what name: "leave the cover lid where it is"
         if any(mech.is_control(p) for p in parts):
             builder.manual = True

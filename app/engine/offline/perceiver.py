@@ -90,6 +90,7 @@ def _incidental(frame: Frame) -> bool:
 
 
 _BE = frozenset({"is", "are", "was", "were"})
+_WHEN = frozenset({"when", "whenever", "while", "as"})
 _FACING = frozenset({"facing", "face", "faces", "pointing", "points", "point"})
 
 
@@ -144,6 +145,9 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                     not act.goal.text.startswith(("i ", "you ", "we "))):  # "the handle has flopped over the side - stand it straight up"
                 builder.notes.append(f"read '{act.goal.text}' as how it is now, not a step")
                 set_topic(builder, replace(act.goal, stative=True, verb=None))
+                continue
+            if len(acts) > 1 and act.goal.guessed_verb and not act.goal.themes and not act.goal.instruments and act.goal.marker in _WHEN:
+                builder.notes.append(f"ignored '{act.goal.text}': it says when, not what moves")  # "... where it was when the scene loaded"
                 continue
             if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and all(m.is_object for m in act.goal.themes) and not act.goal.instruments:
                 continue  # "Nothing else moves.": what stays still, which it does unless asked

@@ -211,3 +211,34 @@ def test_a_clasp_flipped_up_goes_up_and_stays() -> None:
                                              "The left clasp must not be touched.").trajectory
     assert _q(trajectory, "joint_2")[-1] == pytest.approx(0.4363, abs=0.02)
     assert _moved(trajectory) == {"joint_2"}
+
+
+@pytest.mark.parametrize(("name", "prompt", "joint"), [
+    # a row said first, the key after a comma (row_apposed); "the left corner one" is the left one: both had been refused
+    ("safe_101564", "On the keypad, the key in the bottom row, the left corner one, press it.", "joint_11"),
+    ("safe_101564", "Keypad cue: top row, the middle key. One crisp press.", "joint_1"),
+])
+def test_a_key_told_by_its_row_first(name: str, prompt: str, joint: str) -> None:
+    assert _moved(animate(name, prompt).trajectory) == {joint}
+
+
+@pytest.mark.parametrize(("name", "prompt", "translation"), [
+    # "0.5 m straight up": the way it goes (word_forms); it had gone away from the front
+    ("bucket_100454", "Translate the entire bucket 0.5 m straight up along the vertical axis, with no rotation.", (0.0, 0.0, 0.5)),
+    # "displace" moves the object; ", no rotation, no change in height" is said aside: it had been refused
+    ("oven_7138", "Displace the oven 300 mm rearward, toward the wall behind it; no rotation, no change in height.", (0.3, 0.0, 0.0)),
+    # the way and amount told first, the verb after with "it" (told_first_verb): the bin had rolled twice
+    ("trash_can_102155", "Forward half a metre the wheelie bin, roll it please.", (-0.5, 0.0, 0.0)),
+])
+def test_the_whole_object_moves_as_told(name: str, prompt: str, translation: tuple[float, float, float]) -> None:
+    trajectory = animate(name, prompt).trajectory
+    moved = trajectory.base_translation[-1] - trajectory.base_translation[0]
+    assert np.allclose(moved, translation, atol=0.05)
+    assert _moved(trajectory) <= ({"joint_0", "joint_1"} if name == "trash_can_102155" else set())  # the bin's wheels roll
+
+
+def test_a_time_said_with_when_moves_nothing() -> None:
+    """perceiver: "... where it was when the scene loaded" had swung the door open again."""
+    q = _q(animate("safe_102387", "Steps: 1) swing the safe door open to its limit. 2) return it to exactly where it was when the scene "
+                                  "loaded.").trajectory, "joint_0")
+    assert q[-1] == pytest.approx(q[0], abs=0.02) and q.max() > 2.0

@@ -21,6 +21,7 @@ from app.engine.offline.reading.quantities import Quantities, Reference
 from app.engine.offline.reading.results import merged_result
 from app.engine.offline.reading.stored import open_holder, place_of, unknown_things
 from app.engine.offline.reading.told_first import put_in_order
+from app.engine.offline.reading.told_first_verb import told_first_verb
 
 DEFAULT_WAIT_S = 1.0
 UNDERWAY_S = 0.2
@@ -147,7 +148,7 @@ def _appositive_amount(before: Act, frame: Frame) -> bool:
 
 
 def build_acts(frames: list[Frame]) -> list[Act]:
-    frames = list(frames)  # a negation may take in the subject said before it
+    frames = told_first_verb(frames)  # a negation may take in the subject said before it (so a list of our own)
     acts: list[Act] = []
     pending_wait = 0.0
     restated = said_aside = False
@@ -310,7 +311,8 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "don't touch the drawer, it stays out like it is": nothing to do
         if (frame.verb is None or frame.stative) and _ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense is VerbSense.RETURN for a in acts):
             continue  # "..., then raise it back to its starting position. Expected: it ends exactly where it began": said again
-        if verbless and frame.themes and frame.quantities == Quantities() and "only" in frame.text.split()[:1] + frame.text.split()[-1:] and (
+        if verbless and frame.themes and frame.quantities == Quantities() and "only" in frame.text.split()[:1] + frame.text.split()[-1:] and len(
+                frame.text.split()) <= 3 and not any(m.sides for m in frame.themes) and (
                 {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}):
             continue  # "open the lid. Lid only.": which part moves, said again
         if verbless and frame.themes and frame.quantities == Quantities() and index + 1 < len(frames) and frames[index + 1].link is Link.NEGATED and (

@@ -12,8 +12,11 @@ from app.engine.offline.reading.token import Token
 _CUES = frozenset({"go", "rolling", "action", "and_action", "ready", "now", "cut", "okay", "ok", "done", "that's_it", "thanks", "cheers"})
 _COURTESY = frozenset({"sorry", "apologies", "thanks", "thank", "cheers", "hope", "hopefully", "cool"})
 _POINTING = frozenset({"see", "notice", "spot", "recognise", "recognize"})
+_CORRECTING = frozenset({"make", "meant", "mean", "instead", "actually", "no", "not", "other", "rather"})
 _ABOUT_TO = frozenset({"it's", "they're", "is", "are", "was", "were", "it"})
 _AROUND = frozenset({"behind", "around", "round", "past", "under", "beneath", "underneath", "over", "between"})
+_MOTION_NOUNS = frozenset({"rotation", "rotating", "tilt", "tilting", "change", "translation", "spin", "spinning", "turning", "yaw", "roll",
+                           "pitch", "lift", "lifting", "sliding", "drift", "wobble"})
 _CLAUSE_ENDS = frozenset({",", ".", "!", "?", ";", ":", "and", "so", "then", "but"})
 
 
@@ -38,7 +41,8 @@ def _aside(words: list[Token]) -> bool:
     if said and all(t.text in _CUES for t in said):
         return True  # "Go!", "Rolling!"
     return bool(said) and said[0].text in _COURTESY and not any(
-        t.lemma in VERBS or kind_of_word(t.text) is not None for t in said[1:])  # "Sorry if that's a silly request."
+        t.lemma in VERBS or kind_of_word(t.text) is not None or t.number is not None or t.text in _CORRECTING for t in said[1:])  # "Sorry if
+    # that's a silly request.", not "sorry, make that 30 degrees"
 
 
 def said_aside(tokens: list[Token]) -> list[Token]:
@@ -52,6 +56,9 @@ def said_aside(tokens: list[Token]) -> list[Token]:
                 out[k + 3].text in _AROUND):  # "I need to get behind it": where the user goes, no part opened
             k = next((j for j in range(k + 3, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))
             continue
+        if out[k].text == "no" and k + 1 < len(out) and out[k + 1].text in _MOTION_NOUNS and k and out[k - 1].text in (",", ";"):
+            k = next((j for j in range(k + 2, len(out)) if out[j].text in (",", ".", ";", "!", "and", "then")), len(out))
+            continue  # "..., no rotation, no change in height": the motion asked is pure already
         if out[k].text == "about" and k + 2 < len(out) and out[k + 1].text == "to" and k and out[k - 1].text in _ABOUT_TO:
             start = k - 1 if out[k - 1].text in ("it's", "they're") else k - 2 if k > 1 and out[k - 2].text in ("it", "they") else k - 1
             end = next((j for j in range(k + 2, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))

@@ -10,8 +10,8 @@ from app.engine.offline.reading.spans import drop_spans
 from app.engine.offline.reading.token import Token
 
 _RELATIVES = frozenset({"that", "which"})
-_DESCRIBING = frozenset({"covers", "hides", "protects", "shields", "guards", "conceals", "houses", "contains", "holds", "supports", "carries",
-                         "sits", "overhangs", "caps", "tops", "fronts", "closes_off", "seals", "blocks"})
+_DESCRIBING = frozenset({"covers", "hides", "protects", "shields", "guards", "conceals", "caps", "seals"})
+"""Verbs of what a part covers (not where it sits: "the knob that sits just above the long button" chooses by place)."""
 _ENDS = frozenset({",", ".", ";", ":", "!", "?", "and", "then", "and_then", "to", "so", "so_that", "until", "while", "before", "after", "but"})
 
 

@@ -62,6 +62,9 @@ _REGION_OF = frozenset({"half", "part", "section", "portion", "piece", "bit", "p
 _MOMENTS = frozenset({"moment", "instant", "time"})
 
 
+_LENGTHS = frozenset({"m", "cm", "mm", "metre", "metres", "meter", "meters", "inch", "inches", "foot", "feet", "centimetres", "centimeters"})
+
+
 def _same_moment(tokens: list[Token], i: int) -> int:
     """The length of "at the (very / exact) same moment / instant" at ``i``, else 0."""
     words = [t.text for t in tokens[i:i + 5]] + ["", "", "", "", ""]
@@ -301,7 +304,8 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
     if t.text == "that" and after[:1] and after[0] in ("much", "far") and (again := _amount_said(out)):
         out.extend(replace(w, start=t.start, end=tokens[i + 1].end, corrected_from=None if k else "that " + after[0]) for k, w in enumerate(again))
         return i + 2  # "I only need the drawer out about halfway, can you slide it out that much?": the amount said before
-    if t.text == "straight_up" and i + 1 < len(tokens) and (after[0] == "by" or tokens[i + 1].number is not None):
+    if t.text == "straight_up" and ((i + 1 < len(tokens) and (after[0] == "by" or tokens[i + 1].number is not None)) or (
+            i > 1 and tokens[i - 2].number is not None and tokens[i - 1].text in _LENGTHS)):  # "0.5 m straight up"
         out.append(Token("up", "up", t.start, t.end))  # "move the bucket straight up by 30 cm": the way it goes, not upright
         return i + 1
     if t.text.endswith("-spoke") and after[:1] == ["wheel"]:
