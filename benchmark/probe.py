@@ -21,6 +21,7 @@ from __future__ import annotations
 import argparse
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -45,6 +46,18 @@ def _warnings(run_dir: Path) -> list[str]:
     except (OSError, json.JSONDecodeError):
         return []
     return [str(w) for w in data.get("warnings", [])]
+
+
+_RANGE_MISS = re.compile(r"final (-?[\d.]+) not in \[(-?[\d.]+),\s*(-?[\d.]+)\]")
+BOUND_SLIP = 0.002
+"""A final value this close outside a range's end (an expectation that ends a range at a joint limit rounded)."""
+
+
+def bound_slip(errors: list[str]) -> bool:
+    """Whether every error of a wrong answer is a final value outside a range by less than :data:`BOUND_SLIP` at one end:
+    the answer reached the limit the writer rounded. Still counted wrong; reported apart so a reader can tell."""
+    found = [_RANGE_MISS.search(e) for e in errors]
+    return bool(errors) and all(m is not None and min(abs(float(m.group(1)) - float(m.group(k))) for k in (2, 3)) < BOUND_SLIP for m in found)
 
 
 def _total(counts: Counter[str]) -> int:
@@ -73,7 +86,7 @@ def summarize(out: Path, expect: Path) -> dict[str, Any]:
         by_type[verdict["type"]][outcome] += 1
         by_type["all"][outcome] += 1
         cases.append({"id": verdict["id"], "type": verdict["type"], "outcome": outcome, "prompt": verdict["prompt"], "errors": verdict["errs"],
-                      "warnings": warnings})
+                      "warnings": warnings, "bound_slip": outcome != "right" and bound_slip([str(e) for e in verdict["errs"]])})
     table = {kind: {"n": _total(c), "right": c["right"], "rate": round(c["right"] / max(_total(c), 1), 4),
                     "right_warned": c["right_warned"], "wrong_warned": c["wrong_warned"], "wrong_refusal": c["wrong_refusal"],
                     "wrong_silent": c["wrong_silent"] + c["wrong_not_refused"]} for kind, c in sorted(by_type.items())}
@@ -167,6 +180,9 @@ def main(argv: list[str] | None = None) -> int:
     lines = [f"{'type':14s} {'n':>4s} {'right':>6s} {'rate':>6s} {'(warned)':>9s} {'warned':>7s} {'refused':>8s} {'silent':>7s}"]
     for kind, row in summary["types"].items():
         lines.append(f"{kind:14s} {row['n']:4d} {row['right']:6d} {row['rate']:6.1%} {row['right_warned']:9d} {row['wrong_warned']:7d} {row['wrong_refusal']:8d} {row['wrong_silent']:7d}")
+    slips = sum(bool(c.get("bound_slip")) for c in summary["cases"])
+    if slips:
+        lines.append(f"{slips} wrong answers miss a range only by < {BOUND_SLIP} at one end (a limit the expectation rounded); counted wrong")
     lines.append(f"details: {args.out / 'summary.json'}, judge output: {args.out / 'judge.txt'}")
     sys.stdout.write("\n".join(lines) + "\n")
     return 0

@@ -22,3 +22,12 @@ def test_summary_counts_each_outcome(tmp_path):
     summary = summarize(tmp_path, expect)
     assert summary["types"]["all"] == {"n": 6, "right": 3, "rate": 0.5, "right_warned": 1, "wrong_warned": 1, "wrong_refusal": 1, "wrong_silent": 1}
     assert [c["outcome"] for c in summary["cases"]] == ["right", "right", "wrong_warned", "wrong_silent", "wrong_refusal", "right"]
+
+
+def test_a_range_missed_at_a_rounded_limit_is_told_apart() -> None:
+    from benchmark.probe import bound_slip
+
+    assert bound_slip(["joint_0 final 2.96706 not in [2.2,2.967]"])
+    assert not bound_slip(["joint_0 final 2.5 not in [2.6,2.967]"])
+    assert not bound_slip(["joint_0 final 2.96706 not in [2.2,2.967]", "joint_1 did not move"])
+    assert not bound_slip([])
