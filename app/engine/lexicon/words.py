@@ -67,7 +67,7 @@ DETERMINERS = frozenset({"the", "a", "an", "some", "its", "their", "this", "that
 PRONOUNS = frozenset({"it", "them", "they", "itself"})
 OTHER_WORDS = frozenset({"other", "another", "remaining", "opposite"})
 NEGATIONS = frozenset({"not", "never", "don't", "dont", "without", "avoid", "except", "but", "cannot", "can't", "doesn't", "won't", "mustn't",
-                       "shouldn't", "shouldnt", "mustnt", "doesnt", "wont"})
+                       "shouldn't", "shouldnt", "mustnt", "doesnt", "wont", "neither"})
 
 NUMBER_WORDS: Mapping[str, float] = MappingProxyType({
     "zero": 0, "one": 1, "two": 2, "three": 3, "four": 4, "five": 5, "six": 6, "seven": 7, "eight": 8, "nine": 9, "ten": 10,
@@ -230,7 +230,7 @@ ASIDE_PHRASES: tuple[tuple[str, ...], ...] = (*_PROGRESS, ("once", "that", "is",
 REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("no", "more", "than", "that"), ("no", "further", "than", "that"), ("not", "more", "than", "that"), ("no", "more", "than", "this"),
     ("if", "you", "can"), ("if", "you", "could"), ("if", "possible"), ("if", "you", "don't", "mind"), ("if", "you", "would"),
-    ("no", "more"), ("stop", "right", "there"), ("stop", "there"), ("stop", "at", "that", "point"), ("stop", "at", "that"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
+    ("let's",), ("no", "more"), ("stop", "right", "there"), ("stop", "there"), ("stop", "at", "that", "point"), ("stop", "at", "that"), ("animate",), ("task", ":"), ("goal", ":"), ("note", ":"), ("task", "spec", ":"), ("robot", "spec", ":"), ("spec", ":"),
     ("task", "list", ":"), ("shot", "list", ":"), ("to", "do", ":"), ("todo", ":"),
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "i", "just"), ("could", "i"), ("can", "i", "just"), ("can", "i"), ("may", "i"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
@@ -262,7 +262,8 @@ VIEWER_POSSESSIVES = frozenset({"my", "your", "our", "the_viewer's", "viewer's"}
 """"to my left", "on your right": the viewer's side, which is the object's left / right as seen facing its front."""
 ASIDE_WORDS = frozenset({"please", "kindly", "pls", "plz", "thanks", "thank", "cheers", "yo", "hey", "hi", "hello", "hmm", "hm", "um", "umm", "uh", "oh", "ah", "lol",
                          "obviously", "naturally", "clearly", "evidently", "basically", "ok", "okay", "alright", "pleas", "love", "mate", "hun", "darling",
-                         "dear", "sweetie", "buddy", "pal"})
+                         "dear", "sweetie", "buddy", "pal", "matey",
+                         "haha", "hehe", "hahaha", "whoosh", "wow", "yay", "oops", "voila", "ta-da", "tada"})
 """Words dropped wherever they stand: politeness says nothing about the motion."""
 FILLERS = frozenset({"please", "now", "just", "also", "kindly", "first", "firstly", "simply", "lastly", "finally", "and", "then", "next",
                      "only"})
@@ -293,7 +294,7 @@ COUPLING_WORDS = frozenset({"linked", "connected", "coupled", "hooked", "attache
 STATIVE_VERBS = frozenset({"is", "are", "was", "were", "be", "being", "been", "lie", "lies", "lying", "stands", "standing",
                            "sit", "sits", "sitting", "point", "points", "pointing", "face", "faces", "facing", "stay", "stays", "remain",
                            "remains", "sticking", "sticks", "stick", "hang", "hangs", "hanging", "rest", "rests", "resting", "look", "looks",
-                           "starts", "begins", "started", "has", "features", "contains", "live", "lives", "belong", "belongs", *COUPLING_WORDS})
+                           "starts", "begins", "started", "has", "had", "features", "contains", "live", "lives", "belong", "belongs", *COUPLING_WORDS})
 """Verbs of state: a clause built on one describes where a part is, it does not move it."""
 PLACES = frozenset({"stove", "table", "floor", "ground", "counter", "countertop", "bench", "workbench", "desk", "wall", "hook", "shelf",
                     "cooktop", "hob", "burner", "worktop", "surface", "carpet", "mat", "tray_table"})

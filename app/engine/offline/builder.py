@@ -233,7 +233,7 @@ class Builder:
         if sense is VerbSense.RELEASE and effects_parts and all(mech.is_control(p) for p in effects_parts) and not any(
                 self.pressed(p) or self.worked_before(p) for p in effects_parts):
             sense = VerbSense.OPERATE  # "after releasing the latch knob": nothing held it, so releasing means working it
-        check_motion(self.refs, goal, effects_parts)
+        check_motion(self.refs, goal, effects_parts, " ".join(r.text for r in act.results))
         if (kept := [p for p in effects_parts if p.joint in self.excluded and self.excluded_as.get(p.joint) is p.kind]) and len(effects_parts) == 1 and (
                 len(goal.themes) == 1 and goal.themes[0].kind not in (None, kept[0].kind)):  # "raise the toilet seat, leave the lid": the seat would be the lid
             raise self.refs.refuse(f"'{goal.text}' would move {kept[0].link} ({kept[0].joint}), the part the prompt keeps still")

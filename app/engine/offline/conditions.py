@@ -206,7 +206,9 @@ def set_topic(builder: Builder, frame: Frame) -> None:
 
 
 def exclude(builder: Builder, frame: Frame) -> None:
-    """"without touching the knob", "don't use the pedal", "without using the pedal": keep those parts still."""
+    """"without touching the knob", "don't use the pedal", "without using the pedal": keep those parts still. What is kept
+    still is not what "it" names next ("Neither door should open while it moves": the fridge)."""
+    last, last_kind = builder.refs.last, builder.refs.last_kind
     for mention in (*frame.themes, *frame.instruments):
         try:
             parts, _ = builder.ground(frame, builder.frame_sense(frame), (mention,))
@@ -216,3 +218,4 @@ def exclude(builder: Builder, frame: Frame) -> None:
         builder.excluded_as.update({p.joint: mention.kind for p in parts})  # by what name: "leave the cover lid where it is"
         if any(mech.is_control(p) for p in parts):
             builder.manual = True
+    builder.refs.last, builder.refs.last_kind = last, last_kind

@@ -21,7 +21,7 @@ from app.engine.offline.tracker import Tracker
 
 REACHED = 1e-6
 _FLAT_EPS = math.radians(5)
-_PAST_FLAT = re.compile(r" (past|beyond|further than|farther than|more than) (flat|180 degrees|180 deg|180°) | like a tablet | (under|beneath|underneath|below) the (keyboard|base) | underside of the (keyboard|base) ")
+_PAST_FLAT = re.compile(r" (past|beyond|further than|farther than|more than) (flat|180 degrees|180 deg|180°) | like a tablet | tablet style | tablet-style | (under|beneath|underneath|below) the (keyboard|base) | underside of the (keyboard|base) | against the underside ")
 _PRESSES = frozenset({VerbSense.PRESS, VerbSense.PUSH_IN, VerbSense.OPERATE})
 
 
@@ -41,7 +41,7 @@ def check_press(refs: Referents, tracker: Tracker, frame: Frame, sense: VerbSens
             notes.append(f"{part.link} ({part.joint}) rests at the deep end of its travel: pressed along the travel it has (outward)")
 
 
-def check_motion(refs: Referents, frame: Frame, parts: list[Part]) -> None:
+def check_motion(refs: Referents, frame: Frame, parts: list[Part], results: str = "") -> None:
     """A verb naming a motion the part cannot make is refused: a hinge verb or a twist on a part that only slides, a
     straight slide to one side on a part that only rotates."""
     motion = VERBS[frame.verb].motion if frame.verb is not None and frame.verb in VERBS else "any"
@@ -59,7 +59,7 @@ def check_motion(refs: Referents, frame: Frame, parts: list[Part]) -> None:
     if not named:
         return
     flat = next((p for p in named if p.geometry.type == "revolute" and p.geometry.open_value is not None and abs(
-        p.geometry.open_value - closed_of(p.geometry)) < math.pi + _FLAT_EPS), None) if _PAST_FLAT.search(f" {frame.text} ") else None
+        p.geometry.open_value - closed_of(p.geometry)) < math.pi + _FLAT_EPS), None) if _PAST_FLAT.search(f" {frame.text} {results} ") else None
     if flat is not None:
         reach = math.degrees(abs(flat.geometry.open_value - closed_of(flat.geometry)))  # type: ignore[operator]
         raise refs.refuse(f"'{frame.text}': the {_label(flat)} ({flat.link}) opens at most {reach:.0f} degrees from closed; it cannot fold past flat")

@@ -242,3 +242,32 @@ def test_a_time_said_with_when_moves_nothing() -> None:
     q = _q(animate("safe_102387", "Steps: 1) swing the safe door open to its limit. 2) return it to exactly where it was when the scene "
                                   "loaded.").trajectory, "joint_0")
     assert q[-1] == pytest.approx(q[0], abs=0.02) and q.max() > 2.0
+
+
+# --- round 65 (a bedtime story, a commentator, an apologiser, a tour guide, a retired sailor, ...) ---
+
+@pytest.mark.parametrize(("name", "prompt", "moved"), [
+    # who acts in a story, before a verb that names the part it acts on (frames): each had been refused as a missing part
+    ("extra/box_100214", "Then the sleepy dragon pushed the lid of his treasure chest shut, so nobody could peek at his gold.", {"joint_0"}),
+    ("extra/oven_7179", "Grandma's little oven had three racks inside, and the bunny pulled the very bottom one all the way out to fetch "
+                        "the carrot cake.", {"joint_2", "joint_3"}),
+    # an interjection or a form of address is no part ("matey", "haha"): refused before
+    ("toilet_102622", "Hoist that toilet lid up, matey, same as you'd raise a hatch cover.", {"joint_0"}),
+    # "Neither door should open while it moves": no door opens, and "it moves" is the fridge already moving
+    ("refrigerator_11178", "Push the entire fridge 20 cm straight back toward the wall behind it. Neither door should open while it moves.", set()),
+    # "Let's give the dial ... a quarter turn": "let's" frames the request (it had been read as a part)
+    ("safe_102387", "Let's give the dial on the safe's door a quarter turn.", {"joint_1"}),
+    # "no other part moves", "Got a tray of ... going in", "I just want a warm rinse", "like halfway": said beside the step
+    ("microwave_7304", "test_open_door: the microwave door swings to fully open and no other part moves.", {"joint_1"}),
+    ("oven_7138", "Drop the oven door down for me, would you? Got a tray of croissants going in.", {"joint_0"}),
+    ("faucet_991", "Nudge that tap lever about 45 degrees to the left, I just want a warm rinse for the milk jug.", {"joint_0"}),
+    ("storage_27044", "opne teh drawr like halfwy pls", {"joint_0"}),
+])
+def test_round65_only_the_asked_parts_move(name: str, prompt: str, moved: set[str]) -> None:
+    assert _moved(animate(name, prompt).trajectory) == moved
+
+
+def test_a_fold_to_tablet_style_is_refused() -> None:
+    """motion_fit: "lies flat against the underside, tablet style" in the result: the screen cannot fold that far."""
+    with pytest.raises(GroundingError, match="past flat"):
+        animate("laptop_10101", "Fold the laptop screen all the way back round until it lies flat against the underside, tablet style.")

@@ -311,6 +311,9 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "don't touch the drawer, it stays out like it is": nothing to do
         if (frame.verb is None or frame.stative) and _ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense is VerbSense.RETURN for a in acts):
             continue  # "..., then raise it back to its starting position. Expected: it ends exactly where it began": said again
+        if frame.link is Link.PARALLEL and frame.subject_theme and frame.themes and all(m.pronoun for m in frame.themes) and (
+                frame.sense is VerbSense.MOVE and frame.quantities == Quantities()):
+            continue  # "Neither door should open while it moves": the motion said, no step of its own
         if verbless and frame.themes and frame.quantities == Quantities() and "only" in frame.text.split()[:1] + frame.text.split()[-1:] and len(
                 frame.text.split()) <= 3 and not any(m.sides for m in frame.themes) and (
                 {m.head for m in frame.themes} <= {m.head for a in acts for m in a.goal.themes}):

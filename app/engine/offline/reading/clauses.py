@@ -273,7 +273,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
                 (verb_at(tokens, i) or tokens[i].lemma in LIGHT_VERBS or word == "do") and nxt < len(tokens) and tokens[nxt].text in ("the", "it", "its", "both", "them", "that")) or (
                 word in ("you", "we") and nxt < len(tokens) and tokens[nxt].text in MODALS)):  # "once it's shut you can spin the wheel"
             boundary = (Link.SEQUENCE, ",", True)  # "once it's open(,) turn the tray", "when it gets there(,) do the right door"
-            nxt = nxt if word == "," else i
+            nxt = nxt if word == "," else (i + 2 if word in ("you", "we") else i)  # "once it's shut you can spin the wheel": spin the wheel
         elif word in ("the", "its") and link in (Link.PARALLEL, Link.CONDITION) and marker in ("while", "whilst", "as") and len(current) > 1 and (
                 any(t.text.endswith("ing") for t in current[1:]) and _starts_clause(tokens, i)):
             boundary, nxt = (Link.SEQUENCE, ",", True), i  # "while it's still opening the plate starts turning": a comma left out
@@ -310,7 +310,8 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
             continue
         count = len(clauses)
         close()
-        if word == ":" and len(clauses) > count and clauses[-1].marker not in ("then", "and_then", "and", "after_that", "finally"):
+        if word == ":" and len(clauses) > count and not (clauses[-1].marker in ("then", "and_then", "and", "after_that", "finally") and any(
+                t.lemma in VERBS and kind_of_word(t.text) is None for t in clauses[-1].tokens)):
             clauses[-1] = replace(clauses[-1], heading=True)  # not "..., then slams shut again: that's the jump scare"
         current = []
         link, marker, conjoined = boundary

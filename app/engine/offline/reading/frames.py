@@ -303,6 +303,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
     stative = verb_index is None and not (tokens and tokens[0].text == "back") and (progressive or described or existential or any(
         t.text in STATIVE_VERBS for t in tokens))  # not "back up to the angle it started at"; "there's a lever at each end" says what is there
     intransitive = after_subject(tokens, verb_index) or finite is not None
+    if subject and all(m.kind is None and not (m.pronoun or m.is_object) for m in subject) and any(m.kind is not None or m.anaphor or m.pronoun for m in objects):
+        subject = []  # "the pirate closed the lid of his chest": who acts, on the part named after the verb
     themes, instruments = _split_roles(tokens, objects, subject if intransitive or stative else [])
     subject_theme = bool(subject) and (not themes or stative or intransitive or verb == "follow")
     themes = [] if verb == "follow" and subject else themes  # "the back lever follows it (down)": the subject moves, not "it"

@@ -8,6 +8,7 @@ from app.engine.lexicon.words import ANGLE_UNITS, LENGTH_UNITS, TIME_UNITS
 from app.engine.offline.reading.token import Token
 
 _EMPHASIS = frozenset({"long", "full", "whole", "good", "solid", "short", "quick", "brief", "entire", "straight", "clear", "mere"})
+_DIMENSIONS = frozenset({"high", "tall", "long", "wide", "deep"})
 _UNITS = frozenset({*TIME_UNITS, *LENGTH_UNITS, *ANGLE_UNITS})
 
 
@@ -16,6 +17,8 @@ def _unit(word: str) -> bool:
 
 
 def padded_units(tokens: list[Token]) -> list[Token]:
-    """``tokens`` without a word of emphasis between a number and its unit."""
-    return [t for k, t in enumerate(tokens) if not (
+    """``tokens`` without a word of emphasis between a number and its unit, nor a dimension said after the unit ("one
+    whole metre high": a metre)."""
+    tokens = [t for k, t in enumerate(tokens) if not (
         t.text in _EMPHASIS and 0 < k < len(tokens) - 1 and tokens[k - 1].number is not None and _unit(tokens[k + 1].text))]
+    return [t for k, t in enumerate(tokens) if not (t.text in _DIMENSIONS and k > 1 and _unit(tokens[k - 1].text) and tokens[k - 2].number is not None)]

@@ -17,6 +17,8 @@ _ABOUT_TO = frozenset({"it's", "they're", "is", "are", "was", "were", "it"})
 _AROUND = frozenset({"behind", "around", "round", "past", "under", "beneath", "underneath", "over", "between"})
 _MOTION_NOUNS = frozenset({"rotation", "rotating", "tilt", "tilting", "change", "translation", "spin", "spinning", "turning", "yaw", "roll",
                            "pitch", "lift", "lifting", "sliding", "drift", "wobble"})
+_WANTING = frozenset({"i_want", "i_need", "we_need", "we_want", "i_just_want"})
+_LIKE_AMOUNTS = frozenset({"halfway", "half", "a_bit", "a_little", "a_quarter", "a", "about", "all_the_way", "fully", "most", "90", "45"})
 _CLAUSE_ENDS = frozenset({",", ".", "!", "?", ";", ":", "and", "so", "then", "but"})
 
 
@@ -50,12 +52,29 @@ def said_aside(tokens: list[Token]) -> list[Token]:
     spans = _sentences(tokens)
     kept = [(a, b) for a, b in spans if not _aside(tokens[a:b])]
     out = [t for a, b in (kept or spans) for t in tokens[a:b]]
+    while len(out) > 1 and out[0].is_punct and len(kept) < len(spans):
+        out = out[1:]  # "Sorry... could you open ...": the dots left by the dropped sentence
     k, result = 0, list[Token]()
     while k < len(out):
         if out[k].text in ("i_need", "we_need", "i_want") and [t.text for t in out[k + 1:k + 3]] == ["to", "get"] and k + 3 < len(out) and (
                 out[k + 3].text in _AROUND):  # "I need to get behind it": where the user goes, no part opened
             k = next((j for j in range(k + 3, len(out)) if out[j].text in _CLAUSE_ENDS), len(out))
             continue
+        if (out[k].text == "given" and (k == 0 or out[k - 1].is_sentence_end)) or (out[k].text in ("got", "i've_got", "we've_got") and (
+                k == 0 or out[k - 1].is_sentence_end) and k + 1 < len(out) and out[k + 1].text in ("a", "an", "some")) or (
+                out[k].text in _WANTING and k + 1 < len(out) and out[k + 1].text in ("a", "an", "some") and result):
+            k = next((j for j in range(k + 1, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
+            continue  # "Given the open laptop, ...", "Got a tray of croissants going in.", "..., I just want a warm rinse"
+        if [t.text for t in out[k:k + 3]] in (["no", "other", "part"], ["no", "other", "parts"], ["nothing", "else", "moves"]):
+            k = next((j for j in range(k + 1, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
+            continue  # "... and no other part moves": it does not, unless asked
+        if out[k].text == "possibly" and k and out[k - 1].text in ("can", "could", "will", "would"):
+            k += 1
+            continue  # "as far as it can possibly go": as far as it can go
+        if out[k].text == "like" and k + 1 < len(out) and (out[k + 1].number is not None or out[k + 1].text in _LIKE_AMOUNTS) and k and (
+                not out[k - 1].is_punct):
+            k += 1
+            continue  # "open the drawer like halfway": about halfway
         if out[k].text == "no" and k + 1 < len(out) and out[k + 1].text in _MOTION_NOUNS and k and out[k - 1].text in (",", ";"):
             k = next((j for j in range(k + 2, len(out)) if out[j].text in (",", ".", ";", "!", "and", "then")), len(out))
             continue  # "..., no rotation, no change in height": the motion asked is pure already

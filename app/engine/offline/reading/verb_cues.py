@@ -62,11 +62,7 @@ def aside(tokens: list[Token]) -> bool:
     remark = first in ("that's", "nothing") or (first in ("that", "this") and second in ("is", "was", "will"))  # "that's the whole anim"
     remark = remark or (1 < len(tokens) <= 4 and tokens[-1].text == "here")  # "Game dev here - ...": who is asking
     kept = first == "my" and any(t.text in ("is", "are") for t in tokens[1:4]) and any(t.text in ("in", "inside", "on", "behind") for t in tokens[2:6])
-    from app.engine.offline.reading.part_words import kind_of_word
-
-    told = first == "you" and second in MODALS and len(tokens) > 3 and tokens[2].lemma in VERBS and tokens[3].text in DETERMINERS and any(
-        kind_of_word(t.text) is not None for t in tokens[3:])  # "once it's shut you can spin the spoked wheel": a step told to "you"
-    return (first in PERSONS and not kept and not told) or (first in ("they", "it", "that") and second in MODALS) or weather or remark  # not "my socks
+    return (first in PERSONS and not kept) or (first in ("they", "it", "that") and second in MODALS) or weather or remark  # not "my socks
     # are in the lower drawer": where a thing is kept
 
 

@@ -18,7 +18,6 @@ VERB_CUES = frozenset({"and", ",", "then", "but", "to", "by", "after", "before",
                        "don't", "dont", "not", "never", "do", "again", "meanwhile", "i", "you", "we", "let's", "lets", "using",
                        "immediately", "briefly", "partially", "halfway", "slightly", "completely", "thereafter",
                        "he", "she", "he'd", "she'd", "i'd", "you'd", "we'd", "would", "he'll", "she'll", "i'll", "you'll", "we'll"})
-_MODALS = frozenset({"can", "could", "should", "must", "might", "may"})
 AUX = frozenset({"is", "are", "was", "were", "be", "being", "been", "stays", "remains", "stay", "remain", "gets", "get"})
 
 
@@ -46,7 +45,6 @@ def verb_at(tokens: list[Token], i: int, *, strict: bool = False) -> bool:
     if token.text in SPATIAL or kind_at(tokens, i) is not None:
         # "lower", "step", "switch", "dial": a verb only where a verb must start
         return i == 0 or previous in VERB_CUES
-    if strict:  # "once it's shut you can spin the wheel": a verb after a person and a modal
-        return i == 0 or previous in VERB_CUES or previous in AUX or (previous in _MODALS and i > 1 and tokens[i - 2].text in ("you", "we") and (
-            i + 1 < len(tokens) and tokens[i + 1].text in DETERMINERS))
+    if strict:
+        return i == 0 or previous in VERB_CUES or previous in AUX
     return True
