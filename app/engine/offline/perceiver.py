@@ -149,6 +149,11 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
             if len(acts) > 1 and act.goal.guessed_verb and not act.goal.themes and not act.goal.instruments and act.goal.marker in _WHEN:
                 builder.notes.append(f"ignored '{act.goal.text}': it says when, not what moves")  # "... where it was when the scene loaded"
                 continue
+            if builder.steps and builder.steps[-1].base is not None and builder.steps[-1].base.yaw_rad and act.goal.quantities.amount is None and (
+                    act.goal.particle in ("around", "round") and act.goal.themes and all(m.is_object or m.pronoun for m in act.goal.themes)) and not (
+                    {"again", "back", "twice", "more"} & set(act.goal.text.split())):
+                builder.notes.append(f"read '{act.goal.text}' as the turn said again")  # "turn the toaster round ... Just spin it around"
+                continue
             if len(acts) > 1 and act.goal.text.split()[:1] == ["nothing"] and all(m.is_object for m in act.goal.themes) and not act.goal.instruments:
                 continue  # "Nothing else moves.": what stays still, which it does unless asked
             if len(acts) > 1 and mishap(act):

@@ -271,3 +271,31 @@ def test_a_fold_to_tablet_style_is_refused() -> None:
     """motion_fit: "lies flat against the underside, tablet style" in the result: the screen cannot fold that far."""
     with pytest.raises(GroundingError, match="past flat"):
         animate("laptop_10101", "Fold the laptop screen all the way back round until it lies flat against the underside, tablet style.")
+
+
+@pytest.mark.parametrize(("name", "prompt", "moved"), [
+    # "leave the other clasp as found": kept still (the other clasp had been closed too, silently)
+    ("extra/box_100214", "Close the clasp on the right-hand side of the chest as you face its front; leave the other clasp as found.", {"joint_2"}),
+])
+def test_round65_a_part_left_as_found(name: str, prompt: str, moved: set[str]) -> None:
+    assert _moved(animate(name, prompt).trajectory) == moved
+
+
+def test_a_turn_said_again_is_one_turn() -> None:
+    """perceiver: "... Just spin it around where it sits" after "turn the toaster round" had turned it a second time, back
+    to where it was, silently."""
+    trajectory = animate("toaster_103477", "Could you turn the toaster round so it faces the other way? Just spin it around where it sits on "
+                                           "the counter.").trajectory
+    x, y, z, w = trajectory.base_rotation_xyzw[-1]
+    assert abs(abs(np.degrees(2 * np.arctan2(z, w))) - 180.0) < 5.0
+
+
+@pytest.mark.parametrize(("name", "prompt", "joint", "final"), [
+    # "Right back where it started!" after the door shut says it again (it had swung the door open again, silently)
+    ("microwave_7119", "The door swings open... and SLAMS shut again! Right back where it started!", "joint_0", 0.0),
+    # the way said inside "that's flopped forward" is how the lid is, not where it goes (how_it_is.told_way)
+    ("suitcase_103762", "Swing the big flat slab that's flopped forward back up against the rest of the upright case, so it's shut.",
+     "joint_0", -1.0472),
+])
+def test_round65_the_part_ends_where_asked(name: str, prompt: str, joint: str, final: float) -> None:
+    assert _q(animate(name, prompt).trajectory, joint)[-1] == pytest.approx(final, abs=0.03)

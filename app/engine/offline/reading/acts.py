@@ -15,6 +15,7 @@ from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.corrected import corrected, recast
 from app.engine.offline.reading.ellipsis import carry
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.how_it_is import ENDS_AS_BEGAN
 from app.engine.offline.reading.measured_from import measured_from
 from app.engine.offline.reading.pointed import pointed_out
 from app.engine.offline.reading.quantities import Quantities, Reference
@@ -108,7 +109,7 @@ def _is_event(frame: Frame) -> bool:
 
 
 _AS_IT_IS = re.compile(r" (like|as) (it|they) (is|are|sits|sit|stands) | as_is ")
-_ENDS_AS_BEGAN = re.compile(r"^(it|they) (ends|end|finishes|finish|stops|stop|winds up|comes to rest)( up)?( exactly| right| back)? where (it|they) (began|started|was|were)$")
+_BACK = frozenset({VerbSense.RETURN, VerbSense.CLOSE})
 _ROLLING = frozenset({VerbSense.TURN, VerbSense.SPIN, VerbSense.MOVE, VerbSense.OPERATE})
 
 
@@ -309,7 +310,7 @@ def build_acts(frames: list[Frame]) -> list[Act]:
             continue  # "the two carriages are linked": how the parts are tied, told for what follows
         if (frame.stative or frame.verb is None) and _AS_IT_IS.search(f" {frame.text} "):
             continue  # "don't touch the drawer, it stays out like it is": nothing to do
-        if (frame.verb is None or frame.stative) and _ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense is VerbSense.RETURN for a in acts):
+        if (frame.verb is None or frame.stative) and ENDS_AS_BEGAN.search(frame.text) and any(a.goal.sense in _BACK for a in acts[-1:]):
             continue  # "..., then raise it back to its starting position. Expected: it ends exactly where it began": said again
         if frame.link is Link.PARALLEL and frame.subject_theme and frame.themes and all(m.pronoun for m in frame.themes) and (
                 frame.sense is VerbSense.MOVE and frame.quantities == Quantities()):

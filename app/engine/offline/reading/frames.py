@@ -39,7 +39,7 @@ from app.engine.offline.reading.clauses import Clause, Link, verb_at
 from app.engine.offline.reading.codes import code_items
 from app.engine.offline.reading.first_one import first_of
 from app.engine.offline.reading.held_for import held_for
-from app.engine.offline.reading.how_it_is import does_to_a_thing, how_it_is, told_state_words
+from app.engine.offline.reading.how_it_is import does_to_a_thing, how_it_is, told_state_words, told_way
 from app.engine.offline.reading.light_verbs import light_verb
 from app.engine.offline.reading.mentions import Mention, parse_mentions
 from app.engine.offline.reading.numbers import Unit, said_unit
@@ -295,6 +295,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         subject = [m for m in parse_mentions(tokens[:verb_index], 0, quantities.used) if m.head not in CAUSER_NOUNS]  # not "the steam"
         objects = parse_mentions(tokens, verb_index + 1, quantities.used)
     particle, particle_at = _particle(tokens, verb_index, objects) if verb_index is not None else (None, None)
+    quantities = told_way(tokens, quantities, told_state_words(tokens, {m.end for m in objects}))  # not "that's flopped forward"
     if particle_at is not None:
         objects = [m for m in objects if not m.start <= particle_at < m.end]
     extra = tuple(t.lemma for t in tokens[(verb_index or 0) + 1:] if t.lemma in VERBS and t.lemma != verb and verb_at(tokens, tokens.index(t), strict=True))

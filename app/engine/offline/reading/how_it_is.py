@@ -3,8 +3,12 @@
 
 from __future__ import annotations
 
-from app.engine.lexicon.words import POSTURES
+import re
+from dataclasses import replace
+
+from app.engine.lexicon.words import DIRECTIONS, POSTURES
 from app.engine.offline.reading.clauses import Clause, Link
+from app.engine.offline.reading.quantities import Quantities
 from app.engine.offline.reading.token import Token
 
 _HABIT_VERBS = frozenset({"keeps", "kept"})
@@ -78,3 +82,17 @@ def does_to_a_thing(tokens: list[Token]) -> int | None:
                 kind_of_word(tokens[k + 2].text) is None and tokens[k + 2].text.isalpha()):
             return k
     return None
+
+
+def told_way(tokens: list[Token], quantities: Quantities, told: set[int]) -> Quantities:
+    """``quantities`` without a way said only inside a relative clause of state ("the slab that's flopped forward | back up":
+    forward is how it is, not where it goes)."""
+    if quantities.direction is None or not told:
+        return quantities
+    said = [k for k, t in enumerate(tokens) if DIRECTIONS.get(t.text, t.text) == quantities.direction]
+    return replace(quantities, direction=None) if said and all(k in told for k in said) else quantities
+
+
+ENDS_AS_BEGAN = re.compile(r"^((it|they) (ends|end|finishes|finish|stops|stop|winds up|comes to rest)( up)?( exactly| right| back)? where (it|they) "
+                            r"(began|started|was|were)|(all the way |right )?back (to )?where it started)$")
+"""A clause that says a part ends where it began ("Expected: it ends exactly where it began", "Right back where it started!")."""

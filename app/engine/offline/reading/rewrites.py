@@ -59,7 +59,7 @@ _VIEWING = frozenset({"face", "look", "see", "stand", "view", "watch"})
 _CLAUSE_BREAKS = frozenset({",", ";", ".", "and", "then", "but", "while", "with"})
 
 _AS_IS = (("as", "it", "is"), ("as", "they", "are"), ("where", "it", "is"), ("where", "they", "are"), ("way", "it", "is"), ("way", "they", "are"),
-          ("how", "it", "is"), ("how", "they", "are"))
+          ("how", "it", "is"), ("how", "they", "are"), ("as", "found", "."), ("as", "found", ","), ("as", "you", "found"))
 
 
 def _as_they_are(tokens: list[Token], i: int) -> bool:
