@@ -286,7 +286,7 @@ def test_a_turn_said_again_is_one_turn() -> None:
     to where it was, silently."""
     trajectory = animate("toaster_103477", "Could you turn the toaster round so it faces the other way? Just spin it around where it sits on "
                                            "the counter.").trajectory
-    x, y, z, w = trajectory.base_rotation_xyzw[-1]
+    z, w = trajectory.base_rotation_xyzw[-1][2:]
     assert abs(abs(np.degrees(2 * np.arctan2(z, w))) - 180.0) < 5.0
 
 
