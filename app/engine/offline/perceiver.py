@@ -90,7 +90,7 @@ def _incidental(frame: Frame) -> bool:
 
 
 _BE = frozenset({"is", "are", "was", "were"})
-_WHEN = frozenset({"when", "whenever", "while", "as"})
+_WHEN = frozenset({"when", "whenever", "while"})
 _FACING = frozenset({"facing", "face", "faces", "pointing", "points", "point"})
 
 

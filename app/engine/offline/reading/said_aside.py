@@ -62,7 +62,8 @@ def said_aside(tokens: list[Token]) -> list[Token]:
             continue
         if (out[k].text == "given" and (k == 0 or out[k - 1].is_sentence_end)) or (out[k].text in ("got", "i've_got", "we've_got") and (
                 k == 0 or out[k - 1].is_sentence_end) and k + 1 < len(out) and out[k + 1].text in ("a", "an", "some")) or (
-                out[k].text in _WANTING and k + 1 < len(out) and out[k + 1].text in ("a", "an", "some") and result):
+                out[k].text in _WANTING and k + 1 < len(out) and out[k + 1].text in ("a", "an", "some") and any(
+                    t.lemma in VERBS and (j == 0 or result[j - 1].is_punct) for j, t in enumerate(result))):
             k = next((j for j in range(k + 1, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
             continue  # "Given the open laptop, ...", "Got a tray of croissants going in.", "..., I just want a warm rinse"
         if [t.text for t in out[k:k + 3]] in (["no", "other", "part"], ["no", "other", "parts"], ["nothing", "else", "moves"]):
