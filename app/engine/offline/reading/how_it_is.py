@@ -94,5 +94,5 @@ def told_way(tokens: list[Token], quantities: Quantities, told: set[int]) -> Qua
 
 
 ENDS_AS_BEGAN = re.compile(r"^((it|they) (ends|end|finishes|finish|stops|stop|winds up|comes to rest)( up)?( exactly| right| back)? where (it|they) "
-                            r"(began|started|was|were)|(all the way |right )?back (to )?where it started)$")
+                            r"(began|started|was|were)|(all the way|right) back (to )?where it started)$")
 """A clause that says a part ends where it began ("Expected: it ends exactly where it began", "Right back where it started!")."""
