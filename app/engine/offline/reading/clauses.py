@@ -241,7 +241,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
                 tokens[nxt].text in DETERMINERS or tokens[nxt].text in SPATIAL):  # "bottom drawer out 40 cm and top drawer out 20 cm"
             boundary = (Link.SEQUENCE, word, True)  # "the top one a quarter turn, the bottom one half a turn": one part each
         elif word == "," and current and nxt + 1 < len(tokens) and kind_at(tokens, nxt) is not None and tokens[nxt + 1].text in _TOLD_ENDS and (
-                current[-1].text in _TOLD_ENDS or (nxt + 2 < len(tokens) and tokens[nxt + 2].is_punct)):  # "Door open, door shut.": step after step
+                current[-1].text in _TOLD_ENDS or (nxt + 2 < len(tokens) and tokens[nxt + 2].is_sentence_end)):  # "Door open, door shut.": step after step
             boundary = (Link.SEQUENCE, word, True)
         elif word == "but" and current and _starts_clause(tokens, nxt):
             boundary = (Link.SEQUENCE, word, True)  # "..., but leave the door open"
