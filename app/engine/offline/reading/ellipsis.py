@@ -25,9 +25,18 @@ def _alike(way: VerbSense, sense: VerbSense | None) -> bool:
     return (way in _OPENING and sense in _OPENING) or (way in _CLOSING and sense in _CLOSING)
 
 
+_STATE_VERBS = {"open": ("open", VerbSense.OPEN), "shut": ("close", VerbSense.CLOSE), "closed": ("close", VerbSense.CLOSE)}
+"""A part and its end state, said with no verb after a step of another kind ("..., the plate gets one full turn, door shut")."""
+
+
 def carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     if frame.link is Link.NEGATED:
         return frame  # "keep your hands off the drawer": what not to touch takes no verb
+    said = frame.text.split()
+    if frame.verb is None and len(said) <= 3 and said[-1:] and said[-1] in _STATE_VERBS and frame.themes and not any(m.is_object for m in frame.themes) and (
+            previous is not None and previous.sense not in (None, _STATE_VERBS[said[-1]][1]) and frame.quantities.amount is None):
+        verb, sense = _STATE_VERBS[said[-1]]
+        return replace(frame, verb=verb, sense=sense)  # "door shut" after a turn: shut the door, not turn it
     if frame.verb is None and not frame.themes and previous is not None and previous.verb is None and previous.themes and (
             frame.quantities.amount is not None or frame.quantities.orientation is not None):
         # "blender dial: 1/8 turn clockwise": the part before the colon, moved by the amount after it
