@@ -299,3 +299,10 @@ def test_a_turn_said_again_is_one_turn() -> None:
 ])
 def test_round65_the_part_ends_where_asked(name: str, prompt: str, joint: str, final: float) -> None:
     assert _q(animate(name, prompt).trajectory, joint)[-1] == pytest.approx(final, abs=0.03)
+
+
+def test_a_part_and_its_end_state_after_another_kind_of_step() -> None:
+    """ellipsis.carry: "..., the plate gets one full turn, door shut": the door shuts (it had taken "turn" and been ignored)."""
+    q = _q(animate("microwave_7119", "Door open, the plate gets one full turn, door shut. Textbook sequence from the microwave!").trajectory,
+           "joint_0")
+    assert q.max() > 1.2 and q[-1] == pytest.approx(0.0, abs=0.02)
