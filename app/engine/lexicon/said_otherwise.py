@@ -9,7 +9,7 @@ from types import MappingProxyType
 SHORTHAND: Mapping[str, str] = MappingProxyType({
     # text-speak and chat abbreviations -> the word they stand for
     "till": "until", "til": "until", "'til": "until", "u": "you", "ur": "your", "cn": "can", "cud": "could", "wud": "would", "r": "are", "thx": "thanks", "thnx": "thanks", "thanx": "thanks", "tnx": "thanks", "ty": "thanks", "tho": "though",
-    "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "btw": "by the way", "rn": "now",
+    "b4": "before", "n": "and", "w": "with", "w/": "with", "abt": "about", "approx": "about", "approx.": "about", "ca.": "about", "ya": "you", "yer": "your", "btw": "by the way", "rn": "now",
     "asap": "quickly", "gotta": "need to", "hafta": "need to", "it'll": "it will", "it'l": "it will", "itll": "it will", "they'll": "they will", "thatll": "that will", "msec": "ms", "secs": "seconds", "mins": "minutes", "degs": "degrees", "deg.": "degrees", "plz": "please",
     "thats": "that's", "theres": "there's", "whats": "what's", "isnt": "isn't", "didnt": "didn't", "youre": "you're",
     "rite": "right", "lft": "left", "btn": "button", "btns": "buttons", "seq": "sequence", "fwd": "forward", "bwd": "backward", "rev": "revolution", "revs": "revolutions",

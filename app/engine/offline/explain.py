@@ -78,6 +78,14 @@ class Explanation:
         if self.last is not None:
             self.last["moves"].extend(self._move(m, m.q, start, said) for m, start, said in zip(moves, starts, words, strict=True))
 
+    def restate_base(self, step: ContractStep) -> None:
+        """A step's whole-object motion revised after it was recorded ("pick it up and hold it 1 m off the ground")."""
+        for entry in self.clauses.values():
+            for record in entry["steps"]:
+                if record["step"] == step.id and step.base is not None:
+                    record["base"] = {"axis_world": step.base.axis_world, "distance_m": step.base.distance_m,
+                                      "yaw_deg": round(math.degrees(step.base.yaw_rad), 3)}
+
     def because(self, reasons: dict[str, str]) -> None:
         if self.last is None:
             return

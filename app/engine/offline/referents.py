@@ -263,6 +263,7 @@ class Referents:
             return None
         before = self.said[:self.said.index(mention)] if mention in self.said else []
         owners = [m.owner for m in before if m.owner is not None]  # "the chicken on the middle rack": the rack
+        owners += [m.relation[1] for m in before if m.relation is not None]  # "the rack behind the top door ... the door": that door
         for earlier in reversed([*owners, *before]):
             if earlier.kind is mention.kind and _qualified(earlier) and not earlier.plural:
                 found = self.ground(earlier)

@@ -31,6 +31,16 @@ def replay(builder: Builder) -> None:
         builder.tracker.apply(step)
 
 
+def distance_said(builder: Builder) -> None:
+    """The last step's whole-object distance was revised to one the prompt says: replay, restate it in the report and drop
+    the note on the default distance it had."""
+    replay(builder)
+    builder.explanation.restate_base(builder.steps[-1])
+    default = next((k for k in range(len(builder.notes) - 1, -1, -1) if builder.notes[k].startswith("no distance given")), None)
+    if default is not None:
+        del builder.notes[default]
+
+
 _WAYS = frozenset({VerbSense.RAISE, VerbSense.LOWER, VerbSense.OPEN, VerbSense.CLOSE, VerbSense.PULL_OUT, VerbSense.PUSH_IN})
 
 
@@ -156,7 +166,7 @@ def hold(builder: Builder, act: Act) -> bool:
         # "pick the laptop up and hold it 30 cm above the desk": the height the lift had no number for
         builder.steps[-1] = builder.steps[-1].model_copy(update={"base": base.model_copy(update={"distance_m": amount.value})})
         builder.last_base_default = False
-        replay(builder)
+        distance_said(builder)
         builder.notes.append(f"read '{frame.text}' as the distance of the previous motion")
     if builder.steps and (pronoun or same_as_last(builder, frame)):
         last = builder.steps[-1]

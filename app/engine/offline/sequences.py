@@ -18,7 +18,7 @@ from app.engine.offline.reading.acts import Act
 from app.engine.offline.reading.codes import place_words
 from app.engine.offline.reading.frames import Frame
 from app.engine.offline.resolve import resolve
-from app.engine.offline.revisions import replay
+from app.engine.offline.revisions import distance_said
 from app.engine.offline.whole_object import object_motion, returning_motion
 
 if TYPE_CHECKING:
@@ -75,7 +75,7 @@ def object_motion_act(builder: Builder, act: Act) -> None:
         if act.conjoined and previous is not None and builder.last_base_default and goal.themes and goal.themes[0].pronoun and (
                 motion.motion.axis_world == previous.axis_world and goal.quantities.amount is not None):
             builder.steps[-1] = builder.steps[-1].model_copy(update={"base": previous.model_copy(update={"distance_m": motion.motion.distance_m})})
-            replay(builder)
+            distance_said(builder)
             builder.notes.append(f"read '{goal.text}' as the distance of the previous motion")
             builder.last_base_default = False
             return

@@ -154,7 +154,8 @@ def _other_verb(tokens: list[Token], i: int) -> bool:
     follows = tokens[i + 1].text if i + 1 < len(tokens) else ""
     lemmas = getAllLemmas(token.text)
     base = token.text in lemmas.get("VERB", ())
-    return token.text.isalpha() and "VERB" in lemmas and (follows in DETERMINERS or follows in ("it", "them", "that", "this") or (
+    gerund = i + 1 < len(tokens) and _ing(tokens[i + 1]) and tokens[i + 1].lemma in VERBS  # "to simulate setting the timer"
+    return token.text.isalpha() and "VERB" in lemmas and (gerund or follows in DETERMINERS or follows in ("it", "them", "that", "this") or (
         base and follows in ("", ",", ".", ";", "!", "?", "and", "then", "on", "in", "at", "for", "inside", "up")))  # "to check on the dishes"
 
 

@@ -121,6 +121,8 @@ def _carried(frame: Frame, previous: Frame | None, measured: Frame | None = None
         return frame  # "Push the mixer handle right. Cold only!": a word on its own after a full stop, no step of the verb before
     if frame.themes or amount_only:
         own = VERBS[previous.verb].particles.get(frame.particle or "") if previous.verb in VERBS and frame.particle != "back" else None
+        if amount_only and frame.particle == "back" and frame.quantities.sense is None and previous.verb in VERBS and "back" not in VERBS[previous.verb].particles:
+            own = VerbSense.RETURN  # "loosen the cap half a turn, then half a turn back": back the way it came
         return replace(frame, verb=previous.verb, sense=own or previous.sense, particle=frame.particle or (previous.particle if frame.themes else None),
                        themes=frame.themes or previous.themes, instruments=frame.instruments or previous.instruments)
     return frame

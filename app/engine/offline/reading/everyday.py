@@ -222,10 +222,18 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             continue
         if t.text == "right" and after in _PLACED_AT and (before in GENERIC_PART_NOUNS or kind_of_word(before) is not None):
             continue  # "the piece right at the very top": where it is, "right" only sharpens it
-        if t.text == "just" and after == "enough" and i + 2 < len(tokens) and tokens[i + 2].text == "to":
+        if t.text == "just" and after == "enough" and i + 2 < len(tokens) and tokens[i + 2].text in ("that", "so"):
+            out.append(Token("so_that", "so_that", t.start, tokens[i + 2].end))  # "..., just enough that I can reach past it": why
+            skip = i + 2 + (i + 3 < len(tokens) and tokens[i + 2].text == "so" and tokens[i + 3].text == "that")
+            continue
+        just_far = int(t.text == "just" and after == "far")  # "just far enough to peek"
+        if t.text in ("just", "far") and [w.text for w in tokens[i + 1 + just_far:i + 3 + just_far]] == ["enough", "to"]:
             if out and out[-1].text == ",":
                 out.pop()  # "open the door ~45 deg, just enough to see inside": the amount said, then why
-            skip = i + 1
+            clause = next((j for j in range(len(out) - 1, -1, -1) if out[j].text in (".", ";", "!", "then", "and_then")), -1)
+            if not any(w.number is not None for w in out[clause + 1:]):
+                out.append(Token("partway", "partway", t.start, t.end))  # "let the door down just far enough to peek": partway
+            skip = i + 1 + just_far
             continue
         if t.text == "foot" and after in ("down", "off") and before in ("", ",", ".", ";", "then", "and", ":"):
             out.append(Token("step", "step", t.start, t.end))  # "foot down on the pedal", "then foot off": step on / off it
@@ -337,8 +345,15 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             out.append(Token("halfway", "halfway", t.start, tokens[i + 3].end))  # "to the midpoint of its travel": halfway
             skip = i + 3
             continue
-        elif t.text == "straight" and after in ("across", "over", "through"):
-            continue  # "swing it straight across to full cold": all the way over, not upright
+        elif t.text == "got" and before in ("it's", "that's", "she's", "he's") and out:
+            out[-1] = Token(before[:-2], before[:-2], out[-1].start, out[-1].end)
+            t = Token("has", "has", t.start, t.end)  # "it's got commitment issues": it has (a description, not "get")
+        elif t.text == "be" and after in ("", ".", ",", ";", "!", "and", "then") and any(w.text in ("leave", "let") for w in tokens[max(i - 5, 0):i - 1]):
+            t = Token("alone", "alone", t.start, t.end)  # "leave the drawer be": leave it alone
+        elif t.text in ("swing", "swung") and after in ("the", "this", "that") and i + 2 < len(tokens) and tokens[i + 2].text in ("whole", "entire"):
+            t = Token("turn", "turn", t.start, t.end, corrected_from=t.text)  # "swing the whole desk a quarter turn": the object turns
+        elif t.text == "straight" and (after in ("across", "over", "through") or (after == "back" and before in ("it", "them"))):
+            continue  # "swing it straight across to full cold": all the way over, not upright; "flick it straight back": back at once
         elif t.text == "in" and before == "back" and after == "the" and i + 2 < len(tokens) and tokens[i + 2].text in ("middle", "centre", "center"):
             t = Token("to", "to", t.start, t.end)  # "park it back in the middle": back to the middle
         elif t.text == "give" and after in ("it", "them") and i + 2 < len(tokens) and ((

@@ -244,6 +244,7 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue  # "(and) shut onto the keyboard", "comes back down onto the pot": where it ends, not what moves
         elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes and not (
                 mention.relation is not None and mention.relation[1].pronoun):  # "top-left key, the one right under it": the next
+            themes[-1] = replace(themes[-1], relation=mention.relation) if themes[-1].relation is None else themes[-1]  # "..., the one behind the top door"
             continue  # "the left door, the one with the handle,": an apposition describing the door
         else:
             themes.append(mention)
@@ -322,7 +323,7 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         m.kind in (PartKind.CODE, PartKind.BUTTON) for m in subject) else ())  # "the code 1-2-3 shall be entered": said before a passive verb
     if any(m.head not in _CONTAINERS and m.kind is not None for m in themes) or any(c[0] == "place" for c in codes):
         themes = [m for m in themes if m.head not in _CONTAINERS]  # "any key in the second row of the keypad", "bottom-left on the keypad"
-    let = causative or particle == "go"
+    let, inner = causative or particle == "go", None
     if let and verb_index is not None:
         named = {k for m in objects for k in range(m.start, m.end)}  # "make the lower drawer come out": "lower" names the drawer
         inner = next((i for i in range(verb_index + 1, len(tokens)) if tokens[i].lemma in VERBS and tokens[i].lemma != "let"
@@ -343,8 +344,8 @@ def build_frame(clause: Clause, carried: tuple[Unit, float] | None = None) -> Fr
         sense = next((WISHED_SENSES[t.text] for t in tokens if t.text in WISHED_SENSES), VerbSense.OPEN)
     if let and verb in CAUSATIVES:  # "let the door down", "let go"; "get the lid off the pot": take it off
         sense = (VERBS["take"].particles.get(particle or "") if verb == "get" else None) or VERBS["let"].particles.get(particle or "", VerbSense.RELEASE)
-    elif let and (sense is None or particle == "go"):
-        sense = VerbSense.RELEASE
+    elif let and (sense is None or particle == "go" or (inner is not None and [t.text for t in tokens[inner + 1:inner + 3]] in (["back"], ["back", "up"], ["back", "down"]))):
+        sense = VerbSense.RELEASE  # "let it flip back up": it goes back on its own
     if any(m.head in _BODY_PARTS for m in subject) and sense is VerbSense.RELEASE:
         themes, let = [], True  # "the foot comes off": the user lets go of what was pressed
     if verb in _LETTING_GO and any(m.head in _BODY_PARTS for m in themes):

@@ -107,7 +107,7 @@ def parse_mentions(tokens: list[Token], start: int, used: frozenset[int] = froze
             before = mentions.pop()  # "the big knob, the one on the left": one knob, told twice
             mention = replace(before, sides=(*before.sides, *mention.sides), ordinal=before.ordinal if before.ordinal is not None else mention.ordinal,
                               ordinal_from=before.ordinal_from or mention.ordinal_from, size=before.size or mention.size, end=mention.end,
-                              words=_words(tokens, before.start, mention.end))
+                              words=_words(tokens, before.start, mention.end), relation=before.relation or mention.relation)
         if mention.anaphor and mention.kind is None and mentions and mentions[-1].kind is not None:
             mention = replace(mention, kind=mentions[-1].kind)  # "lock the left latch, and the right one": a latch
         if mention.head:

@@ -1,5 +1,5 @@
 """Counts padded with a word of emphasis before their unit: "five long seconds", "a full 3 seconds", "two good
-centimetres", "3 whole degrees". The emphasis is dropped so the count reads as the measure it is (before this stage
+centimetres", "3 whole degrees", "two whole times". The emphasis is dropped so the count reads as the measure it is (before this stage
 "stays open for five long seconds" lost its five seconds, and the hold lasted a blink)."""
 
 from __future__ import annotations
@@ -9,7 +9,9 @@ from app.engine.offline.reading.token import Token
 
 _EMPHASIS = frozenset({"long", "full", "whole", "good", "solid", "short", "quick", "brief", "entire", "straight", "clear", "mere"})
 _DIMENSIONS = frozenset({"high", "tall", "long", "wide", "deep"})
-_UNITS = frozenset({*TIME_UNITS, *LENGTH_UNITS, *ANGLE_UNITS})
+_COUNTS = frozenset({"time", "turn", "revolution", "rotation", "spin", "circle", "lap"})
+"""Counted repeats ("it spun two whole times": two turns, not "the whole" object for two seconds)."""
+_UNITS = frozenset({*TIME_UNITS, *LENGTH_UNITS, *ANGLE_UNITS, *_COUNTS})
 
 
 def _unit(word: str) -> bool:

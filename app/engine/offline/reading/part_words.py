@@ -86,7 +86,8 @@ def shape_adjective(tokens: list[Token], i: int) -> bool:
     if tokens[i].text not in SHAPE_WORDS or i == 0 or i + 1 >= len(tokens):
         return False
     before, after = tokens[i - 1].text, tokens[i + 1]
-    return (before in DETERMINERS or before in SIZES or before in SHAPE_WORDS) and after.text.isalpha() and after.text not in PHRASE_BREAKS
+    counted = tokens[i - 1].number is not None and i > 1 and tokens[i - 2].text in DETERMINERS  # "the two round dials"
+    return (before in DETERMINERS or before in SIZES or before in SHAPE_WORDS or counted) and after.text.isalpha() and after.text not in PHRASE_BREAKS
 
 
 def line_index(word: str) -> int | None:

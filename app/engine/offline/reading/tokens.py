@@ -62,6 +62,10 @@ _LETTERS = frozenset("abcdefgh")
 """Letters that number steps: "a) close the lid b) ..."."""
 _ABBREVIATIONS = re.compile(r"\b(?:i\.e|e\.g)\.?(?![a-z])")
 """"e.g.": same length, read as a comma; "i.e.": "ie", a restatement dropped by :mod:`.framing` (offsets stay put)."""
+_QUOTED_CRY = re.compile(r"(?<![a-z])['\"“‘]([^'\"“”‘’]{1,40}?)[?!]+(['\"”’])")
+"""A question or cry quoted as a name ("the classic 'anyone in here?' move"): its mark ends no sentence (same length)."""
+_SHORT_ABOUT = re.compile(r"\b(approx|appr|ca)\.(?=\s+[a-z0-9])")
+""""open approx. half": the point of an abbreviation of "about" ends no sentence (same length)."""
 _BULLET = re.compile(r"(?m)^([ \t]*)[-*•](?=[ \t])")
 """A list item's bullet at the start of a line ("- top drawer out 40 cm"): the end of the item before (same length)."""
 _QUOTED_NUMBER = re.compile(r"[\"“”](\d+(?:\.\d+)?)[\"“”]")
@@ -88,7 +92,8 @@ def _unbracket(text: str) -> str:
 
 def _raw_tokens(prompt: str) -> list[Token]:
     lowered = _ABBREVIATIONS.sub(lambda m: ("ie" if m.group(0).startswith("i") else ",").ljust(len(m.group(0))), prompt.lower().replace("’", "'").replace("‘", "'"))
-    lowered = _unbracket(lowered)
+    lowered = _SHORT_ABOUT.sub(lambda m: m.group(1) + " ", _unbracket(lowered))
+    lowered = _QUOTED_CRY.sub(lambda m: " " + m.group(1) + " " * (len(m.group(0)) - len(m.group(1)) - 1), lowered)
     lowered = _BULLET.sub(lambda m: m.group(1) + ".", lowered)
     lowered = _QUOTED_NUMBER.sub(lambda m: f" {m.group(1)} ", lowered)  # 'set it to "3"': a number, not 3 inches
     text = _UNITS_AFTER_DIGITS.sub(r"\1 \2", lowered)
@@ -340,14 +345,19 @@ def _compounds(tokens: list[Token], known: frozenset[str]) -> list[Token]:
 def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     """Normalised tokens of ``prompt``; ``known`` adds words (the asset's part names) that are never
     corrected and that misspellings may be corrected to."""
+    from app.engine.offline.reading.casual_pieces import casual_pieces
     from app.engine.offline.reading.count_lines import count_lines
     from app.engine.offline.reading.do_that_after import do_that_after
     from app.engine.offline.reading.flanked import flanked, of_that_group
-    from app.engine.offline.reading.from_state import from_state
+    from app.engine.offline.reading.from_state import from_state, where_in_state
     from app.engine.offline.reading.fronted import fronted
     from app.engine.offline.reading.hand_side import hand_side
+    from app.engine.offline.reading.inverted import inverted
     from app.engine.offline.reading.learner import learner
     from app.engine.offline.reading.left_out import left_out
+    from app.engine.offline.reading.left_short import left_short
+    from app.engine.offline.reading.not_that_one import not_that_one
+    from app.engine.offline.reading.object_her import object_her
     from app.engine.offline.reading.object_wants import object_wants
     from app.engine.offline.reading.padded_units import padded_units
     from app.engine.offline.reading.paused_after import paused_after
@@ -359,6 +369,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.start_with import start_with
     from app.engine.offline.reading.starts_as import starts_as
     from app.engine.offline.reading.step_labels import step_labels
+    from app.engine.offline.reading.telegraphic_not import telegraphic_not
     from app.engine.offline.reading.told_order import told_order
     from app.engine.offline.reading.told_relatives import told_relatives
     from app.engine.offline.reading.told_states import told_states
@@ -371,7 +382,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, said_aside, row_apposed, verse_lines, padded_units, starts_as, told_relatives, count_lines, do_that_after, paused_after, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, object_her, inverted, said_aside, row_apposed, verse_lines, padded_units, casual_pieces, starts_as, told_relatives, count_lines, do_that_after, paused_after, where_in_state, left_short, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides, not_that_one, telegraphic_not,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []

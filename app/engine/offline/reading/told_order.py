@@ -78,7 +78,7 @@ def _before_you_do(tokens: list[Token], k: int) -> tuple[int, int, list[Token], 
 
 
 def _counted(tokens: list[Token]) -> list[Token]:
-    """"while I count to five": for five seconds."""
+    """"while I count to five", "for a five count", "for a count of five": for five seconds."""
     out: list[Token] = []
     k = 0
     while k < len(tokens):
@@ -89,6 +89,16 @@ def _counted(tokens: list[Token]) -> list[Token]:
             out += [Token("for", "for", at.start, at.end, corrected_from=" ".join(t.text for t in tokens[k:k + 5])), number,
                     Token("seconds", "second", number.start, number.end)]
             k += 5
+            continue
+        if len(words) >= 3 and words[0] in ("a", "an") and tokens[k + 1].number is not None and words[2] == "count":
+            number = tokens[k + 1]  # "for a five count": five seconds
+            out += [number, Token("seconds", "second", number.start, tokens[k + 2].end)]
+            k += 3
+            continue
+        if len(words) == 4 and words[:3] == ["a", "count", "of"] and tokens[k + 3].number is not None:
+            number = tokens[k + 3]  # "for a count of five"
+            out += [number, Token("seconds", "second", number.start, number.end)]
+            k += 4
             continue
         out.append(tokens[k])
         k += 1

@@ -263,7 +263,8 @@ def _form_step(tokens: list[Token], i: int, out: list[Token]) -> int | None:
         out += [replace(t, text="keep", lemma="keep"), Token("it", "it", t.start, t.end)]  # "... pulled out and left there for 4 s"
         return i + 1
     if t.text in ("make", "makes", "do", "does", "complete", "completes") and _laps(tokens, i):
-        out.append(replace(t, text="turn", lemma="turn"))  # "let the turntable make one full revolution": turn one full revolution
+        finite = t.text in ("makes", "does", "completes")  # "the turntable does one full revolution, the door closes": a clause of its own
+        out.append(replace(t, text="turns" if finite else "turn", lemma="turn"))  # "let the turntable make one full revolution": turn one full revolution
         return i + 1
     if t.text in ("low", "high") and out and out[-1].text in _PLACED and after[:1] and after[0] in ("on", "down", "up", "in"):
         out.append(replace(t, text="lower" if t.text == "low" else "upper", lemma="lower" if t.text == "low" else "upper"))
