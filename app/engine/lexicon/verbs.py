@@ -132,7 +132,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("dial", S.TURN, _p(**{"in": S.TURN}), implies=(PartKind.KNOB,)),
     VerbInfo("release", S.RELEASE),
     VerbInfo("come", S.MOVE, _p(off=S.RELEASE, away=S.RELEASE, out=S.PULL_OUT, open=S.OPEN, down=S.LOWER, up=S.RAISE, back=S.RETURN,
-                                  loose=S.OPEN, undone=S.OPEN)),
+                                  loose=S.OPEN, undone=S.OPEN, round=S.SPIN, around=S.SPIN)),
     VerbInfo("let", S.RELEASE, _p(go=S.RELEASE, down=S.LOWER, up=S.RAISE, open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, out=S.PULL_OUT, on=S.SWITCH_ON,
                                   back=S.RETURN)),
     VerbInfo("spring", S.RELEASE, _p(back=S.RELEASE, open=S.OPEN, up=S.RAISE)),
@@ -216,6 +216,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("blow", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, back=S.RETURN)),  # "a gust blows the door shut"
     VerbInfo("nudge", S.MOVE, object_sense=S.MOVE, displaces=True),
+    VerbInfo("ease", S.MOVE, _PULLING, object_sense=S.MOVE),  # "ease the oven back toward the wall", "ease the drawer out"
     VerbInfo("kick", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("carry", S.MOVE, object_sense=S.MOVE),
     VerbInfo("transport", S.MOVE, object_sense=S.MOVE),

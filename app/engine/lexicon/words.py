@@ -235,6 +235,7 @@ REQUEST_PHRASES: tuple[tuple[str, ...], ...] = (
     ("as", "you", "look", "at", "it"), ("as", "you", "face", "it"), ("as", "you", "see", "it"), ("when", "you", "look", "at", "it"),
     ("would", "you", "mind"), ("could", "i", "just"), ("could", "i"), ("can", "i", "just"), ("can", "i"), ("may", "i"), ("could", "you", "please"), ("can", "you", "please"), ("could", "you"), ("can", "you"), ("will", "you"),
     ("would", "you"), ("i'd", "like", "you", "to"), ("i", "want", "you", "to"), ("i", "need", "you", "to"), ("go", "ahead", "and"), ("let", "me"),
+    ("can", "someone"), ("could", "someone"), ("can", "somebody"), ("could", "somebody"), ("will", "someone"), ("would", "someone"),
     ("be", "so", "kind", "as", "to"), ("be", "kind", "enough", "to"), ("good", "morning"), ("good", "afternoon"), ("good", "evening"))
 """A request's frame ("could you open ...?"): dropped, the verb after it is the action."""
 CORRECTIONS: tuple[tuple[str, ...], ...] = (

@@ -80,7 +80,9 @@ def _incidental(frame: Frame) -> bool:
     clause with no action verb ("The dishes are done."), one about a person, or one whose verb we do not know
     ("Check on the roast: ..."). A known action verb on a missing part is still refused ("open the trunk")."""
     return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
-            or (frame.clause == 0 and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press ...": why, told first
+            or ((frame.clause == 0 or frame.marker in (".", "?", "!")) and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press
+            # ...": why, told first; "... ? Only enough to see whether the light comes on.": why, said after
+            or (frame.wish and frame.clause > 0 and frame.text.split()[:1] in (["i"], ["we"]))  # "..., I need the counter space"
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
             or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split())) or (
                 _said_of_someone(frame) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))))  # "grandpa liked his water hot"

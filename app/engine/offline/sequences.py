@@ -62,23 +62,36 @@ def ready_handle(builder: Builder, act: Act) -> bool:
     return False
 
 
+_AGAIN = frozenset({"again", "more", "further", "higher", "another", "twice"})
+
+
 def object_motion_act(builder: Builder, act: Act) -> None:
     ready_handle(builder, act)
     goal = act.goal
     previous = builder.steps[-1].base if builder.steps else None
     if goal.quantities.direction == "down" or "down" in goal.text.split():  # "lift it, carry it right and put it back down": the lift, undone
         previous = next((s.base for s in reversed(builder.steps) if s.base is not None and s.base.axis_world and s.base.axis_world[2] > 0.5), previous)
+    q = goal.quantities
+    if previous is not None and goal.verb in ("move", "go") and goal.themes and goal.themes[0].pronoun and q.amount is None and q.direction is None and (
+            q.axis is None and goal.particle is None):
+        builder.notes.append(f"read '{goal.text}' as the motion said again")  # "Pick up that bucket! Half a metre up! Move it!"
+        return
     motion = returning_motion(goal, previous) if goal.returning or goal.sense in (VerbSense.RETURN,) else None
     if motion is None:
         goal = with_result_quantities(goal, act.results)
         motion = object_motion(goal, builder.tracker.obj, yaw=yaw(builder))
-        if act.conjoined and previous is not None and builder.last_base_default and goal.themes and goal.themes[0].pronoun and (
+        verbless = goal.text.split()[0] not in VERBS  # "Pick up that bucket! Half a metre straight up!": the lift's distance
+        if (act.conjoined or verbless) and previous is not None and builder.last_base_default and goal.themes and (goal.themes[0].pronoun or verbless) and (
                 motion.motion.axis_world == previous.axis_world and goal.quantities.amount is not None):
             builder.steps[-1] = builder.steps[-1].model_copy(update={"base": previous.model_copy(update={"distance_m": motion.motion.distance_m})})
             distance_said(builder)
             builder.notes.append(f"read '{goal.text}' as the distance of the previous motion")
             builder.last_base_default = False
             return
+    if previous is not None and builder.steps[-1].base is previous and goal.subject_theme and goal.quantities.amount is None and (
+            motion.motion.axis_world == previous.axis_world and not motion.motion.yaw_rad and not _AGAIN & set(goal.text.split())):
+        builder.notes.append(f"read '{goal.text}' as the motion before, told as it happens")  # "... by its handle! ..., then the bucket lifts!"
+        return
     builder.notes.extend(motion.notes)
     builder.last_base_default = any(n.startswith("no distance given") for n in motion.notes)
     builder.append(act, goal.sense or VerbSense.MOVE, [], [], base=motion.motion, why="asked")

@@ -107,3 +107,61 @@ def test_the_report_states_the_distance_said_later() -> None:
     reading = read_prompt(prompt, asset("extra/suitcase_100550"))
     assert [s["base"]["distance_m"] for e in reading.understanding for s in e["steps"]] == [1.0]
     assert not any(n.startswith("no distance given") for n in reading.notes)
+
+
+@pytest.mark.parametrize(("name", "prompt", "joint", "final"), [
+    # round 67 (amounts and ends in the writers' own words): "just short of flat" is almost flat (left_short); it had gone
+    # flat, silently
+    ("extra/oven_7179", "Kindly lower the large bottom door of the oven to just short of flat.", "joint_3", 1.414),
+    ("suitcase_103762", "Swing the lid up until it's nearly shut.", "joint_0", -0.9425),
+    # "After step 1 completes" with the labels read before (step_labels): it had been a step that shut the jug, silently
+    ("coffee_machine_103030", "1) Raise the jug 3 cm off the motor base. 2) After step 1 completes, lift the lid 20 cm off the jug.",
+     "joint_1", 0.03),
+    # "Step 2: left drawer halfway": the label's "step" is no verb to carry (ellipsis); it had pushed the drawer shut
+    ("extra/storage_25308", "Step 1: right drawer all the way out. Step 2: left drawer halfway.", "joint_1", 0.22),
+    # "press the button that releases the door so it drops open": "it" is the door (whose_side.row_first); nothing had opened
+    ("dishwasher_12553", "press the button that releases the door so it drops open", "joint_0", 1.571),
+])
+def test_round67_the_part_ends_where_asked(name: str, prompt: str, joint: str, final: float) -> None:
+    assert _q(animate(name, prompt).trajectory, joint)[-1] == pytest.approx(final, abs=0.02)
+
+
+@pytest.mark.parametrize(("name", "prompt", "moved"), [
+    # "the oven does not tip" (a subject before "does not": clauses): "the oven" had turned the oven a second quarter turn
+    ("oven_7138", "Rotate the entire oven a quarter turn about the vertical axis. The door stays closed and the oven does not tip.", set()),
+    # "spin that half a turn" after a part named alone ("that" before an amount is "it": mentions)
+    ("microwave_7119", "not the door, the round plate on the floor inside. spin that half a turn", {"joint_1"}),
+    # a wish that names no part after a step ("I need the counter space"); "Can someone ..." (a request's frame)
+    ("microwave_7236", "can you shove the whole microwave about 40 cm to the left, I need the counter space", set()),
+    ("dishwasher_11700", "Can someone open the dishwasher please. I just need to get the clean plates out.", {"joint_0"}),
+    # what people keep doing is a reason (how_it_is): "the kids keep mashing the keys" had been refused
+    ("laptop_10697", "close the laptop and then turn the whole thing round so it faces the other way, the kids keep mashing the keys",
+     {"joint_1"}),
+    # "ease" moves the object; "keeping it square to the room" asks nothing more (kept_steady): both had been refused
+    ("extra/oven_7179", "Ease the entire oven back toward the wall behind it by about twenty centimetres, keeping it square to the room.",
+     set()),
+    # "once it's home" is once it is shut (everyday): the cupboard door had been shut first
+    ("storage_23472", "Push that top drawer back in first, and once it's home shut the cupboard door below it.", {"joint_0", "joint_1"}),
+    # "- that's what sets the turntable going -" says how it works (said_aside); "come round once" spins the plate
+    ("extra/microwave_7128", "Twist the top knob a quarter turn to set the timer - that's what sets the turntable going - and let the plate "
+                             "come round once.", {"joint_3", "joint_4"}),
+])
+def test_round67_only_the_asked_parts_move(name: str, prompt: str, moved: set[str]) -> None:
+    assert _moved(animate(name, prompt).trajectory) == moved
+
+
+def test_not_at_the_same_time_is_in_turn() -> None:
+    """"..., not at the same time" (telegraphic_not): the second drawer had started with the first, silently."""
+    trajectory = animate("extra/storage_25308", "Right drawer all the way out, left drawer halfway, not at the same time.").trajectory
+    first, second = _q(trajectory, "joint_0"), _q(trajectory, "joint_1")
+    assert trajectory.times[np.argmax(second > second[0] + 1e-3)] >= trajectory.times[np.argmax(first >= first[-1] - 1e-3)]
+
+
+@pytest.mark.parametrize("prompt", [
+    "Can you lift the bucket straight up, maybe 30 centimetres? Just up, no tipping it.",  # kept_steady: "no tipping it"
+    "Pick up that bucket! Half a metre straight up! Move it!",  # the lift's distance, then the motion said again
+])
+def test_a_lift_said_again_is_one_lift(prompt: str) -> None:
+    height = 0.3 if "30" in prompt else 0.5
+    base = animate("extra/bucket_100432", prompt).trajectory.base_translation[-1]
+    assert base == pytest.approx([0.0, 0.0, height], abs=1e-3)

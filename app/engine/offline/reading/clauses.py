@@ -293,7 +293,7 @@ def split_clauses(tokens: list[Token]) -> list[Clause]:
                 _starts_clause(tokens, nxt) or (nxt < len(tokens) and (tokens[nxt].lemma in VERBS or tokens[nxt].lemma in TOLD_CAUSATIVES))
                 or word in _THEREFORE):
             boundary = (Link.RESULT, word, False)
-        elif word in NEGATIONS and current and _subject_only(current) and word not in ("without", "except", "but"):
+        elif ((word in NEGATIONS and word not in ("without", "except", "but")) or (word in ("do", "does") and [t.text for t in tokens[nxt:nxt + 1]] == ["not"])) and current and _subject_only(current):
             negated_here = True  # "the wheels cannot roll", "they do not turn": this clause says what does not happen
             current.append(token)
             i += 1

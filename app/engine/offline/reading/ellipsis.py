@@ -9,6 +9,7 @@ from app.engine.lexicon.verbs import VERBLESS_SENSES, VERBS, VerbSense
 from app.engine.lexicon.words import STATES
 from app.engine.offline.reading.clauses import Link
 from app.engine.offline.reading.frames import Frame
+from app.engine.offline.reading.step_labels import step_label
 
 _TURN_WORDS = frozenset({"turn", "turns", "revolution", "revolutions", "rotation", "rotations", "spin", "spins"})
 
@@ -32,6 +33,8 @@ _STATE_VERBS = {"open": ("open", VerbSense.OPEN), "shut": ("close", VerbSense.CL
 def carry(frame: Frame, previous: Frame | None, measured: Frame | None = None) -> Frame:
     if frame.link is Link.NEGATED:
         return frame  # "keep your hands off the drawer": what not to touch takes no verb
+    if previous is not None and step_label(previous.text):
+        previous = None  # "Step 2: left drawer halfway": the label's "step" is no verb to carry
     said = frame.text.split()
     if frame.verb is None and len(said) <= 3 and said[-1:] and said[-1] in _STATE_VERBS and frame.themes and not any(m.is_object for m in frame.themes) and (
             previous is not None and previous.sense not in (None, _STATE_VERBS[said[-1]][1]) and frame.quantities.amount is None):

@@ -227,11 +227,11 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
             skip = i + 2 + (i + 3 < len(tokens) and tokens[i + 2].text == "so" and tokens[i + 3].text == "that")
             continue
         just_far = int(t.text == "just" and after == "far")  # "just far enough to peek"
-        if t.text in ("just", "far") and [w.text for w in tokens[i + 1 + just_far:i + 3 + just_far]] == ["enough", "to"]:
+        if t.text in ("just", "far", "only") and [w.text for w in tokens[i + 1 + just_far:i + 3 + just_far]] == ["enough", "to"]:
             if out and out[-1].text == ",":
                 out.pop()  # "open the door ~45 deg, just enough to see inside": the amount said, then why
-            clause = next((j for j in range(len(out) - 1, -1, -1) if out[j].text in (".", ";", "!", "then", "and_then")), -1)
-            if not any(w.number is not None for w in out[clause + 1:]):
+            clause = next((j for j in range(len(out) - 1, -1, -1) if out[j].text in (".", ";", "!", "?", "then", "and_then")), -1)
+            if clause < len(out) - 1 and not any(w.number is not None for w in out[clause + 1:]):
                 out.append(Token("partway", "partway", t.start, t.end))  # "let the door down just far enough to peek": partway
             skip = i + 1 + just_far
             continue
@@ -259,7 +259,7 @@ def everyday_words(tokens: list[Token]) -> list[Token]:
         elif t.text == "'s" and (after in _STATE_AFTER_IS or (after.endswith("ing") and len(after) > 4 and not (
                 i + 2 < len(tokens) and kind_of_word(tokens[i + 2].text) is not None))):  # "the toaster's browning knob": whose
             t = Token("is", "be", t.start, t.end)  # "the drawer's sticking out", "the lid's open": is, not a possessive
-        elif t.text == "home" and (before in ("it", "them", "fully") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
+        elif t.text == "home" and (before in ("it", "them", "fully", "it's", "is", "they're", "are") or (before == "way" and i > 1 and tokens[i - 2].text == "the") or (
                 before.isalpha() and before not in _NOT_BEFORE_HOME and (not after or after in (".", ",", ";", "!", "so", "and", "then")))):
             t = Token("shut", "shut", t.start, t.end)  # "shove it (all the way) home": in as far as it goes
         elif t.text.startswith("hand-") and t.text[5:] in VERBS:

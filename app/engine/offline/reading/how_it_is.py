@@ -1,11 +1,12 @@
 """Clauses that tell how things are or keep being, not a step: "while it is spinning", "the door is sitting open",
-"it keeps popping open on its own" (a habit the user complains of)."""
+"it keeps popping open on its own" (a habit the user complains of), "the kids keep mashing the keys" (what people keep doing)."""
 
 from __future__ import annotations
 
 import re
 from dataclasses import replace
 
+from app.engine.lexicon.people import PERSON_NOUNS
 from app.engine.lexicon.words import DIRECTIONS, POSTURES
 from app.engine.offline.reading.clauses import Clause, Link
 from app.engine.offline.reading.quantities import Quantities
@@ -25,9 +26,13 @@ def _progressive(tokens: list[Token], verb_index: int, clause: Clause, wish: boo
 
 def _habit(tokens: list[Token], verb_index: int) -> bool:
     """ "it keeps popping open", "the lid kept sliding off": a subject, then keeps + a gerund ending in a state."""
-    if verb_index < 1 or tokens[verb_index].text not in _HABIT_VERBS or verb_index + 1 >= len(tokens):
+    if verb_index < 1 or verb_index + 1 >= len(tokens):
         return False
-    return tokens[verb_index + 1].text.endswith("ing") and verb_index + 2 < len(tokens) and tokens[verb_index + 2].text in _HABIT_ENDS  # not "keeps bumping the lid up"
+    people = tokens[verb_index - 1].text in PERSON_NOUNS  # "the kids keep mashing the keys": what people keep doing, a reason
+    if tokens[verb_index].text not in _HABIT_VERBS and not (people and tokens[verb_index].text == "keep"):
+        return False
+    return tokens[verb_index + 1].text.endswith("ing") and verb_index + 2 < len(tokens) and (
+        tokens[verb_index + 2].text in _HABIT_ENDS or people)  # not "keeps bumping the lid up"
 
 
 def how_it_is(tokens: list[Token], verb_index: int | None, clause: Clause, wish: bool) -> bool:

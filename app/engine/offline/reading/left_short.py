@@ -1,10 +1,12 @@
 """Where a step stops, said after it as what to leave: "Push it in, but leave it open a crack - about two centimetres
 short of shut", "close it, leaving it 5 degrees off closed". Read as the end of that step ("push it in to 2 cm from shut").
-Without a measure, "..., but leave it open a crack" / "slightly open" / "ajar" stops the step almost shut, and "..., but not
+"Lower the door to just short of flat" is almost flat. Without a measure, "..., but leave it open a crack" / "slightly open" / "ajar" stops the step almost shut, and "..., but not
 all the way" stops it partway (with the agent's note on the amount). Before this stage the words after "but" were dropped and
 the drawer was pushed shut, silently."""
 
 from __future__ import annotations
+
+from dataclasses import replace
 
 from app.engine.lexicon.words import STATES
 from app.engine.offline.reading.token import Token
@@ -56,7 +58,18 @@ def _said_end(tokens: list[Token], k: int) -> tuple[list[str], int] | None:
     for ajar in _AJAR:
         end = j + len(ajar)
         if tuple(t.text for t in tokens[j:end]) == ajar and (end == len(tokens) or tokens[end].text in _ENDS):
-            return ["almost", "shut"], end
+            return ["almost", "closed"], end
+    return None
+
+
+_STATE_WORDS = frozenset({"flat", "closed", "shut", "open", "upright", "vertical", "horizontal", "level"})
+
+
+def _just_short(tokens: list[Token], k: int) -> int | None:
+    """The index after "just short of flat" at ``k`` (no measure said before it), else None."""
+    j = k + (tokens[k].text in ("just", "only"))
+    if [t.text for t in tokens[j:j + 2]] in (["short", "of"], ["shy", "of"]) and j + 2 < len(tokens) and tokens[j + 2].text in _STATE_WORDS:
+        return j + 2
     return None
 
 
@@ -67,6 +80,13 @@ def left_short(tokens: list[Token]) -> list[Token]:
     while k < len(out):
         j = _lead(out, k)
         found = _stop(out, j) if j is not None else None
+        if out[k].text == "shut" and k > 0 and out[k - 1].text in ("almost", "nearly"):
+            out[k] = replace(out[k], text="closed", lemma="closed")  # "until it's nearly shut": nearly closed (the state, not a verb)
+        short = _just_short(out, k) if found is None and (k == 0 or out[k - 1].number is None) else None
+        if short is not None:
+            out[k:short] = [Token("almost", "almost", out[k].start, out[short - 1].end)]  # "(to) just short of flat": almost flat
+            k += 1
+            continue
         said = _said_end(out, k) if found is None else None
         at = out[k]
         if found is not None:

@@ -229,11 +229,11 @@ def _phrase(tokens: list[Token], i: int, used: frozenset[int]) -> tuple[Mention 
         i += 1
     end = i
     if not nouns and not unknown:
-        at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well", "to", "by") or (
+        at_end = end >= len(tokens) or tokens[end].is_punct or tokens[end].text in ("then", "and", "and_then", "first", "too", "as_well", "to", "by", "half", "a", "a_quarter", "all_the_way", "halfway", "once", "twice") or (
             tokens[end].number is not None)
         facing = begin > 1 and tokens[begin - 1].text in ("of", "to", "with", "from") and tokens[begin - 2].text in FACE_RELATIONS
         if at_end and end == begin + 1 and tokens[begin].text in ("this", "that"):
-            return Mention(head="it", pronoun=True, start=begin, end=end, words=tokens[begin].text), end  # "open this": the object
+            return Mention(head="it", pronoun=True, start=begin, end=end, words=tokens[begin].text), end  # "open this", "spin that half a turn"
         if not facing and (other or (determiner and (sides or ordinal or size) and at_end)):
             # "the other", "then the second": an anaphoric head with qualifiers
             return Mention(head="one", anaphor=True, other=other, sides=tuple(sides), ordinal=ordinal, size=size, collective=collective,

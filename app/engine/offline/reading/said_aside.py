@@ -1,7 +1,7 @@
 """Sentences and clauses said beside the request, dropped: a cue ("Go!", "Rolling!", "Action!"), the object pointed out
 ("See this little wooden chest?"), an apology or thanks
-with nothing to do in it ("Sorry if that's a silly request.", "Thanks so much!"), and what is about to happen ("it's about
-to boil over"). Before this stage "go" was a verb with nothing to move and "a silly request" a part the asset lacked."""
+with nothing to do in it ("Sorry if that's a silly request.", "Thanks so much!"), what is about to happen ("it's about
+to boil over") and how it works ("- that's what sets the turntable going -"). Before this stage "go" was a verb with nothing to move and "a silly request" a part the asset lacked."""
 
 from __future__ import annotations
 
@@ -69,6 +69,9 @@ def said_aside(tokens: list[Token]) -> list[Token]:
         if [t.text for t in out[k:k + 3]] in (["no", "other", "part"], ["no", "other", "parts"], ["nothing", "else", "moves"]):
             k = next((j for j in range(k + 1, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
             continue  # "... and no other part moves": it does not, unless asked
+        if out[k].text in ("that's", "which's") and [t.text for t in out[k + 1:k + 2]] == ["what"] and k and out[k - 1].text in (",", ";", ":"):
+            k = next((j for j in range(k + 2, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
+            continue  # "- that's what sets the turntable going -": how it works, said beside the steps
         if out[k].text == "possibly" and k and out[k - 1].text in ("can", "could", "will", "would"):
             k += 1
             continue  # "as far as it can possibly go": as far as it can go

@@ -22,9 +22,17 @@ MAX_STEPS = 20
 _COMPLETED = frozenset({"completed", "complete", "done", "finished", "over", "performed", "executed"})
 
 
+def step_label(text: str) -> bool:
+    """Whether a clause's text is only a step's label kept as a heading ("step 2", "beat one")."""
+    words = text.split()
+    return len(words) == 2 and words[0] in _STEP and (words[1].isdigit() or words[1] in NUMBER_WORDS)
+
+
 def _past_completion(tokens: list[Token], k: int) -> int:
     """The index after "has been completed" / "is done" / "is finished" at ``k`` (``k`` when none is said)."""
     j = k
+    if j < len(tokens) and tokens[j].text in ("completes", "finishes", "ends"):
+        return j + 1  # "after step 1 completes"
     if j < len(tokens) and tokens[j].text in ("has", "have", "is", "was", "'s"):
         j += 1
     if j < len(tokens) and tokens[j].text == "been":
@@ -71,8 +79,8 @@ def step_labels(tokens: list[Token]) -> list[Token]:
             k = found[1]
         else:
             k += 1
-    if not labels or (len(labels) == 1 and labels[0][1] != 1):
-        return tokens  # one "2." alone is no procedure
+    if len(labels) == 1 and labels[0][1] != 1:
+        labels = []  # one "2." alone is no procedure (its labels were read before: "1) ... 2) After step 1 completes, ...")
     out: list[Token] = []
     current = 0
     starts = {start: (n, end) for start, n, end in labels}
@@ -90,7 +98,7 @@ def step_labels(tokens: list[Token]) -> list[Token]:
             continue
         token = tokens[k]
         if (token.text in _STEP and k + 1 < len(tokens) and out and out[-1].text in _BACK
-                and (n := _number(tokens[k + 1])) is not None and n == current - 1):
+                and (n := _number(tokens[k + 1])) is not None and (n == current - 1 or not starts)):
             before = out.pop()  # "after that", a phrase the stages before join
             out.append(Token("after_that", "after_that", before.start, tokens[k + 1].end))
             k = _past_completion(tokens, k + 2)

@@ -54,7 +54,12 @@ def row_first(tokens: list[Token]) -> list[Token]:
         if words[0] in ("that", "which") and len(words) > 1 and out and kind_of_word(out[-1].text) is not None and tokens[k + 1].text.endswith("s") and (
                 lemma_of(tokens[k + 1].text)[0] in VERBS and lemma_of(tokens[k + 1].text)[0] != tokens[k + 1].text):
             # "the button that releases the latch": the button (what it does is how it is known, not another part)
-            k = next((j for j in range(k + 1, len(tokens)) if tokens[j].is_punct or tokens[j].text in ("and", "then", "and_then", "so")), len(tokens))
+            end = next((j for j in range(k + 1, len(tokens)) if tokens[j].is_punct or tokens[j].text in ("and", "then", "and_then", "so")), len(tokens))
+            named = tokens[k + 2:end]  # "... that releases the door so it drops open": "it" is the door
+            if end + 1 < len(tokens) and tokens[end].text in ("so", "and") and tokens[end + 1].text == "it" and named[:1] and named[0].text == "the":
+                out += [tokens[end], *named]
+                end += 2
+            k = end
             continue
         if words[0] in ("that's", "which's", "that", "which") and out and (out[-1].text == "one" or kind_of_word(out[-1].text) is not None) and (
                 next_word := words[1 + (words[0] in ("that", "which") and words[1:2] == ["is"])] if len(words) > 2 else "") and (
