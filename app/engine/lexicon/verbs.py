@@ -106,6 +106,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("crack", S.OPEN, _p(open=S.OPEN)),
     VerbInfo("fling", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE, closed=S.CLOSE, down=S.LOWER), motion="hinge"),
     VerbInfo("throw", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE), motion="hinge"),
+    VerbInfo("chuck", S.OPEN, _p(open=S.OPEN, back=S.OPEN, up=S.RAISE, shut=S.CLOSE), motion="hinge"),  # "chuck the bag in"
     VerbInfo("prop", S.OPEN, _p(open=S.OPEN, up=S.RAISE)),
     VerbInfo("flop", S.LOWER, _p(down=S.LOWER, open=S.OPEN, back=S.OPEN, over=S.LOWER), motion="hinge"),
     VerbInfo("pop", S.OPEN, _p(open=S.OPEN, out=S.PULL_OUT, up=S.RAISE, back=S.RELEASE, on=S.CLOSE, into=S.PUSH_IN, shut=S.CLOSE, closed=S.CLOSE,
@@ -143,6 +144,7 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("draw", S.PULL_OUT, _PULLING),
     VerbInfo("extend", S.PULL_OUT),
     VerbInfo("slide", S.PULL_OUT, _PULLING, object_sense=S.MOVE, motion="slide"),
+    VerbInfo("withdraw", S.PULL_OUT, _PULLING),  # "withdraw the lowest rack from behind it"
     VerbInfo("glide", S.PULL_OUT, _PULLING, object_sense=S.MOVE, motion="slide"),
     VerbInfo("eject", S.PULL_OUT),
     VerbInfo("take", S.PULL_OUT, _p(out=S.PULL_OUT, off=S.OPEN)),
@@ -216,7 +218,8 @@ _VERBS: tuple[VerbInfo, ...] = (
     VerbInfo("shove", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("blow", S.OPEN, _p(open=S.OPEN, shut=S.CLOSE, closed=S.CLOSE, back=S.RETURN)),  # "a gust blows the door shut"
     VerbInfo("nudge", S.MOVE, object_sense=S.MOVE, displaces=True),
-    VerbInfo("ease", S.MOVE, _PULLING, object_sense=S.MOVE),  # "ease the oven back toward the wall", "ease the drawer out"
+    VerbInfo("ease", S.MOVE, _PULLING, object_sense=S.MOVE),
+    VerbInfo("heave", S.RAISE, _RAISING, object_sense=S.MOVE),  # "heave the whole pot straight up half a metre"  # "ease the oven back toward the wall", "ease the drawer out"
     VerbInfo("kick", S.MOVE, object_sense=S.MOVE, displaces=True),
     VerbInfo("carry", S.MOVE, object_sense=S.MOVE),
     VerbInfo("transport", S.MOVE, object_sense=S.MOVE),

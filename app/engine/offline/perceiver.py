@@ -18,6 +18,7 @@ from app.engine.asset.model import ArticulatedAsset
 from app.engine.contracts.steps import Extension
 from app.engine.errors import GroundingError
 from app.engine.lexicon.kinds import PartKind
+from app.engine.lexicon.objects import names_other_object
 from app.engine.lexicon.relations import FRONT_RELATIVE_RELATIONS, RELATIONS, VIEWER_WORDS
 from app.engine.lexicon.verbs import VERBS, VerbSense
 from app.engine.lexicon.words import AGENT_NOUNS, CAUSER_NOUNS, OBJECT_TILTS, PERSON_NOUNS, PERSONS, Side
@@ -31,9 +32,11 @@ from app.engine.offline.it_named_before import named_before_it
 from app.engine.offline.naming import GENERIC, tokens
 from app.engine.offline.reading.acts import Act, build_acts
 from app.engine.offline.reading.between import paused_between
-from app.engine.offline.reading.clauses import Link, split_clauses
+from app.engine.offline.reading.clauses import Clause, Link, split_clauses
 from app.engine.offline.reading.frames import Frame, read_frames
 from app.engine.offline.reading.holders import put_in_only
+from app.engine.offline.reading.mention import Mention
+from app.engine.offline.reading.mentions import parse_mentions
 from app.engine.offline.reading.repeats import repeated
 from app.engine.offline.reading.tokens import Token, tokenize
 from app.engine.offline.stated import record_release, stated_latched, stated_no_handle
@@ -82,13 +85,22 @@ def _incidental(frame: Frame) -> bool:
     return (frame.heading or frame.verb is None or frame.link in (Link.RESULT, Link.PURPOSE) or frame.stative or frame.aside or frame.verb not in VERBS or frame.sense is None
             or ((frame.clause == 0 or frame.marker in (".", "?", "!")) and frame.text.split()[0] in ("to", "in order to"))  # "To unlock it, press
             # ...": why, told first; "... ? Only enough to see whether the light comes on.": why, said after
-            or (frame.wish and frame.clause > 0 and frame.text.split()[:1] in (["i"], ["we"]))  # "..., I need the counter space"
+            or (frame.wish and frame.clause > 0 and frame.text.split()[:1] in (["i"], ["we"], ["i'd"], ["we'd"]))  # "..., I need the counter space"
             or (frame.let and bool(frame.themes) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))  # "let some steam out"
             or (frame.guessed_verb is not None and (frame.link in (Link.PARALLEL, Link.CONDITION) or bool(_BE & set(frame.text.split())) or (
                 _said_of_someone(frame) and all(m.kind is None and not m.is_object and not m.pronoun for m in frame.themes))))  # "grandpa liked his water hot"
             # "while the narrator talks", "dishes are all loaded"
             or (not frame.themes and not frame.instruments and _said_of_someone(frame))  # "... when the arm lets go": about who acts
             or bool({"must", "should"} & set(frame.text.split()[1:4])))  # "..., lever must end up on the back side": how it ends
+
+
+def _landmarks(clauses: list[Clause], frame: Frame) -> list[Mention]:
+    """Parts a clause names only as where another is, in an apposition the frame drops ("..., the one behind the small door
+    on top, ..."): said before, for "the door" later; never parts to move."""
+    if frame.clause >= len(clauses):
+        return []
+    return [m.relation[1] for m in parse_mentions(list(clauses[frame.clause].tokens), 0) if m.anaphor and m.relation is not None and (
+        m.relation[1].kind is not None)]
 
 
 _BE = frozenset({"is", "are", "was", "were"})
@@ -123,7 +135,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     acts, gaps = paused_between(repeated(build_acts(frames)))  # "…, pausing a moment between each digit"
     acts = named_before_it(said_by_use(acts, builder.parts))  # "Set the timer — twist the bottom knob ...": what the knob is for
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
-    builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments)]  # "so you can get at the bottom rack"
+    builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments, *_landmarks(clauses, frame))]  # "so you can get at
+    # the bottom rack"; "the upper rack — the one behind the small door on top — ... The door you may open": that door
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])
     skipped: list[GroundingError] = []
@@ -201,8 +214,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
                         not act.goal.codes):
                     builder.notes.append(f"did not animate '{act.goal.text}': the prompt does not say the code (say its keys, e.g. 'enter 1-2-3-4')")
                     continue  # "Punch the code into the keypad and open up the safe": which keys is not said
-                if len(acts) > 1 and not exc.candidates and put_in_only(act.goal.text.split(), act.goal.verb, all(
-                        m.kind is None and not (m.is_object or m.pronoun) for m in act.goal.themes)):
+                if len(acts) > 1 and not exc.candidates and put_in_only(act.goal.text.split(), act.goal.verb, all(m.kind is None and not m.pronoun and (
+                        not m.is_object or names_other_object(m.head, builder.tracker.obj.category, "")) for m in act.goal.themes)):  # "chuck the bag in"
                     builder.notes.append(f"ignored '{act.goal.text}': what is put in is no part of {asset.name}")
                     continue  # "open the bin with my foot, drop the banana peel in, then let the lid fall shut"
                 story = any(a.goal.verb is not None for a in acts[index + 1:]) and bool(CAUSER_NOUNS & set(act.goal.text.split()[:3]))  # "a draft catches the door and ..."

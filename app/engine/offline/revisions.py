@@ -52,6 +52,13 @@ def restated_means(builder: Builder, act: Act, controls: list[Move], grounded: t
     if controls and parts and act.means is not None and named and all(m.kind is not None and builder.refs.stands_in(m) for m in named):
         builder.notes.append(f"read '{act.goal.text}' as what working the {controls[0].part.kind} does: {builder.asset.name} has no {named[0].kind}")
         return [], []  # "turn the cross-shaped handle so that the bolts retract": no bolts, not a second knob standing in
+    standing_in = [m for m in named if m.kind is not None and builder.refs.stands_in(m)]
+    if controls and parts and act.means is not None and standing_in and len(standing_in) < len(named):
+        kept = {p.joint for m in named if m not in standing_in for p in builder.refs.resolve(m)[0]}
+        builder.notes.append(f"read '{standing_in[0].words}' as what working the {controls[0].part.kind} does: {builder.asset.name} has no "
+                             f"{standing_in[0].kind}")  # "turn the wheel to withdraw the bolts, whereupon the door swings open": the door
+        pairs = [(p, w) for p, w in zip(parts, grounded[1], strict=True) if p.joint in kept]
+        parts, grounded = [p for p, _ in pairs], ([p for p, _ in pairs], [w for _, w in pairs])
     if controls and parts and act.means is not None and _other_controls(act.means, parts, controls):
         moved = " and ".join(dict.fromkeys(m.words or m.part.link for m in controls))
         others = ", ".join(p.link for p in parts)

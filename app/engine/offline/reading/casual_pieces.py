@@ -1,6 +1,6 @@
 """Casual words for a piece and for how far it goes: "the top bit" is the top piece (not "a bit", an amount), and "lift the
 top piece clean off" is lifting it off ("clean" says only that it comes away whole). Before this stage both were refused
-as naming no part, as was "through its full closing range" (all the way shut). "Hold it way up high" is holding it up ("way" and "high" only stress the "up")."""
+as naming no part, as was "through its full closing range" (all the way shut). "flat on the floor" is flat. "Hold it way up high" is holding it up ("way" and "high" only stress the "up")."""
 
 from __future__ import annotations
 
@@ -41,6 +41,10 @@ def casual_pieces(tokens: list[Token]) -> list[Token]:
         if (span := _full_span(tokens, k)) is not None:
             words, skip = span  # "take the lid through its full closing range": all the way shut
             out += [Token(w, w, t.start, tokens[skip - 1].end) for w in words]
+            continue
+        if t.text in ("on", "against") and out and out[-1].text == "flat" and [w.text for w in tokens[k + 1:k + 3]] in (
+                ["the", "floor"], ["the", "ground"], ["the", "table"], ["the", "counter"], ["the", "desk"]):
+            skip = k + 3  # "lay the shell open, flat on the floor": flat (where it lies, not where it is put)
             continue
         after = tokens[k + 1].text if k + 1 < len(tokens) else ""
         if t.text == "clean" and k > 0 and after in _AWAY:

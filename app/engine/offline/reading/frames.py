@@ -244,7 +244,6 @@ def _split_roles(tokens: list[Token], mentions: list[Mention], prior: list[Menti
             continue  # "(and) shut onto the keyboard", "comes back down onto the pot": where it ends, not what moves
         elif mention.anaphor and not mention.sides and not mention.ordinal and preposition == "," and themes and not (
                 mention.relation is not None and mention.relation[1].pronoun):  # "top-left key, the one right under it": the next
-            themes[-1] = replace(themes[-1], relation=mention.relation) if themes[-1].relation is None else themes[-1]  # "..., the one behind the top door"
             continue  # "the left door, the one with the handle,": an apposition describing the door
         else:
             themes.append(mention)

@@ -9,8 +9,9 @@ from app.engine.offline.reading.token import Token
 
 _EMPHASIS = frozenset({"long", "full", "whole", "good", "solid", "short", "quick", "brief", "entire", "straight", "clear", "mere"})
 _DIMENSIONS = frozenset({"high", "tall", "long", "wide", "deep"})
-_COUNTS = frozenset({"time", "turn", "revolution", "rotation", "spin", "circle", "lap"})
-"""Counted repeats ("it spun two whole times": two turns, not "the whole" object for two seconds)."""
+_COUNTS = frozenset({"time"})
+"""Counted repeats ("it spun two whole times": two turns, not "the whole" object for two seconds). Turns keep their word
+of emphasis: "two full turns" is read as it stands."""
 _UNITS = frozenset({*TIME_UNITS, *LENGTH_UNITS, *ANGLE_UNITS, *_COUNTS})
 
 
@@ -22,5 +23,6 @@ def padded_units(tokens: list[Token]) -> list[Token]:
     """``tokens`` without a word of emphasis between a number and its unit, nor a dimension said after the unit ("one
     whole metre high": a metre)."""
     tokens = [t for k, t in enumerate(tokens) if not (
-        t.text in _EMPHASIS and 0 < k < len(tokens) - 1 and tokens[k - 1].number is not None and _unit(tokens[k + 1].text))]
+        t.text in _EMPHASIS and 0 < k < len(tokens) - 1 and tokens[k - 1].number is not None and _unit(tokens[k + 1].text) and not (
+            tokens[k + 1].text.rstrip("s") in _COUNTS and (t.text != "whole" or tokens[k - 1].text in ("a", "an"))))]  # "two whole times" only
     return [t for k, t in enumerate(tokens) if not (t.text in _DIMENSIONS and k > 1 and _unit(tokens[k - 1].text) and tokens[k - 2].number is not None)]

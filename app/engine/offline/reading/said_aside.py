@@ -19,6 +19,7 @@ _MOTION_NOUNS = frozenset({"rotation", "rotating", "tilt", "tilting", "change", 
                            "pitch", "lift", "lifting", "sliding", "drift", "wobble"})
 _WANTING = frozenset({"i_want", "i_need", "we_need", "we_want", "i_just_want"})
 _LIKE_AMOUNTS = frozenset({"halfway", "half", "a_bit", "a_little", "a_quarter", "a", "about", "all_the_way", "fully", "most", "90", "45"})
+_DESCRIBED_AS = frozenset({"move", "gesture", "touch", "flourish", "moment", "beat", "shot", "scene", "motion", "reveal", "entrance", "exit"})
 _CLAUSE_ENDS = frozenset({",", ".", "!", "?", ";", ":", "and", "so", "then", "but"})
 
 
@@ -69,6 +70,10 @@ def said_aside(tokens: list[Token]) -> list[Token]:
         if [t.text for t in out[k:k + 3]] in (["no", "other", "part"], ["no", "other", "parts"], ["nothing", "else", "moves"]):
             k = next((j for j in range(k + 1, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
             continue  # "... and no other part moves": it does not, unless asked
+        if out[k].text in ("a", "an") and k and out[k - 1].text == "," and (end := next((j for j in range(k + 1, len(out)) if out[j].is_sentence_end), len(out))) and (
+                out[end - 1].text in _DESCRIBED_AS and not any(t.number is not None or kind_of_word(t.text) is not None for t in out[k:end])):
+            k = end
+            continue  # "She taps the top-left key — a quiet, almost tentative first move.": the step described, nothing more
         if out[k].text in ("that's", "which's") and [t.text for t in out[k + 1:k + 2]] == ["what"] and k and out[k - 1].text in (",", ";", ":"):
             k = next((j for j in range(k + 2, len(out)) if out[j].text in (",", ".", ";", "!", "?")), len(out))
             continue  # "- that's what sets the turntable going -": how it works, said beside the steps

@@ -365,6 +365,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     from app.engine.offline.reading.plural_subject import plural_subject
     from app.engine.offline.reading.row_apposed import row_apposed
     from app.engine.offline.reading.said_aside import said_aside
+    from app.engine.offline.reading.similes import similes
     from app.engine.offline.reading.spelling import correct, correct_noun
     from app.engine.offline.reading.start_place import start_place
     from app.engine.offline.reading.start_with import start_with
@@ -383,7 +384,7 @@ def tokenize(prompt: str, known: frozenset[str] = frozenset()) -> list[Token]:
     tokens = [correct(t, known) if t.number is None and t.text.isalpha() else t for t in _compounds(_halved(expand(_raw_tokens(prompt), known), known), known)]
     tokens = [correct_noun(t, known) if k and tokens[k - 1].text in DEFINITES and t.text.isalpha() else t
               for k, t in enumerate(tokens)]  # "the dore": a part is expected
-    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, object_her, inverted, said_aside, row_apposed, verse_lines, padded_units, casual_pieces, starts_as, told_relatives, count_lines, do_that_after, paused_after, where_in_state, left_short, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides, not_that_one, telegraphic_not, kept_steady,
+    for rewrite in (which_of, same_words, everyday_words, _join_phrases, _join_numbers, object_her, inverted, said_aside, row_apposed, verse_lines, padded_units, casual_pieces, starts_as, told_relatives, count_lines, do_that_after, paused_after, where_in_state, left_short, from_state, object_wants, start_with, plural_subject, flanked, of_that_group, hand_side, step_labels, start_place, counted_from, free_choice, needs_doing, waits_out, told_states, known_forms, drop_framing, corrections, drop_asides, similes, not_that_one, telegraphic_not, kept_steady,
                     facing, too_far, told_order, fronted, whose_side, row_first):  # each stage reads what the one before wrote
         tokens = rewrite(tokens)
     out = []
