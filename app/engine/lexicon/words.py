@@ -92,7 +92,7 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "to the far end of its range": 1.0, "to the end of its range": 1.0, "to the far end of its travel": 1.0, "to the end of its travel": 1.0, "to the end": 1.0, "as wide as": 1.0, "as high as": 1.0, "all the way open": 1.0,
     "halfway": 0.5, "half way": 0.5, "half-way": 0.5, "half": 0.5, "midway": 0.5, "partway": 0.5, "part way": 0.5, "half open": 0.5,
     "partly": 0.3, "partially": 0.3, "a bit": 0.25, "a little": 0.2, "a little bit": 0.2, "somewhat": 0.3, "ajar": 0.25,
-    "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "just a sliver": 0.1, "a sliver": 0.1, "a few": 0.25, "a tad": 0.15,
+    "slightly": 0.2, "barely": 0.1, "just a crack": 0.1, "a crack": 0.1, "just a sliver": 0.1, "a few": 0.25, "a tad": 0.15,
     "mostly": 0.75, "most of the way": 0.75, "three quarters": 0.75, "three-quarters": 0.75, "a third": 1 / 3, "one third": 1 / 3,
     "two thirds": 2 / 3, "two-thirds": 2 / 3, "a quarter of the way": 0.25, "a quarter": 0.25, "one quarter": 0.25,
     "a third of the way": 1 / 3, "as far as": 1.0, "as high as it goes": 1.0, "as high as possible": 1.0, "as low as it goes": 1.0,
@@ -103,7 +103,7 @@ AMOUNTS: Mapping[str, float] = MappingProxyType({
     "won't go any further": 1.0, "to the stop": 1.0, "to the max": 1.0, "to the maximum": 1.0, "as wide as it can go": 1.0, "rest of the way": 1.0, "all the way up": 1.0, "all the way down": 1.0, "all the way back": 1.0,
 })
 LOOSE_AMOUNTS = frozenset({"partly", "partially", "a bit", "a little", "a little bit", "somewhat", "ajar", "slightly", "barely",
-                           "just a crack", "a crack", "just a sliver", "a sliver", "a few", "a tad", "mostly", "partway", "part way"})
+                           "just a crack", "a crack", "just a sliver", "a few", "a tad", "mostly", "partway", "part way"})
 """Amounts that are a reading of a vague word (the explanation warns about them)."""
 SPEEDS: Mapping[str, float] = MappingProxyType({
     # duration multiplier
@@ -178,7 +178,7 @@ MULTIWORD: tuple[str, ...] = (
     "when that is done", "so as to", "so that", "let it lie", "let them lie", "let it sit", "which means that", "which means", "that means that", "that means", "this means that",
     "this means", "gust of wind", "puff of wind", "blast of wind", "gust of air", "rush of air", "the whole time", "the entire time", "all the while", "all the time", "for as long as", "the whole while", "after that", "and then", "and after that",
     "and finally", "once done", "when done", "after which", "followed by", "all the way", "as far as it will go", "as far as it goes",
-    "as far as possible", "most of the way", "a little bit", "a little", "a bit", "a tad", "just a crack", "a crack", "just a sliver", "a sliver", "half way",
+    "as far as possible", "most of the way", "a little bit", "a little", "a bit", "a tad", "just a crack", "a crack", "just a sliver", "half way",
     "part way", "three quarters", "a quarter of the way", "a third of the way", "a quarter", "a third", "one third", "two thirds",
     "one quarter", "counter clockwise", "anti clockwise", "rad per second", "radians per second", "revolutions per minute",
     "degrees per second", "meters per second", "metres per second", "straight up", "to the left", "to the right", "to the limit",

@@ -113,9 +113,9 @@ def object_motion(frame: Frame, obj: ObjectGeometry, yaw: float = 0.0) -> Object
     if is_yaw(frame):
         angle = quantities.amount.value if quantities.amount is not None and quantities.amount.unit == "rad" else None
         words = frame.text.split()
-        if angle is None and quantities.amount is not None and quantities.amount.unit == "fraction" and (
+        if angle is None and quantities.amount is not None and quantities.amount.unit == "fraction" and quantities.amount.value < 1 and (
                 "way" in words or "halfway" in words) and ({"round", "around"} & set(words)):
-            angle = 2 * math.pi * quantities.amount.value  # "a quarter of the way round": a quarter of a full circle
+            angle = 2 * math.pi * quantities.amount.value  # "a quarter of the way round": a quarter of a full circle (not "right round")
         if angle is None:
             around = frame.particle in ("around", "round") or "around" in words
             angle = math.pi if around else math.pi / 2

@@ -170,6 +170,8 @@ def test_a_lift_said_again_is_one_lift(prompt: str) -> None:
 @pytest.mark.parametrize(("name", "prompt", "moved"), [
     # round 68 (whole voices): a likeness said after a step (similes): "the laptop like" and "a wine" had been read as parts
     ("laptop_10697", "Close the laptop like the evening forecast wrapping up, then pop it back open to exactly where it was.", {"joint_1"}),
+    # "a sliver of light" is no amount (only "just a sliver" is): the door opens a crack, as "just a crack" says
+    ("microwave_7236", "Open the microwave door just a crack, a sliver of light spilling out, nothing more.", {"joint_0"}),
     # "withdraw" is a verb (it had been split into "with draw" and the rack left shut)
     ("extra/oven_7179", "First lower the main oven door, the bottom one, completely; only thereafter withdraw the lowest rack from behind it.",
      {"joint_3", "joint_2"}),
@@ -200,7 +202,11 @@ def test_round68_the_part_ends_where_asked(name: str, prompt: str, joint: str, f
     assert _q(animate(name, prompt).trajectory, joint)[-1] == pytest.approx(final, abs=0.02)
 
 
-def test_a_quarter_of_the_way_round_is_a_quarter_turn() -> None:
-    """"turn the toaster a quarter of the way round" (whole_object): it had turned half a turn, silently."""
-    rotation = animate("toaster_103483", "Let's turn the toaster a quarter of the way round, so its side is looking at us!").trajectory.base_rotation_xyzw[-1]
-    assert abs(2 * np.degrees(np.arctan2(rotation[2], rotation[3]))) == pytest.approx(90.0, abs=0.5)
+@pytest.mark.parametrize(("prompt", "degrees"), [
+    ("Let's turn the toaster a quarter of the way round, so its side is looking at us!", 90.0),  # it had turned half a turn, silently
+    ("And he spins the toaster right round, it's facing the other way now, what a turn!", 180.0),  # "right round" stays a half turn
+])
+def test_a_fraction_of_the_way_round(prompt: str, degrees: float) -> None:
+    """"a quarter of the way round" is a quarter of a full circle (whole_object); "right round" is still a half turn."""
+    rotation = animate("toaster_103483", prompt).trajectory.base_rotation_xyzw[-1]
+    assert abs(2 * np.degrees(np.arctan2(rotation[2], rotation[3]))) == pytest.approx(degrees, abs=0.5)
