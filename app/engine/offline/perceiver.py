@@ -94,12 +94,12 @@ def _incidental(frame: Frame) -> bool:
             or bool({"must", "should"} & set(frame.text.split()[1:4])))  # "..., lever must end up on the back side": how it ends
 
 
-def _landmarks(clauses: list[Clause], frame: Frame) -> list[Mention]:
+def _landmarks(clauses: list[Clause], clause: int) -> list[Mention]:
     """Parts a clause names only as where another is, in an apposition the frame drops ("..., the one behind the small door
     on top, ..."): said before, for "the door" later; never parts to move."""
-    if frame.clause >= len(clauses):
+    if clause >= len(clauses):
         return []
-    return [m.relation[1] for m in parse_mentions(list(clauses[frame.clause].tokens), 0) if m.anaphor and m.relation is not None and (
+    return [m.relation[1] for m in parse_mentions(list(clauses[clause].tokens), 0) if m.anaphor and m.relation is not None and (
         m.relation[1].kind is not None)]
 
 
@@ -135,7 +135,8 @@ def read_prompt(prompt: str, asset: ArticulatedAsset) -> Reading:
     acts, gaps = paused_between(repeated(build_acts(frames)))  # "…, pausing a moment between each digit"
     acts = named_before_it(said_by_use(acts, builder.parts))  # "Set the timer — twist the bottom knob ...": what the knob is for
     builder.refs.plan([m for act in acts for frame in act.frames for m in (*frame.themes, *frame.instruments)])
-    builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments, *_landmarks(clauses, frame))]  # "so you can get at
+    landmarks = {k: _landmarks(clauses, k) for k in {frame.clause for frame in frames}}  # each clause parsed once
+    builder.refs.said = [m for frame in frames for m in (*frame.themes, *frame.instruments, *landmarks[frame.clause])]  # "so you can get at
     # the bottom rack"; "the upper rack — the one behind the small door on top — ... The door you may open": that door
     if not builder.parts and not any(a.goal.verb for a in acts):
         raise GroundingError(f"{asset.name} has no movable parts to animate", movable_parts=[])

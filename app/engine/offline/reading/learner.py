@@ -70,7 +70,8 @@ def learner(tokens: list[Token]) -> list[Token]:
             out.append(agreed)
         elif token.text == "the" and after is not None and after.text in ("half", "quarter") and [t.text for t in tokens[i + 2:i + 3]] == ["of"] and (
                 [t.text for t in tokens[i + 4:i + 5]] == ["way"]):
-            pass  # "until the half of its way": half of its way
+            i += 1
+            continue  # "until the half of its way": "the" dropped, half of its way
         elif token.text == "after" and after is not None and i + 2 < len(tokens) and after.text == after.lemma and after.lemma in VERBS and (
                 tokens[i + 2].text in ("it", "them", "the")) and (i == 0 or tokens[i - 1].is_punct or tokens[i - 1].text == "and"):
             out.append(Token("then", "then", token.start, token.end))  # "..., after close it": then close it

@@ -30,16 +30,15 @@ def _simile_at(tokens: list[Token], k: int, verb_before: bool) -> bool:
 
 
 def similes(tokens: list[Token]) -> list[Token]:
-    """``tokens`` without a likeness said after a verb, up to the end of its clause."""
+    """``tokens`` without a likeness said after a verb (anywhere before it), up to the end of its clause."""
     out: list[Token] = []
+    verb_before = False  # a verb said before: the likeness colours a step, it does not start the prompt
     k = 0
     while k < len(tokens):
-        since = next((j for j in range(len(out) - 1, -1, -1) if out[j].text in _ENDS or out[j].is_sentence_end), -1)
-        verb_before = any(t.text in VERBS or t.lemma in VERBS for t in out[since + 1:])
-        if _simile_at(tokens, k, verb_before) or (verb_before is False and since >= 0 and _simile_at(tokens, k, any(
-                t.text in VERBS for t in out))):
+        if _simile_at(tokens, k, verb_before):
             k = next((j for j in range(k + 1, len(tokens)) if tokens[j].text in _ENDS), len(tokens))
             continue
         out.append(tokens[k])
+        verb_before = verb_before or tokens[k].text in VERBS or tokens[k].lemma in VERBS
         k += 1
     return out
